@@ -1,0 +1,1 @@
+//! Exact plane-based polygon kernel.

@@ -1,0 +1,302 @@
+//! The camera: look-at plus OpenGL perspective, and the pixel conventions.
+//!
+//! The matrices are exactly those of `gluLookAt` and `gluPerspective` (right-handed, the
+//! camera looks down its −z axis, clip z in [−1, 1]). Pixel coordinates are
+//! `px = (ndc.x + 1) / 2 · W`, `py = (1 − ndc.y) / 2 · H` (y down); pixel (i, j) covers
+//! [i, i+1) × [j, j+1) and is sampled at its centre.
+
+use glam::{DMat4, DVec3, DVec4};
+use thiserror::Error;
+
+use crate::Scene;
+
+/// Errors in a camera description.
+#[derive(Debug, Error, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum CameraError {
+    /// A camera vector or number is NaN or infinite.
+    #[error("camera {0} is not finite")]
+    NonFinite(&'static str),
+    /// The eye and the target coincide.
+    #[error("camera eye and target coincide")]
+    EyeIsTarget,
+    /// The up vector is zero or parallel to the viewing direction.
+    #[error("camera up vector is zero or parallel to the viewing direction")]
+    BadUp,
+    /// The field of view is outside (0°, 180°).
+    #[error("field of view {0}° is outside (0, 180)")]
+    BadFov(f64),
+    /// The picture size is zero or absurdly large.
+    #[error("picture size {0}x{1} is invalid (each side must be 1 to 65536)")]
+    BadSize(u32, u32),
+    /// Near/far planes are not 0 < near < far.
+    #[error("near {0} and far {1} planes must satisfy 0 < near < far")]
+    BadClip(f64, f64),
+    /// The scene has no faces to frame.
+    #[error("the scene has no faces to frame")]
+    EmptyScene,
+}
+
+/// A perspective camera.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Camera {
+    /// Eye position.
+    pub eye: DVec3,
+    /// Point looked at.
+    pub target: DVec3,
+    /// Up direction (need not be orthogonal to the view direction).
+    pub up: DVec3,
+    /// Vertical field of view in degrees.
+    pub fov_deg: f64,
+    /// Picture width in pixels.
+    pub width: u32,
+    /// Picture height in pixels.
+    pub height: u32,
+    /// Near plane distance; chosen from the scene bounds when `None`.
+    pub near: Option<f64>,
+    /// Far plane distance; chosen from the scene bounds when `None`.
+    pub far: Option<f64>,
+}
+
+/// A point after projection.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Projected {
+    /// Pixel x (right).
+    pub x: f64,
+    /// Pixel y (down).
+    pub y: f64,
+    /// Normalised device depth in [−1, 1] for points between near and far.
+    pub z: f64,
+    /// Clip-space w (the distance in front of the eye along the view axis).
+    pub w: f64,
+}
+
+/// The default direction from the target to the eye when the camera frames a scene:
+/// to the right, above and in front (+x, +y, +z), normalised.
+pub const DEFAULT_VIEW_DIRECTION: [f64; 3] = [1.0, 0.8, 1.6];
+
+impl Camera {
+    /// A camera with the given eye, target and size; up +Y, fov 45°, automatic clipping.
+    pub fn new(eye: DVec3, target: DVec3, width: u32, height: u32) -> Self {
+        Camera {
+            eye,
+            target,
+            up: DVec3::Y,
+            fov_deg: 45.0,
+            width,
+            height,
+            near: None,
+            far: None,
+        }
+    }
+
+    /// A camera that frames the whole scene: it looks at the centre of the scene's
+    /// bounding box from the direction [`DEFAULT_VIEW_DIRECTION`] (right, above, in
+    /// front), far enough that the bounding sphere fits the picture with a 5 % margin.
+    pub fn framing(scene: &Scene, width: u32, height: u32) -> Result<Camera, CameraError> {
+        let (lo, hi) = scene.bounds().ok_or(CameraError::EmptyScene)?;
+        let dir = DVec3::from(DEFAULT_VIEW_DIRECTION).normalize();
+        Camera::framing_bounds(lo, hi, dir, 45.0, width, height)
+    }
+
+    /// A camera looking at the centre of `lo..hi` from direction `dir` (target to eye),
+    /// fitting the bounding sphere with a 5 % margin.
+    pub fn framing_bounds(
+        lo: DVec3,
+        hi: DVec3,
+        dir: DVec3,
+        fov_deg: f64,
+        width: u32,
+        height: u32,
+    ) -> Result<Camera, CameraError> {
+        if !lo.is_finite() || !hi.is_finite() {
+            return Err(CameraError::NonFinite("bounds"));
+        }
+        let centre = (lo + hi) * 0.5;
+        let mut radius = (hi - lo).length() * 0.5;
+        if radius <= 0.0 {
+            radius = 1.0;
+        }
+        let aspect = width.max(1) as f64 / height.max(1) as f64;
+        let half_v = (fov_deg.to_radians() * 0.5).min(1.5);
+        let half_h = (half_v.tan() * aspect).atan();
+        let half = half_v.min(half_h);
+        let dist = radius / half.sin() * 1.05;
+        let dir = if dir.length_squared() > 0.0 {
+            dir.normalize()
+        } else {
+            DVec3::Z
+        };
+        let up = if dir.cross(DVec3::Y).length_squared() < 1e-12 {
+            DVec3::Z
+        } else {
+            DVec3::Y
+        };
+        let cam = Camera {
+            eye: centre + dir * dist,
+            target: centre,
+            up,
+            fov_deg,
+            width,
+            height,
+            near: None,
+            far: None,
+        };
+        cam.validate()?;
+        Ok(cam)
+    }
+
+    /// Checks that the camera can be used: finite vectors, eye ≠ target, up not
+    /// parallel to the view direction, fov in (0°, 180°), a sensible picture size.
+    pub fn validate(&self) -> Result<(), CameraError> {
+        if !self.eye.is_finite() {
+            return Err(CameraError::NonFinite("eye"));
+        }
+        if !self.target.is_finite() {
+            return Err(CameraError::NonFinite("target"));
+        }
+        if !self.up.is_finite() {
+            return Err(CameraError::NonFinite("up"));
+        }
+        let f = self.target - self.eye;
+        if f.length_squared() == 0.0 || !f.length_squared().is_finite() {
+            return Err(CameraError::EyeIsTarget);
+        }
+        let s = f.normalize().cross(self.up);
+        if !(s.length_squared() > 1e-24) || self.up.length_squared() == 0.0 {
+            return Err(CameraError::BadUp);
+        }
+        if !(self.fov_deg > 0.0 && self.fov_deg < 180.0) {
+            return Err(CameraError::BadFov(self.fov_deg));
+        }
+        if self.width == 0 || self.height == 0 || self.width > 65536 || self.height > 65536 {
+            return Err(CameraError::BadSize(self.width, self.height));
+        }
+        if let (Some(n), Some(fa)) = (self.near, self.far) {
+            if !(n > 0.0 && n < fa && fa.is_finite()) {
+                return Err(CameraError::BadClip(n, fa));
+            }
+        }
+        Ok(())
+    }
+
+    /// Unit vector from the eye towards the target.
+    pub fn forward(&self) -> DVec3 {
+        (self.target - self.eye).normalize()
+    }
+
+    /// Width / height.
+    pub fn aspect(&self) -> f64 {
+        self.width as f64 / self.height as f64
+    }
+
+    /// The view matrix of `gluLookAt(eye, target, up)`.
+    pub fn view(&self) -> DMat4 {
+        glam::dcamera::rh::view::look_at_mat4(self.eye, self.target, self.up)
+    }
+
+    /// The projection matrix of `gluPerspective(fov, W/H, near, far)`.
+    pub fn projection(&self, near: f64, far: f64) -> DMat4 {
+        glam::dcamera::rh::proj::opengl::perspective(
+            self.fov_deg.to_radians(),
+            self.aspect(),
+            near,
+            far,
+        )
+    }
+
+    /// Near and far distances: the given ones, or chosen from the scene's bounds. The far
+    /// plane lies just beyond the farthest corner of the bounding box; the near plane just
+    /// before the nearest corner, but never closer than far / 10⁴ (so geometry beside or
+    /// behind the eye is clipped there).
+    pub fn near_far(&self, scene: &Scene) -> (f64, f64) {
+        let f = self.forward();
+        let (mut lo_d, mut hi_d) = (f64::INFINITY, f64::NEG_INFINITY);
+        if let Some((lo, hi)) = scene.bounds() {
+            for i in 0..8 {
+                let c = DVec3::new(
+                    if i & 1 == 0 { lo.x } else { hi.x },
+                    if i & 2 == 0 { lo.y } else { hi.y },
+                    if i & 4 == 0 { lo.z } else { hi.z },
+                );
+                let d = (c - self.eye).dot(f);
+                lo_d = lo_d.min(d);
+                hi_d = hi_d.max(d);
+            }
+        }
+        let far = match self.far {
+            Some(v) => v,
+            None if hi_d.is_finite() && hi_d > 0.0 => hi_d * 1.01,
+            None => 1.0,
+        };
+        let near = match self.near {
+            Some(v) => v,
+            None => {
+                let min_near = far * 1e-4;
+                if lo_d.is_finite() && lo_d * 0.99 > min_near {
+                    lo_d * 0.99
+                } else {
+                    min_near
+                }
+            }
+        };
+        (near, far)
+    }
+
+    /// `projection(near, far) · view()`.
+    pub fn view_projection(&self, near: f64, far: f64) -> DMat4 {
+        self.projection(near, far) * self.view()
+    }
+
+    /// Projects a world point with the given view-projection matrix into pixel
+    /// coordinates. Only meaningful for points in front of the eye (`w > 0`).
+    pub fn project_with(&self, vp: &DMat4, p: DVec3) -> Projected {
+        let c: DVec4 = *vp * p.extend(1.0);
+        let inv_w = 1.0 / c.w;
+        let nx = c.x * inv_w;
+        let ny = c.y * inv_w;
+        Projected {
+            x: (nx + 1.0) * 0.5 * self.width as f64,
+            y: (1.0 - ny) * 0.5 * self.height as f64,
+            z: c.z * inv_w,
+            w: c.w,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn target_projects_to_picture_centre() {
+        let cam = Camera::new(DVec3::new(3.0, 2.0, 5.0), DVec3::new(0.5, 0.0, -1.0), 800, 600);
+        let vp = cam.view_projection(0.1, 100.0);
+        let p = cam.project_with(&vp, cam.target);
+        assert!((p.x - 400.0).abs() < 1e-9 && (p.y - 300.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn up_is_up_in_pixels() {
+        let cam = Camera::new(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, 100, 100);
+        let vp = cam.view_projection(0.1, 100.0);
+        let a = cam.project_with(&vp, DVec3::new(0.0, 1.0, 0.0));
+        let b = cam.project_with(&vp, DVec3::new(1.0, 0.0, 0.0));
+        assert!(a.y < 50.0, "+y world must be above the centre (smaller py)");
+        assert!(b.x > 50.0, "+x world must be right of the centre");
+    }
+
+    #[test]
+    fn bad_cameras_are_rejected() {
+        let mut cam = Camera::new(DVec3::ZERO, DVec3::ZERO, 10, 10);
+        assert_eq!(cam.validate(), Err(CameraError::EyeIsTarget));
+        cam.target = DVec3::new(0.0, 5.0, 0.0);
+        assert_eq!(cam.validate(), Err(CameraError::BadUp));
+        cam.up = DVec3::X;
+        cam.fov_deg = 180.0;
+        assert!(matches!(cam.validate(), Err(CameraError::BadFov(_))));
+        cam.fov_deg = 30.0;
+        cam.eye.x = f64::NAN;
+        assert_eq!(cam.validate(), Err(CameraError::NonFinite("eye")));
+    }
+}

@@ -1,0 +1,30 @@
+//! Scene model, camera, lights, materials and shading for limn, plus the file loaders.
+//!
+//! A [`Scene`] is a flat list of polygonal [`Face`]s over a shared vertex array, in world
+//! coordinates. Every face keeps its index in the input order: that index is the *face
+//! id*, which survives culling, clipping, splitting and merging, so that pictures can be
+//! compared face by face.
+//!
+//! ```
+//! use limn_scene::{Scene, Material, Camera};
+//! use glam::DVec3;
+//!
+//! let mut scene = Scene::default();
+//! let red = scene.add_material(Material::unlit("red", [1.0, 0.0, 0.0]));
+//! let obj = scene.add_object("triangle");
+//! let a = scene.add_vertex(DVec3::new(0.0, 0.0, 0.0));
+//! let b = scene.add_vertex(DVec3::new(1.0, 0.0, 0.0));
+//! let c = scene.add_vertex(DVec3::new(0.0, 1.0, 0.0));
+//! let id = scene.add_face(&[a, b, c], red, obj).unwrap();
+//! assert_eq!(id, 0);
+//! let camera = Camera::framing(&scene, 800, 600).unwrap();
+//! assert!(camera.eye.is_finite());
+//! ```
+
+mod camera;
+mod model;
+mod shade;
+
+pub use camera::{Camera, CameraError, Projected};
+pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
+pub use shade::{polygon_normal, shade_face, shade_point, Effects, Rgb};

@@ -1,0 +1,370 @@
+//! The in-memory scene: vertices, faces, materials, objects, lights.
+
+use glam::DVec3;
+use thiserror::Error;
+
+use crate::Camera;
+
+/// Errors raised while building a scene in code.
+#[derive(Debug, Error, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum SceneError {
+    /// A face has fewer than three vertices.
+    #[error("face has {0} vertices; at least 3 are needed")]
+    TooFewVertices(usize),
+    /// A face refers to a vertex that does not exist.
+    #[error("face refers to vertex {index}, but the scene has {count} vertices")]
+    VertexOutOfRange {
+        /// The offending index.
+        index: u32,
+        /// Number of vertices in the scene.
+        count: usize,
+    },
+    /// A vertex normal index is out of range.
+    #[error("face refers to normal {index}, but the scene has {count} normals")]
+    NormalOutOfRange {
+        /// The offending index.
+        index: u32,
+        /// Number of normals in the scene.
+        count: usize,
+    },
+    /// A face refers to a material or object that does not exist.
+    #[error("face refers to {what} {index}, which does not exist")]
+    BadReference {
+        /// "material" or "object".
+        what: &'static str,
+        /// The offending index.
+        index: u32,
+    },
+    /// A coordinate is NaN or infinite.
+    #[error("non-finite coordinate in {0}")]
+    NonFinite(&'static str),
+    /// Too many faces or vertices for 32-bit ids.
+    #[error("scene too large: more than 2^32 - 1 {0}")]
+    TooLarge(&'static str),
+}
+
+/// A surface material, following the Wavefront MTL model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Material {
+    /// Name as given in the input (or generated).
+    pub name: String,
+    /// Diffuse colour `Kd`, each channel in [0, 1].
+    pub kd: [f64; 3],
+    /// Ambient colour `Ka`.
+    pub ka: [f64; 3],
+    /// Specular colour `Ks`.
+    pub ks: [f64; 3],
+    /// Specular exponent `Ns`.
+    pub ns: f64,
+    /// Opacity `d` (1 = opaque). `Tr` is read as `1 - d`.
+    pub opacity: f64,
+    /// MTL illumination model: 0 = exactly `kd`, no lighting; 1 = diffuse; 2 = diffuse +
+    /// specular.
+    pub illum: u8,
+}
+
+impl Material {
+    /// A material drawn with exactly `kd`: `illum 0`, opaque.
+    pub fn unlit(name: &str, kd: [f64; 3]) -> Self {
+        Material {
+            name: name.to_string(),
+            kd,
+            ka: [0.0; 3],
+            ks: [0.0; 3],
+            ns: 0.0,
+            opacity: 1.0,
+            illum: 0,
+        }
+    }
+
+    /// A diffusely lit material (`illum 1`) with a small ambient term.
+    pub fn diffuse(name: &str, kd: [f64; 3]) -> Self {
+        Material {
+            name: name.to_string(),
+            kd,
+            ka: [0.1, 0.1, 0.1],
+            ks: [0.0; 3],
+            ns: 0.0,
+            opacity: 1.0,
+            illum: 1,
+        }
+    }
+
+    /// A lit material with a specular highlight (`illum 2`).
+    pub fn glossy(name: &str, kd: [f64; 3], ks: [f64; 3], ns: f64) -> Self {
+        Material {
+            name: name.to_string(),
+            kd,
+            ka: [0.1, 0.1, 0.1],
+            ks,
+            ns,
+            opacity: 1.0,
+            illum: 2,
+        }
+    }
+
+    /// The default material of faces that name none: a mid grey, diffusely lit.
+    pub fn default_grey() -> Self {
+        Material::diffuse("default", [0.7, 0.7, 0.7])
+    }
+
+    /// Whether this material is fully opaque.
+    pub fn is_opaque(&self) -> bool {
+        self.opacity >= 1.0
+    }
+}
+
+/// A named group of faces (an OBJ `o`/`g`, a glTF node, a mesh of a scene file).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Object {
+    /// The object's name (free text; writers escape it).
+    pub name: String,
+}
+
+/// One input polygon. Vertices are indices into [`Scene::vertices`], counter-clockwise
+/// when seen from the front (right-handed), which defines the face's outward normal.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Face {
+    /// Vertex indices, at least three.
+    pub vertices: Vec<u32>,
+    /// Per-corner normal indices into [`Scene::normals`], if the input gave them.
+    pub normals: Option<Vec<u32>>,
+    /// Index into [`Scene::materials`].
+    pub material: u32,
+    /// Index into [`Scene::objects`].
+    pub object: u32,
+}
+
+/// The kind of a light source.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LightKind {
+    /// Light arriving from a direction (pointing *from* the scene *towards* the light).
+    Directional(DVec3),
+    /// A point light at a position.
+    Point(DVec3),
+    /// A light at the eye (a headlight).
+    Headlight,
+    /// Ambient light, the same everywhere.
+    Ambient,
+}
+
+/// A light source with an RGB intensity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Light {
+    /// Where the light comes from.
+    pub kind: LightKind,
+    /// Intensity per channel (1 = full).
+    pub color: [f64; 3],
+}
+
+/// A whole scene in world coordinates.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Scene {
+    /// Vertex positions.
+    pub vertices: Vec<DVec3>,
+    /// Vertex normals (referenced by [`Face::normals`]).
+    pub normals: Vec<DVec3>,
+    /// Faces in input order; a face's index here is its face id.
+    pub faces: Vec<Face>,
+    /// Materials.
+    pub materials: Vec<Material>,
+    /// Objects.
+    pub objects: Vec<Object>,
+    /// Light sources. Empty means: a headlight for lit materials.
+    pub lights: Vec<Light>,
+    /// Camera given by the input, if any.
+    pub camera: Option<Camera>,
+    /// Warnings collected while loading (missing MTL, dropped faces, ...).
+    pub warnings: Vec<String>,
+}
+
+impl Scene {
+    /// Adds a vertex and returns its index.
+    pub fn add_vertex(&mut self, p: DVec3) -> u32 {
+        self.vertices.push(p);
+        (self.vertices.len() - 1) as u32
+    }
+
+    /// Adds a material and returns its index.
+    pub fn add_material(&mut self, m: Material) -> u32 {
+        self.materials.push(m);
+        (self.materials.len() - 1) as u32
+    }
+
+    /// Adds an object and returns its index.
+    pub fn add_object(&mut self, name: &str) -> u32 {
+        self.objects.push(Object {
+            name: name.to_string(),
+        });
+        (self.objects.len() - 1) as u32
+    }
+
+    /// Adds a face (checked) and returns its face id.
+    pub fn add_face(
+        &mut self,
+        vertices: &[u32],
+        material: u32,
+        object: u32,
+    ) -> Result<u32, SceneError> {
+        let face = Face {
+            vertices: vertices.to_vec(),
+            normals: None,
+            material,
+            object,
+        };
+        self.check_face(&face)?;
+        if self.faces.len() >= u32::MAX as usize {
+            return Err(SceneError::TooLarge("faces"));
+        }
+        self.faces.push(face);
+        Ok((self.faces.len() - 1) as u32)
+    }
+
+    /// Adds a polygon given by its corner positions (a convenience for tests and
+    /// generated scenes) and returns its face id.
+    pub fn add_polygon(
+        &mut self,
+        corners: &[DVec3],
+        material: u32,
+        object: u32,
+    ) -> Result<u32, SceneError> {
+        let idx: Vec<u32> = corners.iter().map(|&p| self.add_vertex(p)).collect();
+        self.add_face(&idx, material, object)
+    }
+
+    fn check_face(&self, face: &Face) -> Result<(), SceneError> {
+        if face.vertices.len() < 3 {
+            return Err(SceneError::TooFewVertices(face.vertices.len()));
+        }
+        for &v in &face.vertices {
+            if v as usize >= self.vertices.len() {
+                return Err(SceneError::VertexOutOfRange {
+                    index: v,
+                    count: self.vertices.len(),
+                });
+            }
+        }
+        if let Some(ns) = &face.normals {
+            for &n in ns {
+                if n as usize >= self.normals.len() {
+                    return Err(SceneError::NormalOutOfRange {
+                        index: n,
+                        count: self.normals.len(),
+                    });
+                }
+            }
+        }
+        if face.material as usize >= self.materials.len() {
+            return Err(SceneError::BadReference {
+                what: "material",
+                index: face.material,
+            });
+        }
+        if face.object as usize >= self.objects.len() {
+            return Err(SceneError::BadReference {
+                what: "object",
+                index: face.object,
+            });
+        }
+        Ok(())
+    }
+
+    /// Checks every invariant the rest of limn relies on: indices in range, finite
+    /// coordinates, at least three vertices per face.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        if self.vertices.iter().any(|v| !v.is_finite()) {
+            return Err(SceneError::NonFinite("vertex"));
+        }
+        if self.normals.iter().any(|v| !v.is_finite()) {
+            return Err(SceneError::NonFinite("normal"));
+        }
+        for f in &self.faces {
+            self.check_face(f)?;
+        }
+        Ok(())
+    }
+
+    /// The positions of a face's corners.
+    pub fn face_points(&self, face: u32) -> Vec<DVec3> {
+        self.faces[face as usize]
+            .vertices
+            .iter()
+            .map(|&v| self.vertices[v as usize])
+            .collect()
+    }
+
+    /// Axis-aligned bounds (min, max) of the vertices used by faces, or `None` when there
+    /// are no faces.
+    pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        let mut it = self
+            .faces
+            .iter()
+            .flat_map(|f| f.vertices.iter())
+            .map(|&v| self.vertices[v as usize]);
+        let first = it.next()?;
+        Some(it.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p))))
+    }
+
+    /// Whether every material used by a face is opaque.
+    pub fn all_opaque(&self) -> bool {
+        self.faces
+            .iter()
+            .all(|f| self.materials[f.material as usize].is_opaque())
+    }
+
+    /// Whether the faces of each object form closed surfaces: every undirected edge
+    /// (by vertex position) is used exactly twice, once in each direction.
+    pub fn is_closed(&self) -> bool {
+        use std::collections::HashMap;
+        if self.faces.is_empty() {
+            return false;
+        }
+        // Key edges by position bits so that duplicated vertices still match.
+        let key = |v: u32| {
+            let p = self.vertices[v as usize];
+            [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
+        };
+        let mut count: HashMap<([u64; 3], [u64; 3]), i64> = HashMap::new();
+        for f in &self.faces {
+            let n = f.vertices.len();
+            for i in 0..n {
+                let a = key(f.vertices[i]);
+                let b = key(f.vertices[(i + 1) % n]);
+                if a == b {
+                    continue;
+                }
+                *count.entry((a, b)).or_insert(0) += 1;
+            }
+        }
+        count
+            .iter()
+            .all(|(&(a, b), &c)| c == 1 && count.get(&(b, a)) == Some(&1))
+    }
+
+    /// Appends all faces of `other` (with its vertices, normals, materials and objects),
+    /// keeping their order after this scene's faces.
+    pub fn append(&mut self, other: &Scene) {
+        let vo = self.vertices.len() as u32;
+        let no = self.normals.len() as u32;
+        let mo = self.materials.len() as u32;
+        let oo = self.objects.len() as u32;
+        self.vertices.extend_from_slice(&other.vertices);
+        self.normals.extend_from_slice(&other.normals);
+        self.materials.extend(other.materials.iter().cloned());
+        self.objects.extend(other.objects.iter().cloned());
+        for f in &other.faces {
+            self.faces.push(Face {
+                vertices: f.vertices.iter().map(|v| v + vo).collect(),
+                normals: f
+                    .normals
+                    .as_ref()
+                    .map(|ns| ns.iter().map(|n| n + no).collect()),
+                material: f.material + mo,
+                object: f.object + oo,
+            });
+        }
+        self.lights.extend_from_slice(&other.lights);
+        self.warnings.extend(other.warnings.iter().cloned());
+    }
+}

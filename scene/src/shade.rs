@@ -1,0 +1,173 @@
+//! Shading: only the effects a scene asks for.
+//!
+//! * `illum 0` materials are drawn with exactly their `Kd`: nothing else is computed.
+//! * Lit materials (`illum 1`, `illum 2`) use the Phong reflection model (ambient,
+//!   diffuse, and for `illum 2` specular) with the scene's lights, or a white headlight
+//!   when the scene has none.
+//! * Faces are lit two-sided: a face seen from behind is lit with its normal flipped.
+
+use glam::DVec3;
+
+use crate::{Light, LightKind, Material, Scene};
+
+/// A linear RGB colour, each channel in [0, 1].
+pub type Rgb = [f64; 3];
+
+/// Which effects a scene calls for. Everything that is `false` costs nothing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Effects {
+    /// Some material is lit (`illum` ≥ 1).
+    pub lighting: bool,
+    /// Some lit material has a specular term (`illum 2` with non-zero `Ks`).
+    pub specular: bool,
+    /// Some material is translucent (opacity < 1): blending in painter's order.
+    pub transparency: bool,
+}
+
+impl Effects {
+    /// The effects the faces of `scene` need.
+    pub fn of(scene: &Scene) -> Effects {
+        let mut used = vec![false; scene.materials.len()];
+        for f in &scene.faces {
+            used[f.material as usize] = true;
+        }
+        let mut e = Effects::default();
+        for (m, _) in scene.materials.iter().zip(&used).filter(|(_, &u)| u) {
+            if m.illum >= 1 {
+                e.lighting = true;
+            }
+            if m.illum >= 2 && m.ks.iter().any(|&c| c > 0.0) {
+                e.specular = true;
+            }
+            if !m.is_opaque() {
+                e.transparency = true;
+            }
+        }
+        e
+    }
+
+    /// Names of the effects that are on, for reports.
+    pub fn names(&self) -> Vec<&'static str> {
+        let mut v = Vec::new();
+        if self.lighting {
+            v.push("lighting");
+        }
+        if self.specular {
+            v.push("specular");
+        }
+        if self.transparency {
+            v.push("transparency");
+        }
+        v
+    }
+}
+
+/// The geometric normal of a polygon (Newell's method), not normalised; zero for a
+/// degenerate polygon.
+pub fn polygon_normal(points: &[DVec3]) -> DVec3 {
+    let mut n = DVec3::ZERO;
+    let c = points.iter().copied().sum::<DVec3>() / points.len().max(1) as f64;
+    for i in 0..points.len() {
+        let a = points[i] - c;
+        let b = points[(i + 1) % points.len()] - c;
+        n += a.cross(b);
+    }
+    n
+}
+
+/// The colour of a point with normal `n` (any length) seen from `eye`, under `lights`
+/// (a white headlight when empty). `illum 0` returns `Kd` unchanged.
+pub fn shade_point(m: &Material, p: DVec3, n: DVec3, eye: DVec3, lights: &[Light]) -> Rgb {
+    if m.illum == 0 {
+        return m.kd;
+    }
+    let to_eye = (eye - p).normalize_or_zero();
+    let mut n = n.normalize_or_zero();
+    if n.dot(to_eye) < 0.0 {
+        n = -n; // two-sided lighting
+    }
+    const HEADLIGHT: [Light; 1] = [Light {
+        kind: LightKind::Headlight,
+        color: [1.0, 1.0, 1.0],
+    }];
+    let lights = if lights.is_empty() {
+        &HEADLIGHT[..]
+    } else {
+        lights
+    };
+    // Ambient: `Ka` times the sum of the ambient lights (white when the scene has no
+    // ambient light of its own).
+    let mut ambient = [0.0f64; 3];
+    let mut has_ambient = false;
+    for l in lights {
+        if let LightKind::Ambient = l.kind {
+            has_ambient = true;
+            for (a, c) in ambient.iter_mut().zip(l.color) {
+                *a += c;
+            }
+        }
+    }
+    if !has_ambient {
+        ambient = [1.0; 3];
+    }
+    let mut out = [0.0f64; 3];
+    for (k, o) in out.iter_mut().enumerate() {
+        *o = m.ka[k] * ambient[k];
+    }
+    for l in lights {
+        let dir = match l.kind {
+            LightKind::Ambient => continue,
+            LightKind::Directional(d) => d.normalize_or_zero(),
+            LightKind::Point(q) => (q - p).normalize_or_zero(),
+            LightKind::Headlight => to_eye,
+        };
+        let cos = n.dot(dir);
+        let diff = cos.max(0.0);
+        let spec = if m.illum >= 2 && cos > 0.0 {
+            let r = 2.0 * cos * n - dir;
+            r.dot(to_eye).max(0.0).powf(m.ns.max(1.0))
+        } else {
+            0.0
+        };
+        for (k, o) in out.iter_mut().enumerate() {
+            *o += l.color[k] * (m.kd[k] * diff + m.ks[k] * spec);
+        }
+    }
+    out.map(|c| c.clamp(0.0, 1.0))
+}
+
+/// The flat colour of face `face` seen from `eye`: lit at its centroid with its geometric
+/// normal. Returns `Kd` exactly for `illum 0` materials.
+pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
+    let f = &scene.faces[face as usize];
+    let m = &scene.materials[f.material as usize];
+    if m.illum == 0 {
+        return m.kd;
+    }
+    let pts = scene.face_points(face);
+    let c = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
+    let n = polygon_normal(&pts);
+    shade_point(m, c, n, eye, &scene.lights)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn illum0_is_exactly_kd() {
+        let m = Material::unlit("x", [0.25, 0.5, 0.75]);
+        let c = shade_point(&m, DVec3::ZERO, DVec3::Z, DVec3::new(0.0, 0.0, -3.0), &[]);
+        assert_eq!(c, [0.25, 0.5, 0.75]);
+    }
+
+    #[test]
+    fn headlight_facing_gives_full_diffuse() {
+        let mut m = Material::diffuse("x", [0.5, 0.5, 0.5]);
+        m.ka = [0.0; 3];
+        let c = shade_point(&m, DVec3::ZERO, DVec3::Z, DVec3::new(0.0, 0.0, 3.0), &[]);
+        assert!((c[0] - 0.5).abs() < 1e-12);
+        let oblique = shade_point(&m, DVec3::ZERO, DVec3::X, DVec3::new(0.0, 0.0, 3.0), &[]);
+        assert!(oblique[0] < 1e-12);
+    }
+}
