@@ -22,8 +22,10 @@
 //! ```
 
 mod camera;
+pub mod load;
 mod model;
 mod shade;
+pub mod shapes;
 
 pub use camera::{Camera, CameraError, Projected};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};

@@ -1,0 +1,183 @@
+//! Wavefront MTL material libraries.
+//!
+//! Read: `newmtl`, `Kd`, `Ka`, `Ks` (RGB triples), `Ns`, `d` (opacity, also with
+//! `-halo`), `Tr` (= 1 − d), `illum` (0–10). Other statements (texture maps, `Ke`, `Ni`,
+//! PBR extensions) are ignored: limn draws flat colours. A material starts from
+//! [`Material::default_grey`] and the statements override its fields. Colours outside
+//! [0, 1] are clamped with a warning; non-finite numbers are errors.
+//!
+//! `tobj` has an MTL parser, but its errors carry neither file nor line.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use super::text::{lossy, number, rest_after_keyword, strip_comment, tokens, Lines};
+use super::{LoadError, Location};
+use crate::Material;
+
+/// Materials by name, in the order of definition (later definitions replace earlier
+/// ones of the same name).
+#[derive(Debug, Default)]
+pub(crate) struct Library {
+    pub(crate) materials: HashMap<String, Material>,
+}
+
+/// Parses MTL text into `lib`, appending warnings.
+pub(crate) fn parse(
+    bytes: &[u8],
+    path: &Path,
+    lib: &mut Library,
+    warnings: &mut Vec<String>,
+) -> Result<(), LoadError> {
+    let mut lines = Lines::new(bytes, path, true);
+    let mut current: Option<Material> = None;
+    while let Some(next) = lines.next_line() {
+        let (n, line) = next?;
+        let line = strip_comment(&line);
+        let mut toks = tokens(line);
+        let Some(key) = toks.next() else { continue };
+        if key == b"newmtl" {
+            if let Some(m) = current.take() {
+                lib.materials.insert(m.name.clone(), m);
+            }
+            let name = lossy(rest_after_keyword(line));
+            if name.is_empty() {
+                return Err(LoadError::syntax(path, n, "newmtl without a name"));
+            }
+            let mut m = Material::default_grey();
+            m.name = name;
+            current = Some(m);
+            continue;
+        }
+        let Some(m) = current.as_mut() else {
+            if is_known(key) {
+                return Err(LoadError::syntax(
+                    path,
+                    n,
+                    format!("{} before any newmtl", lossy(key)),
+                ));
+            }
+            continue;
+        };
+        match key {
+            b"Kd" | b"Ka" | b"Ks" => {
+                let first = toks.next();
+                if matches!(first, Some(b"spectral") | Some(b"xyz")) {
+                    warnings.push(format!(
+                        "{}:{n}: {} {} is not supported; keeping the default",
+                        path.display(),
+                        lossy(key),
+                        lossy(first.unwrap_or_default())
+                    ));
+                    continue;
+                }
+                let r = finite(path, n, number(path, n, first, "red")?)?;
+                // "Kd r" alone means grey r.
+                let g = match toks.next() {
+                    Some(t) => finite(path, n, number(path, n, Some(t), "green")?)?,
+                    None => r,
+                };
+                let b = match toks.next() {
+                    Some(t) => finite(path, n, number(path, n, Some(t), "blue")?)?,
+                    None => g,
+                };
+                let c = clamp_colour([r, g, b], path, n, warnings);
+                match key {
+                    b"Kd" => m.kd = c,
+                    b"Ka" => m.ka = c,
+                    _ => m.ks = c,
+                }
+            }
+            b"Ns" => {
+                let v = finite(path, n, number(path, n, toks.next(), "Ns value")?)?;
+                m.ns = v.max(0.0);
+            }
+            b"d" => {
+                let mut t = toks.next();
+                if t == Some(b"-halo") {
+                    t = toks.next();
+                }
+                let v = finite(path, n, number(path, n, t, "d value")?)?;
+                m.opacity = v.clamp(0.0, 1.0);
+            }
+            b"Tr" => {
+                let v = finite(path, n, number(path, n, toks.next(), "Tr value")?)?;
+                m.opacity = (1.0 - v).clamp(0.0, 1.0);
+            }
+            b"illum" => {
+                let v = number(path, n, toks.next(), "illum model")?;
+                if !(0.0..=10.0).contains(&v) || v.fract() != 0.0 {
+                    return Err(LoadError::syntax(
+                        path,
+                        n,
+                        format!("illum {v} is not a model number 0..10"),
+                    ));
+                }
+                m.illum = v as u8;
+            }
+            _ => {}
+        }
+    }
+    if let Some(m) = current.take() {
+        lib.materials.insert(m.name.clone(), m);
+    }
+    Ok(())
+}
+
+fn is_known(key: &[u8]) -> bool {
+    matches!(key, b"Kd" | b"Ka" | b"Ks" | b"Ns" | b"d" | b"Tr" | b"illum")
+}
+
+fn finite(path: &Path, line: u64, v: f64) -> Result<f64, LoadError> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(LoadError::NonFinite {
+            at: Location::line(path, line),
+            what: "material value".into(),
+        })
+    }
+}
+
+fn clamp_colour(c: [f64; 3], path: &Path, line: u64, warnings: &mut Vec<String>) -> [f64; 3] {
+    if c.iter().any(|v| !(0.0..=1.0).contains(v)) {
+        warnings.push(format!(
+            "{}:{line}: colour {c:?} clamped to [0, 1]",
+            path.display()
+        ));
+    }
+    c.map(|v| v.clamp(0.0, 1.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_the_fields_limn_uses() {
+        let src = b"# c\nnewmtl red\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 20\nillum 2\nTr 0.25\n\
+                    newmtl unlit glass\nKd 0.2\nd -halo 0.5\nillum 0\nmap_Kd x.png\n";
+        let mut lib = Library::default();
+        let mut w = Vec::new();
+        parse(src, Path::new("a.mtl"), &mut lib, &mut w).unwrap();
+        let red = &lib.materials["red"];
+        assert_eq!(red.kd, [1.0, 0.0, 0.0]);
+        assert_eq!(red.ks, [0.5; 3]);
+        assert_eq!((red.ns, red.illum, red.opacity), (20.0, 2, 0.75));
+        let g = &lib.materials["unlit glass"];
+        assert_eq!((g.kd, g.opacity, g.illum), ([0.2; 3], 0.5, 0));
+        assert!(w.is_empty());
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let mut lib = Library::default();
+        let mut w = Vec::new();
+        let e = parse(b"newmtl a\nKd 1 x 0\n", Path::new("a.mtl"), &mut lib, &mut w)
+            .unwrap_err();
+        assert!(e.to_string().starts_with("a.mtl:2:"), "{e}");
+        let e = parse(b"newmtl a\nKd 1 nan 0\n", Path::new("a.mtl"), &mut lib, &mut w)
+            .unwrap_err();
+        assert!(matches!(e, LoadError::NonFinite { .. }));
+    }
+}

@@ -1,0 +1,316 @@
+//! Wavefront OBJ.
+//!
+//! Written here rather than with `tobj`: `tobj`'s errors carry neither the file nor the
+//! line, it regroups faces by model (the input order of faces is the face id here), and
+//! it resolves indices only after the whole file is read. This parser keeps n-gons
+//! as they are, reports every problem with file and line, and resolves each index when
+//! its face is read: a face may only use vertices defined above it (positive indices
+//! count from the first vertex, negative ones back from the last one so far).
+//!
+//! Statements read: `v` (3 to 7 numbers: x y z, then an optional w or colour, ignored),
+//! `vn`, `f`/`fo` (`v`, `v/vt`, `v//vn`, `v/vt/vn`), `o` and `g` (each starts an
+//! object; the same name again continues it), `usemtl`, `mtllib`. Texture
+//! coordinates, smoothing groups, lines, points and the free-form geometry statements
+//! are accepted and ignored; any other statement is an error (so binary garbage is
+//! reported, not silently dropped).
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use glam::DVec3;
+
+use super::mtl::{self, Library};
+use super::text::{lossy, number, parse_i64, rest_after_keyword, strip_comment, tokens, Lines};
+use super::{check_u32, refs, stem, LoadError, LoadOptions, Location};
+use crate::{Face, Material, Scene};
+
+/// Statements accepted and ignored.
+const IGNORED: &[&[u8]] = &[
+    b"vt", b"vp", b"s", b"mg", b"maplib", b"usemap", b"lod", b"bevel", b"c_interp",
+    b"d_interp", b"shadow_obj", b"trace_obj", b"ctech", b"stech", b"cstype", b"deg",
+    b"bmat", b"step", b"curv", b"curv2", b"surf", b"parm", b"trim", b"hole", b"scrv",
+    b"sp", b"end", b"con", b"call", b"csh",
+];
+
+struct Obj<'a> {
+    path: &'a Path,
+    opts: &'a LoadOptions,
+    scene: Scene,
+    library: Library,
+    /// Object name → index, so that `g a … g b … g a` continues object `a`.
+    objects: HashMap<String, u32>,
+    object_name: String,
+    object: Option<u32>,
+    /// Material name → index in the scene (added when first used).
+    materials: HashMap<String, u32>,
+    material_name: Option<String>,
+    material: Option<u32>,
+    texcoords: u64,
+    ignored_lines: u64,
+}
+
+/// Parses an OBJ file (and the MTL libraries it names).
+pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Scene, LoadError> {
+    let mut obj = Obj {
+        path,
+        opts,
+        scene: Scene::default(),
+        library: Library::default(),
+        objects: HashMap::new(),
+        object_name: stem(path),
+        object: None,
+        materials: HashMap::new(),
+        material_name: None,
+        material: None,
+        texcoords: 0,
+        ignored_lines: 0,
+    };
+    let mut lines = Lines::new(bytes, path, true);
+    while let Some(next) = lines.next_line() {
+        let (n, line) = next?;
+        obj.statement(n, strip_comment(&line))?;
+    }
+    if obj.ignored_lines > 0 {
+        obj.scene.warnings.push(format!(
+            "{}: {} line/point elements ignored (only faces are drawn)",
+            path.display(),
+            obj.ignored_lines
+        ));
+    }
+    if obj.scene.faces.is_empty() {
+        obj.scene
+            .warnings
+            .push(format!("{}: no faces", path.display()));
+    }
+    Ok(obj.scene)
+}
+
+impl Obj<'_> {
+    fn statement(&mut self, n: u64, line: &[u8]) -> Result<(), LoadError> {
+        let mut toks = tokens(line);
+        let Some(key) = toks.next() else {
+            return Ok(());
+        };
+        match key {
+            b"v" => {
+                let p = self.triple(n, &mut toks, "vertex")?;
+                let extra = toks.count();
+                if extra > 4 {
+                    return Err(LoadError::syntax(
+                        self.path,
+                        n,
+                        format!("v has {} numbers; at most 7 are allowed", 3 + extra),
+                    ));
+                }
+                check_u32(self.scene.vertices.len(), "vertices", self.path)?;
+                self.scene.vertices.push(p);
+            }
+            b"vn" => {
+                let p = self.triple(n, &mut toks, "normal")?;
+                check_u32(self.scene.normals.len(), "normals", self.path)?;
+                self.scene.normals.push(p);
+            }
+            b"vt" => self.texcoords += 1,
+            b"f" | b"fo" => self.face(n, toks)?,
+            b"o" | b"g" => {
+                let name = lossy(rest_after_keyword(line));
+                self.object_name = if name.is_empty() {
+                    "default".to_string()
+                } else {
+                    name
+                };
+                self.object = None;
+            }
+            b"usemtl" => {
+                let name = lossy(rest_after_keyword(line));
+                if name.is_empty() {
+                    return Err(LoadError::syntax(self.path, n, "usemtl without a name"));
+                }
+                self.material_name = Some(name);
+                self.material = None;
+            }
+            b"mtllib" => self.mtllib(n, rest_after_keyword(line))?,
+            b"l" | b"p" => self.ignored_lines += 1,
+            k if IGNORED.contains(&k) => {}
+            k => {
+                return Err(LoadError::syntax(
+                    self.path,
+                    n,
+                    format!("unknown statement {:?}", lossy(k)),
+                ))
+            }
+        }
+        Ok(())
+    }
+
+    fn triple<'t>(
+        &self,
+        n: u64,
+        toks: &mut impl Iterator<Item = &'t [u8]>,
+        what: &str,
+    ) -> Result<DVec3, LoadError> {
+        let x = number(self.path, n, toks.next(), &format!("{what} x"))?;
+        let y = number(self.path, n, toks.next(), &format!("{what} y"))?;
+        let z = number(self.path, n, toks.next(), &format!("{what} z"))?;
+        let p = DVec3::new(x, y, z);
+        if !p.is_finite() {
+            return Err(LoadError::NonFinite {
+                at: Location::line(self.path, n),
+                what: format!("{what} coordinate"),
+            });
+        }
+        Ok(p)
+    }
+
+    fn face<'t>(&mut self, n: u64, toks: impl Iterator<Item = &'t [u8]>) -> Result<(), LoadError> {
+        let mut vertices = Vec::with_capacity(4);
+        let mut normals = Vec::with_capacity(4);
+        let mut all_normals = true;
+        for t in toks {
+            let mut parts = t.split(|&b| b == b'/');
+            let v = parts.next().unwrap_or_default();
+            let vt = parts.next();
+            let vn = parts.next();
+            if parts.next().is_some() {
+                return Err(LoadError::syntax(
+                    self.path,
+                    n,
+                    format!("bad face corner {:?}", lossy(t)),
+                ));
+            }
+            let count = self.scene.vertices.len() as u64;
+            vertices.push(self.index(n, v, count, "vertex")?);
+            if let Some(vt) = vt.filter(|s| !s.is_empty()) {
+                self.index(n, vt, self.texcoords, "texture coordinate")?;
+            }
+            match vn.filter(|s| !s.is_empty()) {
+                Some(vn) => {
+                    let count = self.scene.normals.len() as u64;
+                    normals.push(self.index(n, vn, count, "normal")?);
+                }
+                None => all_normals = false,
+            }
+        }
+        if vertices.len() < 3 {
+            return Err(LoadError::TooFewVertices {
+                at: Location::line(self.path, n),
+                count: vertices.len(),
+            });
+        }
+        let object = self.current_object()?;
+        let material = self.current_material(n)?;
+        check_u32(self.scene.faces.len(), "faces", self.path)?;
+        self.scene.faces.push(Face {
+            vertices,
+            normals: all_normals.then_some(normals),
+            material,
+            object,
+        });
+        Ok(())
+    }
+
+    /// Resolves a 1-based or negative index against `count` items defined so far.
+    fn index(&self, n: u64, tok: &[u8], count: u64, what: &'static str) -> Result<u32, LoadError> {
+        let at = || Location::line(self.path, n);
+        let i = parse_i64(tok).ok_or_else(|| {
+            LoadError::syntax(
+                self.path,
+                n,
+                format!("{what} index {:?} is not an integer", lossy(tok)),
+            )
+        })?;
+        let out = || LoadError::IndexOutOfRange {
+            at: at(),
+            what,
+            index: i,
+            count,
+        };
+        let zero_based = match i {
+            0 => return Err(LoadError::IndexZero { at: at(), what }),
+            i if i > 0 => i as u64 - 1,
+            i => count.checked_sub(i.unsigned_abs()).ok_or_else(out)?,
+        };
+        if zero_based >= count {
+            return Err(out());
+        }
+        // count <= u32::MAX - 1, checked when items are added.
+        Ok(zero_based as u32)
+    }
+
+    fn current_object(&mut self) -> Result<u32, LoadError> {
+        if let Some(o) = self.object {
+            return Ok(o);
+        }
+        let o = match self.objects.get(&self.object_name) {
+            Some(&o) => o,
+            None => {
+                check_u32(self.scene.objects.len(), "objects", self.path)?;
+                let o = self.scene.add_object(&self.object_name);
+                self.objects.insert(self.object_name.clone(), o);
+                o
+            }
+        };
+        self.object = Some(o);
+        Ok(o)
+    }
+
+    fn current_material(&mut self, n: u64) -> Result<u32, LoadError> {
+        if let Some(m) = self.material {
+            return Ok(m);
+        }
+        // The default grey is keyed by the empty name, which no usemtl can give.
+        let name = self.material_name.clone().unwrap_or_default();
+        let m = match self.materials.get(&name) {
+            Some(&m) => m,
+            None => {
+                let mat = match self.library.materials.get(&name) {
+                    Some(m) => m.clone(),
+                    None => {
+                        if !name.is_empty() {
+                            self.scene.warnings.push(format!(
+                                "{}:{n}: material {name:?} is not defined; using the default grey",
+                                self.path.display()
+                            ));
+                        }
+                        Material::default_grey()
+                    }
+                };
+                check_u32(self.scene.materials.len(), "materials", self.path)?;
+                let m = self.scene.add_material(mat);
+                self.materials.insert(name, m);
+                m
+            }
+        };
+        self.material = Some(m);
+        Ok(m)
+    }
+
+    fn mtllib(&mut self, n: u64, rest: &[u8]) -> Result<(), LoadError> {
+        if rest.is_empty() {
+            return Err(LoadError::syntax(self.path, n, "mtllib without a file name"));
+        }
+        let at = Location::line(self.path, n);
+        let whole = lossy(rest);
+        // A name may hold spaces; if the whole rest is no file, read it as a list.
+        let names: Vec<String> = if refs::resolve(&whole, &at, self.opts)?.is_file() {
+            vec![whole]
+        } else {
+            tokens(rest).map(lossy).collect()
+        };
+        for name in names {
+            let file = refs::resolve(&name, &at, self.opts)?;
+            match std::fs::read(&file) {
+                Ok(bytes) => {
+                    mtl::parse(&bytes, &file, &mut self.library, &mut self.scene.warnings)?
+                }
+                Err(e) => self.scene.warnings.push(format!(
+                    "{}:{n}: cannot read material library {}: {e}; using default materials",
+                    self.path.display(),
+                    file.display()
+                )),
+            }
+        }
+        // Materials already resolved keep what they were; later faces see the new ones.
+        Ok(())
+    }
+}

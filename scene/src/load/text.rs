@@ -1,0 +1,217 @@
+//! Helpers shared by the text parsers: numbered lines, tokens, numbers, and a small
+//! hasher for deduplicating vertices by their exact bits.
+
+use std::borrow::Cow;
+use std::hash::{BuildHasherDefault, Hasher};
+use std::path::Path;
+
+use super::{LoadError, Location};
+
+/// Lines of a text file with their 1-based numbers. A trailing `\r` is removed, and a
+/// line ending in a backslash is joined with the next one (as OBJ and MTL allow); the
+/// joined line carries the number of its first physical line. A line holding a NUL byte
+/// is reported as binary data.
+pub(crate) struct Lines<'a> {
+    rest: &'a [u8],
+    next_line: u64,
+    path: &'a Path,
+    join_backslash: bool,
+}
+
+impl<'a> Lines<'a> {
+    pub(crate) fn new(bytes: &'a [u8], path: &'a Path, join_backslash: bool) -> Self {
+        Lines {
+            rest: bytes,
+            next_line: 1,
+            path,
+            join_backslash,
+        }
+    }
+
+    /// The number the next line will have.
+    pub(crate) fn next_number(&self) -> u64 {
+        self.next_line
+    }
+
+    /// The bytes not yet returned.
+    pub(crate) fn remaining(&self) -> &'a [u8] {
+        self.rest
+    }
+
+    fn physical(&mut self) -> Option<&'a [u8]> {
+        if self.rest.is_empty() {
+            return None;
+        }
+        let (line, rest) = match self.rest.iter().position(|&b| b == b'\n') {
+            Some(i) => (&self.rest[..i], &self.rest[i + 1..]),
+            None => (self.rest, &self.rest[self.rest.len()..]),
+        };
+        self.rest = rest;
+        self.next_line += 1;
+        Some(line.strip_suffix(b"\r").unwrap_or(line))
+    }
+
+    /// The next logical line and its number.
+    pub(crate) fn next_line(&mut self) -> Option<Result<(u64, Cow<'a, [u8]>), LoadError>> {
+        let number = self.next_line;
+        let first = self.physical()?;
+        let mut line = Cow::Borrowed(first);
+        while self.join_backslash && line.last() == Some(&b'\\') {
+            let mut joined = line.into_owned();
+            joined.pop();
+            joined.push(b' ');
+            match self.physical() {
+                Some(more) => joined.extend_from_slice(more),
+                None => {
+                    line = Cow::Owned(joined);
+                    break;
+                }
+            }
+            line = Cow::Owned(joined);
+        }
+        if line.contains(&0) {
+            return Some(Err(LoadError::NotText {
+                at: Location::line(self.path, number),
+            }));
+        }
+        Some(Ok((number, line)))
+    }
+}
+
+/// The part of a line before a `#` comment.
+pub(crate) fn strip_comment(line: &[u8]) -> &[u8] {
+    match line.iter().position(|&b| b == b'#') {
+        Some(i) => &line[..i],
+        None => line,
+    }
+}
+
+/// Whitespace-separated tokens.
+pub(crate) fn tokens(line: &[u8]) -> impl Iterator<Item = &[u8]> {
+    line.split(|b| b.is_ascii_whitespace())
+        .filter(|t| !t.is_empty())
+}
+
+/// The rest of a line after its first token, trimmed (for names that may hold spaces).
+pub(crate) fn rest_after_keyword(line: &[u8]) -> &[u8] {
+    let line = line.trim_ascii_start();
+    let end = line
+        .iter()
+        .position(|b| b.is_ascii_whitespace())
+        .unwrap_or(line.len());
+    line[end..].trim_ascii()
+}
+
+/// Text for messages and names (invalid UTF-8 replaced).
+pub(crate) fn lossy(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// Parses a float token; `None` when it is not a number. NaN and infinities parse (the
+/// caller reports them as non-finite, which is a clearer message).
+pub(crate) fn parse_f64(token: &[u8]) -> Option<f64> {
+    std::str::from_utf8(token).ok()?.parse::<f64>().ok()
+}
+
+/// Parses a float token or reports a syntax error naming `what`.
+pub(crate) fn number(path: &Path, line: u64, token: Option<&[u8]>, what: &str) -> Result<f64, LoadError> {
+    match token {
+        None => Err(LoadError::syntax(path, line, format!("missing {what}"))),
+        Some(t) => parse_f64(t).ok_or_else(|| {
+            LoadError::syntax(path, line, format!("{what}: {:?} is not a number", lossy(t)))
+        }),
+    }
+}
+
+/// Parses a signed decimal integer token.
+pub(crate) fn parse_i64(token: &[u8]) -> Option<i64> {
+    let (neg, digits) = match token.first()? {
+        b'-' => (true, &token[1..]),
+        b'+' => (false, &token[1..]),
+        _ => (false, token),
+    };
+    if digits.is_empty() {
+        return None;
+    }
+    let mut v: i64 = 0;
+    for &d in digits {
+        if !d.is_ascii_digit() {
+            return None;
+        }
+        v = v.checked_mul(10)?.checked_add((d - b'0') as i64)?;
+    }
+    Some(if neg { -v } else { v })
+}
+
+/// A fast, deterministic hasher for keys made of a few integers (vertex positions by
+/// bits). Inputs are our own parsed numbers; the worst case of an adversarial file is a
+/// slower load, never a wrong one.
+#[derive(Default, Clone, Copy)]
+pub(crate) struct BitsHasher(u64);
+
+impl Hasher for BitsHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut b = [0u8; 8];
+            b[..chunk.len()].copy_from_slice(chunk);
+            self.write_u64(u64::from_le_bytes(b));
+        }
+    }
+    fn write_u64(&mut self, n: u64) {
+        self.0 = (self.0.rotate_left(5) ^ n).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+}
+
+/// Hash map keyed by bit patterns.
+pub(crate) type BitsMap<K, V> = std::collections::HashMap<K, V, BuildHasherDefault<BitsHasher>>;
+
+/// The key of a position for deduplication: its bits, with −0 folded into +0.
+pub(crate) fn position_key(p: [f64; 3]) -> [u64; 3] {
+    p.map(|c| (c + 0.0).to_bits())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lines_are_numbered_and_joined() {
+        let path = Path::new("x.obj");
+        let mut l = Lines::new(b"a\r\nb \\\nc\n\nd", path, true);
+        let mut got = Vec::new();
+        while let Some(r) = l.next_line() {
+            let (n, s) = r.unwrap();
+            got.push((n, lossy(&s)));
+        }
+        assert_eq!(
+            got,
+            vec![
+                (1, "a".to_string()),
+                (2, "b  c".to_string()),
+                (4, String::new()),
+                (5, "d".to_string())
+            ]
+        );
+    }
+
+    #[test]
+    fn nul_is_binary() {
+        let path = Path::new("x.obj");
+        let mut l = Lines::new(b"ok\nv 1\0 2\n", path, true);
+        assert!(l.next_line().unwrap().is_ok());
+        let e = l.next_line().unwrap().unwrap_err();
+        assert!(matches!(e, LoadError::NotText { ref at } if at.line == Some(2)));
+    }
+
+    #[test]
+    fn integers() {
+        assert_eq!(parse_i64(b"-12"), Some(-12));
+        assert_eq!(parse_i64(b"+7"), Some(7));
+        assert_eq!(parse_i64(b"-"), None);
+        assert_eq!(parse_i64(b"1x"), None);
+        assert_eq!(parse_i64(b"99999999999999999999"), None);
+    }
+}

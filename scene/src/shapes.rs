@@ -1,0 +1,232 @@
+//! Generated meshes for demos, tests and benchmarks: closed, consistently oriented
+//! (counter-clockwise seen from outside).
+
+use glam::DVec3;
+use std::collections::HashMap;
+
+use crate::{Scene, SceneError};
+
+/// Appends a closed icosphere (an icosahedron subdivided `level` times: 20·4^level
+/// triangles) of the given centre and radius. Returns the number of faces added.
+pub fn icosphere(
+    scene: &mut Scene,
+    centre: DVec3,
+    radius: f64,
+    level: u32,
+    material: u32,
+    object: u32,
+) -> Result<usize, SceneError> {
+    let t = (1.0 + 5f64.sqrt()) / 2.0;
+    let mut verts: Vec<DVec3> = [
+        [-1.0, t, 0.0],
+        [1.0, t, 0.0],
+        [-1.0, -t, 0.0],
+        [1.0, -t, 0.0],
+        [0.0, -1.0, t],
+        [0.0, 1.0, t],
+        [0.0, -1.0, -t],
+        [0.0, 1.0, -t],
+        [t, 0.0, -1.0],
+        [t, 0.0, 1.0],
+        [-t, 0.0, -1.0],
+        [-t, 0.0, 1.0],
+    ]
+    .iter()
+    .map(|p| DVec3::from(*p).normalize())
+    .collect();
+    let mut tris: Vec<[u32; 3]> = vec![
+        [0, 11, 5],
+        [0, 5, 1],
+        [0, 1, 7],
+        [0, 7, 10],
+        [0, 10, 11],
+        [1, 5, 9],
+        [5, 11, 4],
+        [11, 10, 2],
+        [10, 7, 6],
+        [7, 1, 8],
+        [3, 9, 4],
+        [3, 4, 2],
+        [3, 2, 6],
+        [3, 6, 8],
+        [3, 8, 9],
+        [4, 9, 5],
+        [2, 4, 11],
+        [6, 2, 10],
+        [8, 6, 7],
+        [9, 8, 1],
+    ];
+    for _ in 0..level {
+        let mut mid: HashMap<(u32, u32), u32> = HashMap::new();
+        let mut next = Vec::with_capacity(tris.len() * 4);
+        let mut midpoint = |a: u32, b: u32, verts: &mut Vec<DVec3>| -> u32 {
+            let key = (a.min(b), a.max(b));
+            *mid.entry(key).or_insert_with(|| {
+                let p = ((verts[a as usize] + verts[b as usize]) * 0.5).normalize();
+                verts.push(p);
+                (verts.len() - 1) as u32
+            })
+        };
+        for [a, b, c] in tris {
+            let ab = midpoint(a, b, &mut verts);
+            let bc = midpoint(b, c, &mut verts);
+            let ca = midpoint(c, a, &mut verts);
+            next.extend_from_slice(&[[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+        }
+        tris = next;
+    }
+    let base = scene.vertices.len() as u32;
+    scene
+        .vertices
+        .extend(verts.iter().map(|&p| centre + p * radius));
+    for [a, b, c] in &tris {
+        scene.add_face(&[base + a, base + b, base + c], material, object)?;
+    }
+    Ok(tris.len())
+}
+
+/// Appends a closed UV sphere with `rings` latitude bands and `segments` longitude
+/// segments, in triangles (2·segments·(rings − 1) of them). Returns the faces added.
+pub fn uv_sphere(
+    scene: &mut Scene,
+    centre: DVec3,
+    radius: f64,
+    rings: u32,
+    segments: u32,
+    material: u32,
+    object: u32,
+) -> Result<usize, SceneError> {
+    let rings = rings.max(2);
+    let segments = segments.max(3);
+    let base = scene.vertices.len() as u32;
+    scene.vertices.push(centre + DVec3::Y * radius);
+    for r in 1..rings {
+        let phi = std::f64::consts::PI * r as f64 / rings as f64;
+        for s in 0..segments {
+            let th = std::f64::consts::TAU * s as f64 / segments as f64;
+            let p = DVec3::new(phi.sin() * th.cos(), phi.cos(), -phi.sin() * th.sin());
+            scene.vertices.push(centre + p * radius);
+        }
+    }
+    scene.vertices.push(centre - DVec3::Y * radius);
+    let bottom = base + 1 + (rings - 1) * segments;
+    let ring = |r: u32, s: u32| base + 1 + (r - 1) * segments + (s % segments);
+    let mut n = 0;
+    for s in 0..segments {
+        scene.add_face(&[base, ring(1, s), ring(1, s + 1)], material, object)?;
+        scene.add_face(&[bottom, ring(rings - 1, s + 1), ring(rings - 1, s)], material, object)?;
+        n += 2;
+    }
+    for r in 1..rings - 1 {
+        for s in 0..segments {
+            let (a, b, c, d) = (ring(r, s), ring(r + 1, s), ring(r + 1, s + 1), ring(r, s + 1));
+            scene.add_face(&[a, b, c], material, object)?;
+            scene.add_face(&[a, c, d], material, object)?;
+            n += 2;
+        }
+    }
+    Ok(n)
+}
+
+/// Appends a closed axis-aligned box (six quads) from `lo` to `hi`, optionally rotated
+/// about its centre by `rot`. Returns the faces added.
+pub fn cuboid(
+    scene: &mut Scene,
+    lo: DVec3,
+    hi: DVec3,
+    rot: glam::DMat3,
+    material: u32,
+    object: u32,
+) -> Result<usize, SceneError> {
+    let c = (lo + hi) * 0.5;
+    let base = scene.vertices.len() as u32;
+    for i in 0..8u32 {
+        let p = DVec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        );
+        scene.vertices.push(c + rot * (p - c));
+    }
+    let quads = [
+        [0, 2, 3, 1], // -z
+        [4, 5, 7, 6], // +z
+        [0, 1, 5, 4], // -y
+        [2, 6, 7, 3], // +y
+        [0, 4, 6, 2], // -x
+        [1, 3, 7, 5], // +x
+    ];
+    for q in quads {
+        scene.add_face(&q.map(|v| base + v), material, object)?;
+    }
+    Ok(6)
+}
+
+/// Appends a closed torus (a non-convex closed mesh) of `major` and `minor` radii around
+/// the y axis, in quads. Returns the faces added.
+#[allow(clippy::too_many_arguments)] // a shape generator: every number is a dimension
+pub fn torus(
+    scene: &mut Scene,
+    centre: DVec3,
+    major: f64,
+    minor: f64,
+    rings: u32,
+    sides: u32,
+    material: u32,
+    object: u32,
+) -> Result<usize, SceneError> {
+    let (rings, sides) = (rings.max(3), sides.max(3));
+    let base = scene.vertices.len() as u32;
+    for r in 0..rings {
+        let th = std::f64::consts::TAU * r as f64 / rings as f64;
+        for s in 0..sides {
+            let ph = std::f64::consts::TAU * s as f64 / sides as f64;
+            let rad = major + minor * ph.cos();
+            scene.vertices.push(centre + DVec3::new(rad * th.cos(), minor * ph.sin(), -rad * th.sin()));
+        }
+    }
+    let at = |r: u32, s: u32| base + (r % rings) * sides + (s % sides);
+    for r in 0..rings {
+        for s in 0..sides {
+            scene.add_face(&[at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1)], material, object)?;
+        }
+    }
+    Ok((rings * sides) as usize)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Material;
+
+    fn fresh() -> (Scene, u32, u32) {
+        let mut s = Scene::default();
+        let m = s.add_material(Material::default_grey());
+        let o = s.add_object("shape");
+        (s, m, o)
+    }
+
+    fn outward(s: &Scene, centre: DVec3) -> bool {
+        (0..s.faces.len() as u32).all(|f| {
+            let p = s.face_points(f);
+            let c = p.iter().copied().sum::<DVec3>() / p.len() as f64;
+            crate::polygon_normal(&p).dot(c - centre) > 0.0
+        })
+    }
+
+    #[test]
+    fn shapes_are_closed_and_face_outwards() {
+        let (mut s, m, o) = fresh();
+        assert_eq!(icosphere(&mut s, DVec3::ZERO, 1.0, 2, m, o).unwrap(), 320);
+        assert!(s.is_closed() && outward(&s, DVec3::ZERO));
+        let (mut s, m, o) = fresh();
+        uv_sphere(&mut s, DVec3::ONE, 2.0, 8, 12, m, o).unwrap();
+        assert!(s.is_closed() && outward(&s, DVec3::ONE));
+        let (mut s, m, o) = fresh();
+        cuboid(&mut s, DVec3::ZERO, DVec3::ONE, glam::DMat3::IDENTITY, m, o).unwrap();
+        assert!(s.is_closed() && outward(&s, DVec3::splat(0.5)));
+        let (mut s, m, o) = fresh();
+        torus(&mut s, DVec3::ZERO, 2.0, 0.5, 12, 8, m, o).unwrap();
+        assert!(s.is_closed());
+    }
+}
