@@ -1,0 +1,341 @@
+//! PDF, one page, through `pdf-writer`.
+//!
+//! The page is W × H points with `MediaBox [0 0 W H]`; a pixel point (x, y) is written as
+//! (x, H − y), so the picture is upright with PDF's origin at the bottom left. The document
+//! structure (catalog, page tree, resources, shadings, cross-reference table) is written by
+//! `pdf-writer`; the content stream is written with the same number formatter as SVG and
+//! EPS, so the three formats carry identical coordinates. Nothing time- or
+//! machine-dependent is written: equal pictures give equal files.
+//!
+//! - Flat fragments: `r g b rg`, the subpaths of the run, `f` (non-zero rule).
+//! - Opacity: an `ExtGState` per distinct value, named `/a` + thousandths (`/a500` sets
+//!   `/ca 0.5`); the outline's opacity likewise as `/s` + thousandths (`/CA`).
+//! - Gouraud fragments (with vertex colours): each run becomes one type-4 free-form
+//!   triangle-mesh shading (`/Sh0 sh`, `/Sh1 sh`, …) holding every fragment
+//!   fan-triangulated from its first corner; coordinates are 32-bit over the run's bounding
+//!   box rounded outwards to whole points, colours 16-bit per channel.
+//! - Outlines: `w`, round caps and joins and the stroke colour are set once; each run's
+//!   original edges are one path stroked with `S` right after the run's fill.
+
+use std::collections::BTreeSet;
+use std::io::Write;
+
+use pdf_writer::{Name, Pdf, Rect, Ref};
+
+use super::fmt::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
+use super::prep::{check, reversals, walk, Frag};
+use super::{PaintError, PaintStats, Painter, Picture};
+
+/// Options for [`PdfPainter`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PdfOptions {
+    /// Maximal decimals for coordinates and the outline width. Default 2; at most 9.
+    pub decimals: u8,
+    /// Maximal decimals for colour components in [0, 1]. Default 4; at most 9.
+    pub color_decimals: u8,
+}
+
+impl Default for PdfOptions {
+    fn default() -> Self {
+        PdfOptions {
+            decimals: 2,
+            color_decimals: 4,
+        }
+    }
+}
+
+/// Writes a one-page PDF.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct PdfPainter {
+    /// How numbers are written.
+    pub options: PdfOptions,
+}
+
+impl PdfPainter {
+    /// A painter with the given options.
+    pub fn new(options: PdfOptions) -> Self {
+        PdfPainter { options }
+    }
+}
+
+/// What makes two fragments paint alike in PDF.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Style {
+    Flat([u32; 3], u16),
+    Gouraud(u16),
+}
+
+/// A type-4 shading waiting to be written.
+struct Mesh {
+    data: Vec<u8>,
+    /// x0 x1 y0 y1 of the Decode array.
+    decode: [f64; 4],
+}
+
+/// The content stream and the resources it uses.
+struct Content {
+    buf: Vec<u8>,
+    d: u8,
+    cd: u8,
+    height: f64,
+    fill_alphas: BTreeSet<u16>,
+    stroke_alphas: BTreeSet<u16>,
+    meshes: Vec<Mesh>,
+    alpha: u16,
+    rgb: Option<[u32; 3]>,
+}
+
+impl Content {
+    fn point(&mut self, p: [f64; 2]) {
+        push_num(&mut self.buf, p[0], self.d);
+        self.buf.push(b' ');
+        push_num(&mut self.buf, self.height - p[1], self.d);
+    }
+
+    fn color(&mut self, c: [u32; 3], op: &[u8]) {
+        for q in c {
+            push_fixed(&mut self.buf, q, self.cd);
+            self.buf.push(b' ');
+        }
+        self.buf.extend_from_slice(op);
+    }
+
+    fn fill_alpha(&mut self, milli: u16) {
+        if milli != self.alpha {
+            self.buf.extend_from_slice(b"/a");
+            push_uint(&mut self.buf, milli.into());
+            self.buf.extend_from_slice(b" gs\n");
+            self.fill_alphas.insert(milli);
+            self.alpha = milli;
+        }
+    }
+
+    fn quantise(&self, c: [f64; 3]) -> [u32; 3] {
+        c.map(|v| channel_fixed(v, self.cd))
+    }
+
+    fn flat_run(&mut self, run: &[Frag<'_>], rgb: [u32; 3]) {
+        if self.rgb != Some(rgb) {
+            self.color(rgb, b"rg\n");
+            self.rgb = Some(rgb);
+        }
+        for (f, reverse) in run.iter().zip(reversals(run)) {
+            for (k, p) in f.oriented(reverse).enumerate() {
+                self.point(p);
+                self.buf.extend_from_slice(if k == 0 { b" m " } else { b" l " });
+            }
+            self.buf.extend_from_slice(b"h\n");
+        }
+        self.buf.extend_from_slice(b"f\n");
+    }
+
+    fn gouraud_run(&mut self, run: &[Frag<'_>]) {
+        let mut lo = [f64::INFINITY; 2];
+        let mut hi = [f64::NEG_INFINITY; 2];
+        for f in run {
+            for p in f.points.iter() {
+                let q = [p[0], self.height - p[1]];
+                for k in 0..2 {
+                    lo[k] = lo[k].min(q[k]);
+                    hi[k] = hi[k].max(q[k]);
+                }
+            }
+        }
+        for k in 0..2 {
+            lo[k] = lo[k].floor();
+            hi[k] = hi[k].ceil().max(lo[k] + 1.0);
+        }
+        let mut data = Vec::new();
+        let coord = |v: f64, k: usize| -> u32 {
+            ((v - lo[k]) / (hi[k] - lo[k]) * f64::from(u32::MAX)).round() as u32
+        };
+        for f in run {
+            let Some(colors) = &f.colors else { continue };
+            for i in 1..f.points.len() - 1 {
+                for v in [0, i, i + 1] {
+                    let p = f.points[v];
+                    data.push(0);
+                    data.extend_from_slice(&coord(p[0], 0).to_be_bytes());
+                    data.extend_from_slice(&coord(self.height - p[1], 1).to_be_bytes());
+                    for c in &colors[v][..3] {
+                        let q = (c.clamp(0.0, 1.0) * 65535.0).round() as u16;
+                        data.extend_from_slice(&q.to_be_bytes());
+                    }
+                }
+            }
+        }
+        self.buf.extend_from_slice(b"/Sh");
+        push_uint(&mut self.buf, self.meshes.len() as u64);
+        self.buf.extend_from_slice(b" sh\n");
+        self.meshes.push(Mesh {
+            data,
+            decode: [lo[0], hi[0], lo[1], hi[1]],
+        });
+    }
+
+    fn outline(&mut self, run: &[Frag<'_>]) {
+        for f in run {
+            let n = f.points.len();
+            f.polylines(|start, edges, closed| {
+                let last = if closed { edges - 1 } else { edges };
+                for k in 0..=last {
+                    self.point(f.points[(start + k) % n]);
+                    self.buf.extend_from_slice(if k == 0 { b" m " } else { b" l " });
+                }
+                if closed {
+                    self.buf.extend_from_slice(b"h ");
+                }
+            });
+        }
+        self.buf.extend_from_slice(b"S\n");
+    }
+}
+
+impl Painter for PdfPainter {
+    fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
+        let checked = check(picture)?;
+        let (w, h) = (f64::from(picture.width), f64::from(picture.height));
+        let mut c = Content {
+            buf: Vec::with_capacity(64 * picture.fragments.len() + 256),
+            d: self.options.decimals,
+            cd: self.options.color_decimals,
+            height: h,
+            fill_alphas: BTreeSet::new(),
+            stroke_alphas: BTreeSet::new(),
+            meshes: Vec::new(),
+            alpha: 1000,
+            rgb: None,
+        };
+        let mut stats = PaintStats::default();
+
+        if let Some(o) = checked.outline {
+            push_num(&mut c.buf, o.width, c.d);
+            c.buf.extend_from_slice(b" w 1 J 1 j\n");
+            let rgb = c.quantise([o.color[0], o.color[1], o.color[2]]);
+            c.color(rgb, b"RG\n");
+            let milli = alpha_milli(o.color[3]);
+            if milli < 1000 {
+                c.buf.extend_from_slice(b"/s");
+                push_uint(&mut c.buf, milli.into());
+                c.buf.extend_from_slice(b" gs\n");
+                c.stroke_alphas.insert(milli);
+            }
+        }
+        if let Some(bg) = picture.background {
+            c.fill_alpha(alpha_milli(bg[3]));
+            let rgb = c.quantise([bg[0], bg[1], bg[2]]);
+            c.color(rgb, b"rg\n");
+            c.rgb = Some(rgb);
+            c.buf.extend_from_slice(b"0 0 ");
+            push_uint(&mut c.buf, picture.width.into());
+            c.buf.push(b' ');
+            push_uint(&mut c.buf, picture.height.into());
+            c.buf.extend_from_slice(b" re f\n");
+        }
+
+        let cd = self.options.color_decimals;
+        let key = |f: &Frag<'_>| {
+            let a = alpha_milli(f.alpha());
+            match f.colors {
+                Some(_) => Style::Gouraud(a),
+                None => Style::Flat(f.flat_rgb().map(|v| channel_fixed(v, cd)), a),
+            }
+        };
+        let counts = walk(picture, &checked.guard, key, |run| {
+            match key(&run[0]) {
+                Style::Flat(rgb, a) => {
+                    c.fill_alpha(a);
+                    c.flat_run(run, rgb);
+                }
+                Style::Gouraud(a) => {
+                    c.fill_alpha(a);
+                    c.gouraud_run(run);
+                }
+            }
+            stats.paths += 1;
+            if checked.outline.is_some() && run.iter().any(Frag::has_outline) {
+                c.outline(run);
+                stats.strokes += 1;
+            }
+            Ok(())
+        })?;
+        stats.skipped = counts.skipped;
+        stats.clipped = counts.clipped;
+
+        let bytes = c.document(w, h);
+        out.write_all(&bytes)?;
+        out.flush()?;
+        stats.bytes = bytes.len() as u64;
+        Ok(stats)
+    }
+}
+
+impl Content {
+    /// Wraps the content stream into a complete document.
+    fn document(self, w: f64, h: f64) -> Vec<u8> {
+        let mut pdf = Pdf::with_capacity(self.buf.len() + 1024);
+        let catalog = Ref::new(1);
+        let pages = Ref::new(2);
+        let page = Ref::new(3);
+        let content = Ref::new(4);
+        let mut next = 4;
+        let mut alloc = || {
+            next += 1;
+            Ref::new(next)
+        };
+        let mut states: Vec<(Vec<u8>, Ref, bool, u16)> = Vec::new();
+        for &m in &self.fill_alphas {
+            states.push((format!("a{m}").into_bytes(), alloc(), false, m));
+        }
+        for &m in &self.stroke_alphas {
+            states.push((format!("s{m}").into_bytes(), alloc(), true, m));
+        }
+        let shadings: Vec<(Vec<u8>, Ref)> = (0..self.meshes.len())
+            .map(|i| (format!("Sh{i}").into_bytes(), alloc()))
+            .collect();
+
+        pdf.catalog(catalog).pages(pages);
+        pdf.pages(pages).kids([page]).count(1);
+        {
+            let mut p = pdf.page(page);
+            p.media_box(Rect::new(0.0, 0.0, w as f32, h as f32));
+            p.parent(pages);
+            p.contents(content);
+            let mut res = p.resources();
+            if !states.is_empty() {
+                let mut dict = res.ext_g_states();
+                for (name, r, _, _) in &states {
+                    dict.pair(Name(name), *r);
+                }
+            }
+            if !shadings.is_empty() {
+                let mut dict = res.shadings();
+                for (name, r) in &shadings {
+                    dict.pair(Name(name), *r);
+                }
+            }
+        }
+        pdf.stream(content, &self.buf);
+        for (_, r, stroke, m) in &states {
+            let a = f32::from(*m) / 1000.0;
+            let mut gs = pdf.ext_graphics(*r);
+            if *stroke {
+                gs.stroking_alpha(a);
+            } else {
+                gs.non_stroking_alpha(a);
+            }
+        }
+        for ((_, r), mesh) in shadings.iter().zip(&self.meshes) {
+            let mut s = pdf.stream_shading(*r, &mesh.data);
+            // `StreamShadingType` is not exported by pdf-writer 0.14: write the number.
+            s.pair(Name(b"ShadingType"), 4);
+            s.color_space().device_rgb();
+            s.bits_per_coordinate(32);
+            s.bits_per_component(16);
+            s.bits_per_flag(8);
+            let [x0, x1, y0, y1] = mesh.decode.map(|v| v as f32);
+            s.decode([x0, x1, y0, y1, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0]);
+        }
+        pdf.finish()
+    }
+}

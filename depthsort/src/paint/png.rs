@@ -1,0 +1,291 @@
+//! PNG, rasterised with tiny-skia.
+//!
+//! The image is W × H pixels, y down, RGBA 8 bits per channel; pixels stay transparent
+//! where nothing is painted unless the picture has a background. Paths are filled with the
+//! non-zero rule and anti-aliased (unless [`PngOptions::anti_alias`] is off); colours are
+//! 8-bit `round(c · 255)` and blending is tiny-skia's source-over on premultiplied values,
+//! with no gamma conversion.
+//!
+//! **Seams**: a run of fragments of one face (see the module docs) is filled as one path,
+//! so the rasteriser computes coverage of their union and the cuts between fragments of a
+//! face leave no anti-aliasing seam. Edges between *different* faces keep the usual
+//! coverage-based blending, as in any anti-aliased vector renderer.
+//!
+//! **Gouraud** fragments are interpolated per pixel: the run's coverage is rasterised into
+//! a mask (anti-aliased like any fill), and each covered pixel gets the colour
+//! interpolated linearly at its centre in the fan triangle that contains the centre; pixels
+//! on the rim, whose centre lies in no triangle, take the colour of the nearest triangle's
+//! barycentric coordinates clamped to it. Opacity is applied on top, source-over.
+
+use std::io::Write;
+
+use tiny_skia::{
+    Color, FillRule, LineCap, LineJoin, Mask, Paint, Path, PathBuilder, Pixmap, Stroke, Transform,
+};
+
+use super::fmt::{channel_u8, rgb_u8};
+use super::prep::{check, reversals, walk, Frag};
+use super::{PaintError, PaintStats, Painter, Picture};
+
+/// Options for [`PngPainter`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PngOptions {
+    /// Anti-alias fills and outlines. Default on.
+    pub anti_alias: bool,
+    /// The largest `W · H` accepted; larger pictures fail with [`PaintError::Size`].
+    /// Default 2^28 (a gigabyte of RGBA).
+    pub max_pixels: u64,
+}
+
+impl Default for PngOptions {
+    fn default() -> Self {
+        PngOptions {
+            anti_alias: true,
+            max_pixels: 1 << 28,
+        }
+    }
+}
+
+/// Rasterises to PNG.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct PngPainter {
+    /// Rasterisation options.
+    pub options: PngOptions,
+}
+
+impl PngPainter {
+    /// A painter with the given options.
+    pub fn new(options: PngOptions) -> Self {
+        PngPainter { options }
+    }
+
+    /// Rasterises `picture` without encoding it.
+    pub fn render(&self, picture: &Picture) -> Result<(Pixmap, PaintStats), PaintError> {
+        let checked = check(picture)?;
+        let (width, height) = (picture.width, picture.height);
+        if u64::from(width) * u64::from(height) > self.options.max_pixels {
+            return Err(PaintError::Size {
+                width,
+                height,
+                reason: "more pixels than PngOptions::max_pixels",
+            });
+        }
+        let mut pixmap = Pixmap::new(width, height).ok_or(PaintError::Size {
+            width,
+            height,
+            reason: "the pixel buffer cannot be allocated",
+        })?;
+        if let Some(bg) = picture.background {
+            let [r, g, b] = rgb_u8([bg[0], bg[1], bg[2]]);
+            pixmap.fill(Color::from_rgba8(r, g, b, channel_u8(bg[3])));
+        }
+        let aa = self.options.anti_alias;
+        let outline = checked.outline.map(|o| {
+            let [r, g, b] = rgb_u8([o.color[0], o.color[1], o.color[2]]);
+            let mut paint = Paint::default();
+            paint.set_color_rgba8(r, g, b, channel_u8(o.color[3]));
+            paint.anti_alias = aa;
+            let stroke = Stroke {
+                width: o.width as f32,
+                line_cap: LineCap::Round,
+                line_join: LineJoin::Round,
+                ..Stroke::default()
+            };
+            (paint, stroke)
+        });
+
+        let mut stats = PaintStats::default();
+        let mut builder = Some(PathBuilder::new());
+        let counts = walk(picture, &checked.guard, style_key, |run| {
+            let mut pb = builder.take().unwrap_or_default();
+            for (f, reverse) in run.iter().zip(reversals(run)) {
+                for (k, p) in f.oriented(reverse).enumerate() {
+                    if k == 0 {
+                        pb.move_to(p[0] as f32, p[1] as f32);
+                    } else {
+                        pb.line_to(p[0] as f32, p[1] as f32);
+                    }
+                }
+                pb.close();
+            }
+            stats.paths += 1;
+            if let Some(path) = pb.finish() {
+                match style_key(&run[0]) {
+                    Style::Flat([r, g, b], a) => {
+                        let mut paint = Paint::default();
+                        paint.set_color_rgba8(r, g, b, a);
+                        paint.anti_alias = aa;
+                        pixmap.fill_path(&path, &paint, FillRule::Winding, Transform::identity(), None);
+                    }
+                    Style::Gouraud(a) => gouraud(&mut pixmap, run, &path, a, aa),
+                }
+                builder = Some(path.clear());
+            }
+            if let Some((paint, stroke)) = &outline {
+                if run.iter().any(Frag::has_outline) {
+                    let mut pb = builder.take().unwrap_or_default();
+                    for f in run {
+                        let n = f.points.len();
+                        f.polylines(|start, edges, closed| {
+                            let last = if closed { edges - 1 } else { edges };
+                            for k in 0..=last {
+                                let p = f.points[(start + k) % n];
+                                if k == 0 {
+                                    pb.move_to(p[0] as f32, p[1] as f32);
+                                } else {
+                                    pb.line_to(p[0] as f32, p[1] as f32);
+                                }
+                            }
+                            if closed {
+                                pb.close();
+                            }
+                        });
+                    }
+                    if let Some(path) = pb.finish() {
+                        pixmap.stroke_path(&path, paint, stroke, Transform::identity(), None);
+                        builder = Some(path.clear());
+                    }
+                    stats.strokes += 1;
+                }
+            }
+            Ok(())
+        })?;
+        stats.skipped = counts.skipped;
+        stats.clipped = counts.clipped;
+        Ok((pixmap, stats))
+    }
+}
+
+impl Painter for PngPainter {
+    fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
+        let (pixmap, mut stats) = self.render(picture)?;
+        let png = pixmap
+            .encode_png()
+            .map_err(|e| PaintError::Png(e.to_string()))?;
+        out.write_all(&png)?;
+        out.flush()?;
+        stats.bytes = png.len() as u64;
+        Ok(stats)
+    }
+}
+
+/// What makes two fragments paint alike in PNG.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Style {
+    Flat([u8; 3], u8),
+    Gouraud(u8),
+}
+
+fn style_key(f: &Frag<'_>) -> Style {
+    let a = channel_u8(f.alpha());
+    match f.colors {
+        Some(_) => Style::Gouraud(a),
+        None => Style::Flat(rgb_u8(f.flat_rgb()), a),
+    }
+}
+
+/// A fan triangle prepared for barycentric interpolation.
+struct Tri {
+    p: [[f64; 2]; 3],
+    c: [[f64; 3]; 3],
+    inv_det: f64,
+}
+
+/// Fills `path` (the run's union) with colours interpolated per pixel.
+fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bool) {
+    let (w, h) = (pixmap.width(), pixmap.height());
+    let r = path.bounds();
+    let x0 = (r.left().floor().max(0.0) as u32).min(w);
+    let y0 = (r.top().floor().max(0.0) as u32).min(h);
+    let x1 = (r.right().ceil().max(0.0) as u32).min(w);
+    let y1 = (r.bottom().ceil().max(0.0) as u32).min(h);
+    if x0 >= x1 || y0 >= y1 {
+        return;
+    }
+    let (bw, bh) = ((x1 - x0) as usize, (y1 - y0) as usize);
+    let Some(mut mask) = Mask::new(bw as u32, bh as u32) else {
+        return;
+    };
+    let shift = Transform::from_translate(-(x0 as f32), -(y0 as f32));
+    mask.fill_path(path, FillRule::Winding, aa, shift);
+
+    let mut tris = Vec::new();
+    let mut mean = [0.0; 3];
+    let mut count = 0.0_f64;
+    for f in run {
+        let Some(colors) = &f.colors else { continue };
+        let rgb = |i: usize| [colors[i][0], colors[i][1], colors[i][2]].map(|v| v.clamp(0.0, 1.0));
+        for i in 0..f.points.len() {
+            let c = rgb(i);
+            for k in 0..3 {
+                mean[k] += c[k];
+            }
+            count += 1.0;
+        }
+        for i in 1..f.points.len() - 1 {
+            let p = [f.points[0], f.points[i], f.points[i + 1]];
+            let det = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1])
+                - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+            if det != 0.0 && det.is_finite() {
+                tris.push(Tri {
+                    p,
+                    c: [rgb(0), rgb(i), rgb(i + 1)],
+                    inv_det: 1.0 / det,
+                });
+            }
+        }
+    }
+    let mean = mean.map(|v| v / count.max(1.0));
+    let mut color = vec![mean; bw * bh];
+    let mut best = vec![f64::NEG_INFINITY; bw * bh];
+    for t in &tris {
+        let lo = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
+        let hi = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
+        let clamp = |v: f64, a: u32, b: u32| (v.max(f64::from(a)).min(f64::from(b))) as u32;
+        let (tx0, tx1) = (clamp(lo(0).floor() - 1.0, x0, x1), clamp(hi(0).ceil() + 1.0, x0, x1));
+        let (ty0, ty1) = (clamp(lo(1).floor() - 1.0, y0, y1), clamp(hi(1).ceil() + 1.0, y0, y1));
+        let [a, b, c] = t.p;
+        for j in ty0..ty1 {
+            let py = f64::from(j) + 0.5;
+            for i in tx0..tx1 {
+                let px = f64::from(i) + 0.5;
+                let l1 = ((px - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (py - a[1])) * t.inv_det;
+                let l2 = ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) * t.inv_det;
+                let l0 = 1.0 - l1 - l2;
+                let score = l0.min(l1).min(l2);
+                let idx = (j - y0) as usize * bw + (i - x0) as usize;
+                if score > best[idx] {
+                    best[idx] = score;
+                    let l = [l0.max(0.0), l1.max(0.0), l2.max(0.0)];
+                    let sum = l[0] + l[1] + l[2];
+                    color[idx] =
+                        [0, 1, 2].map(|k| (l[0] * t.c[0][k] + l[1] * t.c[1][k] + l[2] * t.c[2][k]) / sum);
+                }
+            }
+        }
+    }
+
+    let alpha = f64::from(alpha) / 255.0;
+    let stride = w as usize * 4;
+    let data = pixmap.data_mut();
+    let coverage = mask.data();
+    for j in 0..bh {
+        for i in 0..bw {
+            let m = coverage[j * bw + i];
+            if m == 0 {
+                continue;
+            }
+            let a = alpha * f64::from(m) / 255.0;
+            let at = (y0 as usize + j) * stride + (x0 as usize + i) * 4;
+            let px = &mut data[at..at + 4];
+            let out_a = a * 255.0 + f64::from(px[3]) * (1.0 - a);
+            let out_a8 = out_a.round().clamp(0.0, 255.0) as u8;
+            let c = color[j * bw + i];
+            for k in 0..3 {
+                let v = c[k] * a * 255.0 + f64::from(px[k]) * (1.0 - a);
+                px[k] = (v.round().clamp(0.0, 255.0) as u8).min(out_a8);
+            }
+            px[3] = out_a8;
+        }
+    }
+}

@@ -1,0 +1,466 @@
+//! What every backend does before writing: check the picture, validate and clip each
+//! fragment, and group consecutive fragments into runs painted as one path.
+
+use std::borrow::Cow;
+
+use super::{Outline, PaintError, PaintFragment, Picture};
+
+/// A valid fragment, clipped to the guard box.
+pub(crate) struct Frag<'a> {
+    /// The fragment as given (face, object, fill).
+    pub src: &'a PaintFragment,
+    /// Corners, at least 3, all finite and inside the guard box.
+    pub points: Cow<'a, [[f64; 2]]>,
+    /// Original-edge flags; shorter than `points` means "false" for the rest.
+    edges: Cow<'a, [bool]>,
+    /// Per-vertex colours, same length as `points`.
+    pub colors: Option<Cow<'a, [[f64; 4]]>>,
+}
+
+impl Frag<'_> {
+    /// Is edge `i` (points[i] → points[i + 1 mod n]) an original model edge?
+    pub fn edge(&self, i: usize) -> bool {
+        self.edges.get(i).copied().unwrap_or(false)
+    }
+
+    /// Opacity in [0, 1].
+    pub fn alpha(&self) -> f64 {
+        self.src.fill[3].clamp(0.0, 1.0)
+    }
+
+    /// The single colour that stands for the fragment: the fill, or the mean of the
+    /// vertex colours for a Gouraud fragment.
+    pub fn flat_rgb(&self) -> [f64; 3] {
+        match &self.colors {
+            None => [self.src.fill[0], self.src.fill[1], self.src.fill[2]],
+            Some(cs) => {
+                let mut sum = [0.0; 3];
+                for c in cs.iter() {
+                    for k in 0..3 {
+                        sum[k] += c[k];
+                    }
+                }
+                let n = cs.len() as f64;
+                [sum[0] / n, sum[1] / n, sum[2] / n]
+            }
+        }
+    }
+
+    /// Twice the signed area (positive when clockwise on screen, y down).
+    pub fn area2(&self) -> f64 {
+        let p = &self.points;
+        let n = p.len();
+        let mut s = 0.0;
+        for i in 0..n {
+            let a = p[i];
+            let b = p[(i + 1) % n];
+            s += a[0] * b[1] - b[0] * a[1];
+        }
+        s
+    }
+
+    /// The corners, in reverse order when `reverse`.
+    pub fn oriented(&self, reverse: bool) -> impl Iterator<Item = [f64; 2]> + '_ {
+        let n = self.points.len();
+        (0..n).map(move |k| self.points[if reverse { n - 1 - k } else { k }])
+    }
+
+    /// Does any edge need outlining?
+    pub fn has_outline(&self) -> bool {
+        (0..self.points.len()).any(|i| self.edge(i))
+    }
+
+    /// Calls `f(start, edges, closed)` for every maximal chain of consecutive original
+    /// edges: the chain runs through points `start, start+1, …, start+edges` (indices mod
+    /// n). When every edge is original there is one chain with `closed = true` and
+    /// `edges = n`.
+    pub fn polylines(&self, mut f: impl FnMut(usize, usize, bool)) {
+        let n = self.points.len();
+        if (0..n).all(|i| self.edge(i)) {
+            f(0, n, true);
+            return;
+        }
+        for s in 0..n {
+            if self.edge(s) && !self.edge((s + n - 1) % n) {
+                let mut len = 0;
+                while self.edge((s + len) % n) {
+                    len += 1;
+                }
+                f(s, len, false);
+            }
+        }
+    }
+}
+
+/// For each fragment of a run: must its corners be reversed so that all subpaths of the
+/// run turn the same way (and the non-zero rule fills their union)?
+pub(crate) fn reversals<'r>(run: &'r [Frag<'_>]) -> impl Iterator<Item = bool> + 'r {
+    let first = if run.len() > 1 { run[0].area2() } else { 0.0 };
+    run.iter()
+        .enumerate()
+        .map(move |(i, f)| i > 0 && f.area2() * first < 0.0)
+}
+
+/// A picture that passed [`check`].
+pub(crate) struct Checked {
+    /// The outline style, `None` when off or invisible (width 0 or opacity 0).
+    pub outline: Option<Outline>,
+    /// The clip box for fragments.
+    pub guard: Guard,
+}
+
+/// Checks the picture-wide values every backend relies on.
+pub(crate) fn check(picture: &Picture) -> Result<Checked, PaintError> {
+    if picture.width == 0 || picture.height == 0 {
+        return Err(PaintError::Size {
+            width: picture.width,
+            height: picture.height,
+            reason: "width and height must be at least 1",
+        });
+    }
+    if let Some(bg) = picture.background {
+        if !bg.iter().all(|c| c.is_finite()) {
+            return Err(PaintError::Style {
+                what: "background",
+                reason: "colour components must be finite",
+            });
+        }
+    }
+    let mut outline = None;
+    if let Some(o) = picture.outline {
+        if !o.color.iter().all(|c| c.is_finite()) {
+            return Err(PaintError::Style {
+                what: "outline",
+                reason: "colour components must be finite",
+            });
+        }
+        if !(o.width.is_finite() && o.width >= 0.0) {
+            return Err(PaintError::Style {
+                what: "outline",
+                reason: "width must be finite and not negative",
+            });
+        }
+        if o.width > 0.0 && o.color[3] > 0.0 {
+            outline = Some(o);
+        }
+    }
+    let w = f64::from(picture.width);
+    let h = f64::from(picture.height);
+    let margin = w.max(h) + 2.0 * outline.map_or(0.0, |o| o.width);
+    Ok(Checked {
+        outline,
+        guard: Guard {
+            min: [-margin, -margin],
+            max: [w + margin, h + margin],
+        },
+    })
+}
+
+/// Is the fragment paintable at all (see the module docs for the rule)?
+pub(crate) fn is_valid(f: &PaintFragment) -> bool {
+    let finite = |p: &[f64]| p.iter().all(|v| v.is_finite());
+    f.points.len() >= 3
+        && f.points.iter().all(|p| finite(p))
+        && finite(&f.fill)
+        && f.vertex_colors
+            .as_ref()
+            .is_none_or(|cs| cs.len() == f.points.len() && cs.iter().all(|c| finite(c)))
+}
+
+/// The box fragments are clipped to.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Guard {
+    min: [f64; 2],
+    max: [f64; 2],
+}
+
+/// The result of clipping one fragment.
+pub(crate) enum Clipped<'a> {
+    /// Entirely inside: borrowed as is.
+    Inside(Frag<'a>),
+    /// Partly inside: a new polygon.
+    Cut(Frag<'a>),
+    /// Nothing left.
+    Outside,
+    /// Clipping overflowed f64.
+    Overflow,
+}
+
+#[derive(Clone, Copy)]
+struct V {
+    p: [f64; 2],
+    c: [f64; 4],
+    /// Is the edge leaving this vertex original?
+    e: bool,
+}
+
+impl Guard {
+    fn contains(&self, p: [f64; 2]) -> bool {
+        p[0] >= self.min[0] && p[0] <= self.max[0] && p[1] >= self.min[1] && p[1] <= self.max[1]
+    }
+
+    /// Clips a valid fragment to the box.
+    pub fn clip<'a>(&self, f: &'a PaintFragment) -> Clipped<'a> {
+        if f.points.iter().all(|&p| self.contains(p)) {
+            return Clipped::Inside(Frag {
+                src: f,
+                points: Cow::Borrowed(&f.points),
+                edges: Cow::Borrowed(&f.original_edges),
+                colors: f.vertex_colors.as_deref().map(Cow::Borrowed),
+            });
+        }
+        let mut poly: Vec<V> = (0..f.points.len())
+            .map(|i| V {
+                p: f.points[i],
+                c: f.vertex_colors.as_ref().map_or(f.fill, |cs| cs[i]),
+                e: f.original_edges.get(i).copied().unwrap_or(false),
+            })
+            .collect();
+        for axis in 0..2 {
+            poly = clip_half(&poly, axis, self.min[axis], false);
+            poly = clip_half(&poly, axis, self.max[axis], true);
+        }
+        if poly.len() < 3 {
+            return Clipped::Outside;
+        }
+        if !poly
+            .iter()
+            .all(|v| v.p.iter().chain(&v.c).all(|x| x.is_finite()))
+        {
+            return Clipped::Overflow;
+        }
+        Clipped::Cut(Frag {
+            src: f,
+            points: Cow::Owned(poly.iter().map(|v| v.p).collect()),
+            edges: Cow::Owned(poly.iter().map(|v| v.e).collect()),
+            colors: f
+                .vertex_colors
+                .as_ref()
+                .map(|_| Cow::Owned(poly.iter().map(|v| v.c).collect())),
+        })
+    }
+}
+
+/// One Sutherland–Hodgman step: keeps the part with `p[axis] <= bound` (`upper`) or
+/// `p[axis] >= bound`. Edge flags follow the edges; edges along the bound are not original.
+fn clip_half(poly: &[V], axis: usize, bound: f64, upper: bool) -> Vec<V> {
+    let inside = |v: &V| {
+        if upper {
+            v.p[axis] <= bound
+        } else {
+            v.p[axis] >= bound
+        }
+    };
+    let n = poly.len();
+    let mut out = Vec::with_capacity(n + 2);
+    for i in 0..n {
+        let a = poly[i];
+        let b = poly[(i + 1) % n];
+        match (inside(&a), inside(&b)) {
+            (true, true) => out.push(a),
+            (true, false) => {
+                out.push(a);
+                out.push(V {
+                    e: false,
+                    ..crossing(&a, &b, axis, bound)
+                });
+            }
+            (false, true) => out.push(V {
+                e: a.e,
+                ..crossing(&a, &b, axis, bound)
+            }),
+            (false, false) => {}
+        }
+    }
+    out
+}
+
+/// The point where segment a→b crosses `p[axis] = bound` (a and b on opposite sides).
+fn crossing(a: &V, b: &V, axis: usize, bound: f64) -> V {
+    // Halved so that differences of huge values cannot overflow.
+    let t = (bound * 0.5 - a.p[axis] * 0.5) / (b.p[axis] * 0.5 - a.p[axis] * 0.5);
+    let t = t.clamp(0.0, 1.0);
+    let lerp = |x: f64, y: f64| x * (1.0 - t) + y * t;
+    let mut p = [lerp(a.p[0], b.p[0]), lerp(a.p[1], b.p[1])];
+    p[axis] = bound;
+    V {
+        p,
+        c: [
+            lerp(a.c[0], b.c[0]),
+            lerp(a.c[1], b.c[1]),
+            lerp(a.c[2], b.c[2]),
+            lerp(a.c[3], b.c[3]),
+        ],
+        e: a.e,
+    }
+}
+
+/// Fragment counts gathered while walking.
+#[derive(Debug, Default, Clone, Copy)]
+pub(crate) struct Counts {
+    pub skipped: usize,
+    pub clipped: usize,
+}
+
+/// Validates and clips the fragments in order and hands each run — consecutive fragments
+/// with the same object, face and `key` — to `run`.
+pub(crate) fn walk<'a, K: PartialEq>(
+    picture: &'a Picture,
+    guard: &Guard,
+    mut key: impl FnMut(&Frag<'a>) -> K,
+    mut run: impl FnMut(&[Frag<'a>]) -> Result<(), PaintError>,
+) -> Result<Counts, PaintError> {
+    let mut counts = Counts::default();
+    let mut pending: Vec<Frag<'a>> = Vec::new();
+    let mut current: Option<(u32, u32, K)> = None;
+    for f in &picture.fragments {
+        if !is_valid(f) {
+            counts.skipped += 1;
+            continue;
+        }
+        let frag = match guard.clip(f) {
+            Clipped::Inside(frag) => frag,
+            Clipped::Cut(frag) => {
+                counts.clipped += 1;
+                frag
+            }
+            Clipped::Outside => {
+                counts.clipped += 1;
+                continue;
+            }
+            Clipped::Overflow => {
+                counts.skipped += 1;
+                continue;
+            }
+        };
+        let k = key(&frag);
+        let same = matches!(&current, Some((o, face, ck)) if *o == f.object && *face == f.face && *ck == k);
+        if !same {
+            if !pending.is_empty() {
+                run(&pending)?;
+                pending.clear();
+            }
+            current = Some((f.object, f.face, k));
+        }
+        pending.push(frag);
+    }
+    if !pending.is_empty() {
+        run(&pending)?;
+    }
+    Ok(counts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn frag(points: Vec<[f64; 2]>) -> PaintFragment {
+        PaintFragment::new(points, [1.0, 0.0, 0.0, 1.0])
+    }
+
+    fn guard() -> Guard {
+        check(&Picture::new(100, 50)).unwrap().guard
+    }
+
+    #[test]
+    fn validity() {
+        assert!(is_valid(&frag(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])));
+        assert!(!is_valid(&frag(vec![[0.0, 0.0], [1.0, 0.0]])));
+        assert!(!is_valid(&frag(vec![[0.0, 0.0], [f64::NAN, 0.0], [0.0, 1.0]])));
+        let mut f = frag(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
+        f.fill[3] = f64::INFINITY;
+        assert!(!is_valid(&f));
+        f.fill[3] = 1.0;
+        f.vertex_colors = Some(vec![[0.0; 4]; 2]);
+        assert!(!is_valid(&f));
+        f.vertex_colors = Some(vec![[0.0; 4]; 3]);
+        assert!(is_valid(&f));
+    }
+
+    #[test]
+    fn clipping_keeps_original_edges_only_on_the_model() {
+        // Guard box is [-100, 200] × [-100, 150].
+        let f = frag(vec![[0.0, 0.0], [1e300, 0.0], [0.0, 10.0]]);
+        let Clipped::Cut(c) = guard().clip(&f) else {
+            panic!("expected a cut")
+        };
+        assert_eq!(&*c.points, &[[0.0, 0.0], [200.0, 0.0], [200.0, 10.0], [0.0, 10.0]]);
+        // (0,0)→(200,0) lies on an original edge, (200,0)→(200,10) on the box.
+        assert_eq!(&*c.edges, &[true, false, true, true]);
+    }
+
+    #[test]
+    fn clipping_interpolates_colours_and_drops_outside() {
+        let mut f = frag(vec![[-300.0, 0.0], [100.0, 0.0], [100.0, 10.0]]);
+        f.vertex_colors = Some(vec![[0.0; 4], [1.0; 4], [1.0; 4]]);
+        let Clipped::Cut(c) = guard().clip(&f) else {
+            panic!("expected a cut")
+        };
+        let cs = c.colors.unwrap();
+        assert_eq!(c.points[0], [-100.0, 0.0]);
+        assert_eq!(cs[0], [0.5; 4]);
+        let far = frag(vec![[1000.0, 0.0], [1001.0, 0.0], [1000.0, 1.0]]);
+        assert!(matches!(guard().clip(&far), Clipped::Outside));
+    }
+
+    #[test]
+    fn polylines_follow_original_edges() {
+        let mut f = frag(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+        f.original_edges = vec![true, false, true, true];
+        let Clipped::Inside(c) = guard().clip(&f) else {
+            panic!()
+        };
+        let mut got = Vec::new();
+        c.polylines(|s, n, closed| got.push((s, n, closed)));
+        assert_eq!(got, vec![(2, 3, false)]);
+        f.original_edges = vec![true; 4];
+        let Clipped::Inside(c) = guard().clip(&f) else {
+            panic!()
+        };
+        got.clear();
+        c.polylines(|s, n, closed| got.push((s, n, closed)));
+        assert_eq!(got, vec![(0, 4, true)]);
+        f.original_edges = vec![false, true];
+        let Clipped::Inside(c) = guard().clip(&f) else {
+            panic!()
+        };
+        got.clear();
+        c.polylines(|s, n, closed| got.push((s, n, closed)));
+        assert_eq!(got, vec![(1, 1, false)]);
+    }
+
+    #[test]
+    fn runs_group_same_face_and_style() {
+        let mut p = Picture::new(10, 10);
+        let tri = vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        for (face, object) in [(1, 0), (1, 0), (2, 0), (2, 1), (2, 1)] {
+            let mut f = frag(tri.clone());
+            f.face = face;
+            f.object = object;
+            p.fragments.push(f);
+        }
+        p.fragments.insert(1, frag(vec![[0.0, 0.0]]));
+        let mut sizes = Vec::new();
+        let counts = walk(&p, &guard(), |_| (), |run| {
+            sizes.push(run.len());
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(sizes, vec![2, 1, 2]);
+        assert_eq!(counts.skipped, 1);
+    }
+
+    #[test]
+    fn reversal_matches_the_first_orientation() {
+        let mut p = Picture::new(10, 10);
+        p.fragments.push(frag(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]));
+        p.fragments.push(frag(vec![[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]));
+        let mut got = Vec::new();
+        walk(&p, &guard(), |_| (), |run| {
+            got.extend(reversals(run));
+            Ok(())
+        })
+        .unwrap();
+        assert_eq!(got, vec![false, true]);
+    }
+}

@@ -1,0 +1,202 @@
+//! SVG, written directly as text.
+//!
+//! Layout of the output (one element per line):
+//!
+//! ```text
+//! <svg xmlns="http://www.w3.org/2000/svg" width="W" height="H" viewBox="0 0 W H"[ stroke attributes]>
+//! <rect width="W" height="H" fill="#rrggbb"/>            (only with a background)
+//! <g data-name="object name">                            (one per run of the same object)
+//! <path d="M… L… Z M… Z" fill="#rrggbb"[ fill-opacity="a"]/>
+//! <path d="M… L…" fill="none" stroke="#rrggbb"/>          (outline of the path above)
+//! </g>
+//! </svg>
+//! ```
+//!
+//! Object names go in `data-name` (XML-escaped) because names need not be unique nor free
+//! of spaces, which rules out `id` and `class`; an object index out of range gives a `<g>`
+//! without `data-name`. Stroke width, caps, joins and opacity are set once on `<svg>` and
+//! inherited by the outline paths. SVG has no Gouraud shading: a fragment with vertex
+//! colours is filled with their mean and counted in [`PaintStats::approximated`].
+//!
+//! The `svg` crate could build the same document, but it stores numbers as `f32` and
+//! allocates per attribute; the benchmark `paint` compares both (see BENCHMARKS.md).
+
+use std::io::Write;
+
+use super::fmt::{alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink};
+use super::prep::{check, reversals, walk, Frag};
+use super::{PaintError, PaintStats, Painter, Picture};
+
+/// Options for [`SvgPainter`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SvgOptions {
+    /// Maximal decimals for coordinates and the outline width. Default 2 (a hundredth of
+    /// a pixel); at most 9.
+    pub decimals: u8,
+}
+
+impl Default for SvgOptions {
+    fn default() -> Self {
+        SvgOptions { decimals: 2 }
+    }
+}
+
+/// Writes SVG 1.1 text.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct SvgPainter {
+    /// How numbers are written.
+    pub options: SvgOptions,
+}
+
+impl SvgPainter {
+    /// A painter with the given options.
+    pub fn new(options: SvgOptions) -> Self {
+        SvgPainter { options }
+    }
+}
+
+/// What makes two fragments' fills identical in SVG.
+fn style_key(f: &Frag<'_>) -> ([u8; 3], u16) {
+    (rgb_u8(f.flat_rgb()), alpha_milli(f.alpha()))
+}
+
+impl Painter for SvgPainter {
+    fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
+        let checked = check(picture)?;
+        let d = self.options.decimals;
+        let mut sink = Sink::new(out);
+        let mut stats = PaintStats::default();
+        let b = &mut sink.buf;
+
+        b.extend_from_slice(b"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"");
+        push_uint(b, picture.width.into());
+        b.extend_from_slice(b"\" height=\"");
+        push_uint(b, picture.height.into());
+        b.extend_from_slice(b"\" viewBox=\"0 0 ");
+        push_uint(b, picture.width.into());
+        b.push(b' ');
+        push_uint(b, picture.height.into());
+        b.push(b'"');
+        if let Some(o) = checked.outline {
+            b.extend_from_slice(b" stroke-width=\"");
+            push_num(b, o.width, d);
+            b.extend_from_slice(b"\" stroke-linecap=\"round\" stroke-linejoin=\"round\"");
+            opacity_attr(b, b"stroke-opacity", alpha_milli(o.color[3]));
+        }
+        b.extend_from_slice(b">\n");
+        if let Some(bg) = picture.background {
+            b.extend_from_slice(b"<rect width=\"");
+            push_uint(b, picture.width.into());
+            b.extend_from_slice(b"\" height=\"");
+            push_uint(b, picture.height.into());
+            b.extend_from_slice(b"\" fill=\"");
+            push_hex_color(b, rgb_u8([bg[0], bg[1], bg[2]]));
+            b.push(b'"');
+            opacity_attr(b, b"fill-opacity", alpha_milli(bg[3]));
+            b.extend_from_slice(b"/>\n");
+        }
+
+        let mut group: Option<u32> = None;
+        let counts = walk(picture, &checked.guard, style_key, |run| {
+            let b = &mut sink.buf;
+            let object = run[0].src.object;
+            if group != Some(object) {
+                if group.is_some() {
+                    b.extend_from_slice(b"</g>\n");
+                }
+                open_group(b, picture.objects.get(object as usize));
+                group = Some(object);
+            }
+            let (rgb, alpha) = style_key(&run[0]);
+            b.extend_from_slice(b"<path d=\"");
+            for (f, reverse) in run.iter().zip(reversals(run)) {
+                for (k, p) in f.oriented(reverse).enumerate() {
+                    b.extend_from_slice(match k {
+                        0 => b"M",
+                        1 => b"L",
+                        _ => b" ",
+                    });
+                    push_point(b, p, d);
+                }
+                b.push(b'Z');
+            }
+            b.extend_from_slice(b"\" fill=\"");
+            push_hex_color(b, rgb);
+            b.push(b'"');
+            opacity_attr(b, b"fill-opacity", alpha);
+            b.extend_from_slice(b"/>\n");
+            stats.paths += 1;
+            stats.approximated += run.iter().filter(|f| f.colors.is_some()).count();
+
+            if let Some(o) = checked.outline {
+                if run.iter().any(Frag::has_outline) {
+                    b.extend_from_slice(b"<path d=\"");
+                    for f in run {
+                        push_outline(b, f, d);
+                    }
+                    b.extend_from_slice(b"\" fill=\"none\" stroke=\"");
+                    push_hex_color(b, rgb_u8([o.color[0], o.color[1], o.color[2]]));
+                    b.extend_from_slice(b"\"/>\n");
+                    stats.strokes += 1;
+                }
+            }
+            sink.maybe_flush()?;
+            Ok(())
+        })?;
+        if group.is_some() {
+            sink.buf.extend_from_slice(b"</g>\n");
+        }
+        sink.buf.extend_from_slice(b"</svg>\n");
+        stats.skipped = counts.skipped;
+        stats.clipped = counts.clipped;
+        stats.bytes = sink.finish()?;
+        Ok(stats)
+    }
+}
+
+/// ` name="0.5"` when the opacity is below 1.
+fn opacity_attr(b: &mut Vec<u8>, name: &[u8], milli: u16) {
+    if milli < 1000 {
+        b.push(b' ');
+        b.extend_from_slice(name);
+        b.extend_from_slice(b"=\"");
+        push_milli(b, milli);
+        b.push(b'"');
+    }
+}
+
+fn open_group(b: &mut Vec<u8>, name: Option<&String>) {
+    match name {
+        Some(name) => {
+            b.extend_from_slice(b"<g data-name=\"");
+            push_xml_attr(b, name);
+            b.extend_from_slice(b"\">\n");
+        }
+        None => b.extend_from_slice(b"<g>\n"),
+    }
+}
+
+fn push_point(b: &mut Vec<u8>, p: [f64; 2], d: u8) {
+    push_num(b, p[0], d);
+    b.push(b' ');
+    push_num(b, p[1], d);
+}
+
+/// The original edges of `f` as open subpaths (one closed subpath when all are original).
+fn push_outline(b: &mut Vec<u8>, f: &Frag<'_>, d: u8) {
+    let n = f.points.len();
+    f.polylines(|start, edges, closed| {
+        let last = if closed { edges - 1 } else { edges };
+        for k in 0..=last {
+            b.extend_from_slice(match k {
+                0 => b"M",
+                1 => b"L",
+                _ => b" ",
+            });
+            push_point(b, f.points[(start + k) % n], d);
+        }
+        if closed {
+            b.push(b'Z');
+        }
+    });
+}
