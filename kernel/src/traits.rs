@@ -64,6 +64,12 @@ pub enum KernelError {
     /// A plane normal is zero.
     #[error("zero plane normal")]
     ZeroNormal,
+    /// The number of grid bits asked for is outside the supported range.
+    #[error("unsupported number of grid bits {0} (supported: 2 to 26)")]
+    BadBits(u32),
+    /// Integer plane coefficients exceed the bounds the exact predicates are proven for.
+    #[error("plane coefficients out of range")]
+    PlaneOutOfRange,
 }
 
 /// A polygon kernel: planes, convex polygons, classification and splitting.
