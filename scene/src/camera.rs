@@ -163,7 +163,8 @@ impl Camera {
             return Err(CameraError::EyeIsTarget);
         }
         let s = f.normalize().cross(self.up);
-        if !(s.length_squared() > 1e-24) || self.up.length_squared() == 0.0 {
+        let s2 = s.length_squared();
+        if s2.is_nan() || s2 <= 1e-24 || self.up.length_squared() == 0.0 {
             return Err(CameraError::BadUp);
         }
         if !(self.fov_deg > 0.0 && self.fov_deg < 180.0) {

@@ -7,6 +7,9 @@ use std::path::Path;
 
 use super::{LoadError, Location};
 
+/// A logical line and its 1-based number.
+pub(crate) type NumberedLine<'a> = (u64, Cow<'a, [u8]>);
+
 /// Lines of a text file with their 1-based numbers. A trailing `\r` is removed, and a
 /// line ending in a backslash is joined with the next one (as OBJ and MTL allow); the
 /// joined line carries the number of its first physical line. A line holding a NUL byte
@@ -52,7 +55,7 @@ impl<'a> Lines<'a> {
     }
 
     /// The next logical line and its number.
-    pub(crate) fn next_line(&mut self) -> Option<Result<(u64, Cow<'a, [u8]>), LoadError>> {
+    pub(crate) fn next_line(&mut self) -> Option<Result<NumberedLine<'a>, LoadError>> {
         let number = self.next_line;
         let first = self.physical()?;
         let mut line = Cow::Borrowed(first);

@@ -1,0 +1,332 @@
+//! glTF 2.0, `.gltf` (JSON, buffers embedded as `data:` URIs or in files beside it) and
+//! `.glb` (binary container).
+//!
+//! The `gltf` crate parses and validates the JSON; the binary data is read by
+//! [`data`] with every offset checked. The nodes of the default scene (or of the first
+//! scene; with no scene, every node without a parent) are walked depth first in file
+//! order, each node's transform composed with its parents'. Every node with a mesh
+//! becomes an object named after the node (or its mesh). Primitives in `TRIANGLES`,
+//! `TRIANGLE_STRIP` and `TRIANGLE_FAN` mode become triangles; points and lines are
+//! skipped with a warning. A transform that mirrors reverses the winding, as the
+//! specification asks.
+//!
+//! Materials: `baseColorFactor` RGB becomes `Kd`; its alpha becomes the opacity when
+//! `alphaMode` is `BLEND` (opaque otherwise: `MASK` cut-outs need textures). Materials
+//! with `KHR_materials_unlit` are unlit (`illum 0`), others diffusely lit (`illum 1`).
+//! Primitives without a material get [`Material::default_grey`]. Textures are ignored.
+
+mod data;
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use ::gltf::mesh::Mode;
+use ::gltf::material::AlphaMode;
+use ::gltf::Document;
+use glam::DMat4;
+
+use super::{check_u32, transform, LoadError, LoadOptions, Location};
+use crate::{Face, Material, Scene};
+
+/// Extensions a file may require and still be drawn correctly (they only add material
+/// or texture detail that limn does not use).
+const HARMLESS: &[&str] = &[
+    "KHR_materials_unlit",
+    "KHR_texture_transform",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_ior",
+    "KHR_materials_specular",
+    "KHR_materials_transmission",
+    "KHR_materials_volume",
+    "KHR_materials_variants",
+    "KHR_materials_clearcoat",
+    "KHR_materials_sheen",
+    "KHR_lights_punctual",
+];
+
+/// Triangles after instancing beyond which a file is refused (a small file can place
+/// one big mesh in many nodes).
+const MAX_TRIANGLES: usize = 200_000_000;
+
+/// Parses a `.gltf` or `.glb` file (told apart by the `glTF` magic).
+pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Scene, LoadError> {
+    let glb = bytes.starts_with(b"glTF");
+    let (json, blob) = if glb {
+        data::split_glb(bytes, path)?
+    } else {
+        (bytes, None)
+    };
+    let root: ::gltf::json::Root =
+        ::gltf::json::deserialize::from_slice(json).map_err(|e| json_error(&e, path, glb))?;
+    let doc = Document::from_json(root).map_err(|e| LoadError::Invalid {
+        at: Location::file(path),
+        message: validation_message(&e),
+    })?;
+    for ext in doc.extensions_required() {
+        if !HARMLESS.contains(&ext) {
+            return Err(LoadError::Unsupported {
+                at: Location::file(path),
+                what: format!("required extension {ext}"),
+            });
+        }
+    }
+    let buffers = data::buffers(&doc, blob, path, opts)?;
+    let mut b = Builder {
+        path,
+        buffers: &buffers,
+        scene: Scene::default(),
+        materials: HashMap::new(),
+        skipped_modes: 0,
+        triangles: 0,
+    };
+    b.walk(&doc)?;
+    if b.skipped_modes > 0 {
+        b.scene.warnings.push(format!(
+            "{}: {} point or line primitives skipped",
+            path.display(),
+            b.skipped_modes
+        ));
+    }
+    if b.scene.faces.is_empty() {
+        b.scene.warnings.push(format!("{}: no faces", path.display()));
+    }
+    Ok(b.scene)
+}
+
+fn json_error(e: &::gltf::json::Error, path: &Path, glb: bool) -> LoadError {
+    let at = if glb {
+        Location::record(path, format!("JSON chunk line {}", e.line()))
+    } else {
+        Location::line(path, e.line() as u64)
+    };
+    if e.is_eof() {
+        LoadError::Truncated {
+            at,
+            detail: e.to_string(),
+        }
+    } else {
+        LoadError::Syntax {
+            at,
+            message: format!("glTF JSON: {e}"),
+        }
+    }
+}
+
+fn validation_message(e: &::gltf::Error) -> String {
+    match e {
+        ::gltf::Error::Validation(list) => {
+            let shown: Vec<String> = list
+                .iter()
+                .take(5)
+                .map(|(p, err)| format!("{p}: {err}"))
+                .collect();
+            let more = list.len().saturating_sub(5);
+            let mut m = format!("invalid glTF: {}", shown.join("; "));
+            if more > 0 {
+                m.push_str(&format!(" (and {more} more)"));
+            }
+            m
+        }
+        other => format!("invalid glTF: {other}"),
+    }
+}
+
+struct Builder<'a, 'b> {
+    path: &'a Path,
+    buffers: &'a [std::borrow::Cow<'b, [u8]>],
+    scene: Scene,
+    /// glTF material index (`None`: the default) → scene material.
+    materials: HashMap<Option<usize>, u32>,
+    skipped_modes: usize,
+    triangles: usize,
+}
+
+impl Builder<'_, '_> {
+    fn walk(&mut self, doc: &Document) -> Result<(), LoadError> {
+        let roots: Vec<::gltf::Node> = match doc.default_scene().or_else(|| doc.scenes().next()) {
+            Some(s) => s.nodes().collect(),
+            None => {
+                let mut has_parent = vec![false; doc.nodes().len()];
+                for n in doc.nodes() {
+                    for c in n.children() {
+                        has_parent[c.index()] = true;
+                    }
+                }
+                doc.nodes().filter(|n| !has_parent[n.index()]).collect()
+            }
+        };
+        let mut visited = vec![false; doc.nodes().len()];
+        let mut stack: Vec<(::gltf::Node, DMat4)> =
+            roots.into_iter().rev().map(|n| (n, DMat4::IDENTITY)).collect();
+        while let Some((node, parent)) = stack.pop() {
+            let at = || Location::record(self.path, format!("node {}", node.index()));
+            if std::mem::replace(&mut visited[node.index()], true) {
+                return Err(LoadError::Invalid {
+                    at: at(),
+                    message: "reached twice: nodes must form disjoint trees".into(),
+                });
+            }
+            let local = node.transform().matrix().map(|c| c.map(|v| v as f64));
+            let world = parent * DMat4::from_cols_array_2d(&local);
+            if !transform::is_finite(&world) {
+                return Err(LoadError::NonFinite {
+                    at: at(),
+                    what: "transform".into(),
+                });
+            }
+            if let Some(mesh) = node.mesh() {
+                let name = node
+                    .name()
+                    .or(mesh.name())
+                    .map(str::to_string)
+                    .unwrap_or_else(|| format!("node {}", node.index()));
+                check_u32(self.scene.objects.len(), "objects", self.path)?;
+                let object = self.scene.add_object(&name);
+                for prim in mesh.primitives() {
+                    self.primitive(&mesh, &prim, object, &world)?;
+                }
+            }
+            let children: Vec<_> = node.children().collect();
+            stack.extend(children.into_iter().rev().map(|c| (c, world)));
+        }
+        Ok(())
+    }
+
+    fn primitive(
+        &mut self,
+        mesh: &::gltf::Mesh,
+        prim: &::gltf::Primitive,
+        object: u32,
+        world: &DMat4,
+    ) -> Result<(), LoadError> {
+        let at = || {
+            Location::record(
+                self.path,
+                format!("mesh {} primitive {}", mesh.index(), prim.index()),
+            )
+        };
+        let mode = prim.mode();
+        if !matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan) {
+            self.skipped_modes += 1;
+            return Ok(());
+        }
+        let pos = prim.get(&::gltf::Semantic::Positions).ok_or_else(|| LoadError::Invalid {
+            at: at(),
+            message: "no POSITION attribute".into(),
+        })?;
+        let positions = data::read_vec3(&pos, self.buffers, "position", self.path)?;
+        let normals = match prim.get(&::gltf::Semantic::Normals) {
+            Some(acc) if acc.count() == positions.len() => {
+                Some(data::read_vec3(&acc, self.buffers, "normal", self.path)?)
+            }
+            _ => None,
+        };
+        let indices = match prim.indices() {
+            Some(acc) => data::read_indices(&acc, self.buffers, self.path)?,
+            None => (0..positions.len() as u32).collect(),
+        };
+        if let Some(&bad) = indices.iter().find(|&&i| i as usize >= positions.len()) {
+            return Err(LoadError::IndexOutOfRange {
+                at: at(),
+                what: "vertex",
+                index: bad as i64,
+                count: positions.len() as u64,
+            });
+        }
+        let tris = triangles(mode, &indices).ok_or_else(|| LoadError::Invalid {
+            at: at(),
+            message: format!("{} indices do not make whole triangles", indices.len()),
+        })?;
+        self.triangles = self.triangles.saturating_add(tris.len());
+        if self.triangles > MAX_TRIANGLES {
+            return Err(LoadError::TooLarge {
+                at: Location::file(self.path),
+                what: "triangles after instancing",
+                limit: MAX_TRIANGLES as u64,
+            });
+        }
+        let material = self.material(prim.material());
+        let (v0, n0, f0) = (
+            self.scene.vertices.len(),
+            self.scene.normals.len(),
+            self.scene.faces.len(),
+        );
+        check_u32(v0 + positions.len(), "vertices", self.path)?;
+        check_u32(f0 + tris.len(), "faces", self.path)?;
+        self.scene.vertices.extend_from_slice(&positions);
+        if let Some(ns) = &normals {
+            self.scene.normals.extend_from_slice(ns);
+        }
+        for t in tris {
+            let vertices = t.map(|i| v0 as u32 + i).to_vec();
+            let normals = normals.as_ref().map(|_| t.map(|i| n0 as u32 + i).to_vec());
+            self.scene.faces.push(Face {
+                vertices,
+                normals,
+                material,
+                object,
+            });
+        }
+        transform::apply(&mut self.scene, world, v0, n0, f0);
+        if !transform::vertices_finite(&self.scene, v0) {
+            return Err(LoadError::NonFinite {
+                at: at(),
+                what: "vertex after the node transforms".into(),
+            });
+        }
+        Ok(())
+    }
+
+    fn material(&mut self, m: ::gltf::Material) -> u32 {
+        if let Some(&i) = self.materials.get(&m.index()) {
+            return i;
+        }
+        let mat = match m.index() {
+            None => Material::default_grey(),
+            Some(i) => {
+                let [r, g, b, a] = m.pbr_metallic_roughness().base_color_factor();
+                let kd = [r, g, b].map(|c| (c as f64).clamp(0.0, 1.0));
+                let name = m.name().map_or_else(|| format!("material {i}"), str::to_string);
+                let mut mat = if m.unlit() {
+                    Material::unlit(&name, kd)
+                } else {
+                    Material::diffuse(&name, kd)
+                };
+                if m.alpha_mode() == AlphaMode::Blend {
+                    mat.opacity = (a as f64).clamp(0.0, 1.0);
+                }
+                mat
+            }
+        };
+        let i = self.scene.add_material(mat);
+        self.materials.insert(m.index(), i);
+        i
+    }
+}
+
+/// The triangles of a primitive, by index (strips and fans unrolled, strip triangles
+/// with a repeated vertex, used to join strips, dropped). `None` when a triangle list's
+/// length is not a multiple of three.
+fn triangles(mode: Mode, idx: &[u32]) -> Option<Vec<[u32; 3]>> {
+    Some(match mode {
+        Mode::TriangleStrip => (0..idx.len().saturating_sub(2))
+            .map(|i| {
+                if i % 2 == 0 {
+                    [idx[i], idx[i + 1], idx[i + 2]]
+                } else {
+                    [idx[i], idx[i + 2], idx[i + 1]]
+                }
+            })
+            .filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2])
+            .collect(),
+        Mode::TriangleFan => (1..idx.len().saturating_sub(1))
+            .map(|i| [idx[i], idx[i + 1], idx[0]])
+            .collect(),
+        _ => {
+            if !idx.len().is_multiple_of(3) {
+                return None;
+            }
+            idx.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
+        }
+    })
+}

@@ -1,0 +1,457 @@
+//! limn's scene files (TOML): meshes with transforms and material overrides, the
+//! camera, lights and output options, so that a figure is reproduced from one file.
+//!
+//! ```toml
+//! [camera]                  # optional; without `eye` the camera frames the scene
+//! eye = [3.0, 2.0, 5.0]
+//! target = [0.0, 0.0, 0.0]  # default: the centre of the scene's bounds
+//! up = [0.0, 1.0, 0.0]      # default +Y
+//! fov = 45.0                # vertical, degrees
+//! near = 0.1                # default: chosen from the scene's bounds
+//! far = 100.0
+//!
+//! [output]                  # every key optional
+//! size = "800x600"          # or [800, 600]
+//! background = "#ffffff"    # or [1.0, 1.0, 1.0]
+//! outline = true
+//! outline_color = [0.0, 0.0, 0.0]
+//! outline_width = 0.5
+//! format = "svg"            # svg | pdf | eps | png
+//! sort = "adaptive"         # adaptive | bsp | newell | simple
+//! arith = "exact"           # exact | float
+//! cull = "auto"             # auto | on | off
+//!
+//! [[mesh]]
+//! path = "bunny.obj"        # relative to this file; obj, stl, ply, gltf, glb
+//! name = "bunny"            # renames the mesh's object (prefixes several)
+//! translate = [0.0, -0.1, 0.0]
+//! rotate = [0.0, 90.0, 0.0] # degrees about x, then y, then z
+//! # rotate = { axis = [0.0, 1.0, 0.0], angle = 90.0 }
+//! scale = 10.0              # or [sx, sy, sz]
+//! material = { kd = "#c04030", illum = 1, opacity = 1.0 }
+//!
+//! [[light]]
+//! kind = "directional"      # directional | point | ambient | headlight
+//! direction = [1.0, 1.0, 1.0]  # towards the light (point lights: position)
+//! color = [1.0, 1.0, 1.0]
+//! intensity = 0.8           # multiplies color
+//! ```
+//!
+//! A mesh is placed by `translate · rotate · scale` (scale first). The `material` table
+//! overrides the given fields (`name`, `kd` (alias `color`), `ka`, `ks`, `ns`,
+//! `opacity`, `illum`) in every material of that mesh. Mesh paths that leave the scene
+//! file's folder are refused unless [`LoadOptions::allow_outside`]; a scene file cannot
+//! include another one. Unknown keys are errors.
+
+mod doc;
+
+use std::ops::Range;
+use std::path::Path;
+
+use glam::{DMat4, DQuat, DVec3};
+use toml::Spanned;
+
+use self::doc::{lower, ColourDoc, Doc, LightKindDoc, MeshDoc, RotateDoc, ScaleDoc, SizeDoc, V3};
+use super::{refs, transform, Format, LoadError, LoadOptions, Location};
+use crate::camera::DEFAULT_VIEW_DIRECTION;
+use crate::{Camera, Light, LightKind, Scene};
+
+/// The output part of a scene file, for the command that renders it. `None` means the
+/// file does not say (the renderer's default applies). The enumerated settings are
+/// checked against their allowed spellings and kept as those strings.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SceneOptions {
+    /// Picture size in pixels (width, height), each 1 to 65536.
+    pub size: Option<(u32, u32)>,
+    /// Background colour, each channel in [0, 1].
+    pub background: Option<[f64; 3]>,
+    /// Draw outlines along the model's edges.
+    pub outline: Option<bool>,
+    /// Outline colour.
+    pub outline_color: Option<[f64; 3]>,
+    /// Outline width in pixels (> 0).
+    pub outline_width: Option<f64>,
+    /// Output format: `svg`, `pdf`, `eps` or `png`.
+    pub format: Option<String>,
+    /// Visibility ordering: `adaptive`, `bsp`, `newell` or `simple`.
+    pub sort: Option<String>,
+    /// Arithmetic: `exact` or `float`.
+    pub arith: Option<String>,
+    /// Back-face culling: `auto`, `on` or `off`.
+    pub cull: Option<String>,
+}
+
+/// Loads a scene file: its meshes (placed and with their material overrides), lights,
+/// camera (`scene.camera`, when the file has a `[camera]` table) and output options.
+pub fn load_scene_file(
+    path: &Path,
+    opts: &LoadOptions,
+) -> Result<(Scene, SceneOptions), LoadError> {
+    let bytes = refs::read(path)?;
+    if bytes.is_empty() {
+        return Err(LoadError::Empty {
+            at: Location::file(path),
+        });
+    }
+    let (scene, options) = parse(&bytes, path, opts)?;
+    let scene = super::checked(scene, path)?;
+    Ok((scene, options))
+}
+
+struct Ctx<'a> {
+    path: &'a Path,
+    src: &'a str,
+}
+
+impl Ctx<'_> {
+    fn line(&self, span: Range<usize>) -> Location {
+        let end = span.start.min(self.src.len());
+        let line = self.src.as_bytes()[..end].iter().filter(|&&b| b == b'\n').count();
+        Location::line(self.path, line as u64 + 1)
+    }
+
+    fn invalid(&self, span: Range<usize>, message: impl Into<String>) -> LoadError {
+        LoadError::Invalid {
+            at: self.line(span),
+            message: message.into(),
+        }
+    }
+
+    fn finite3(&self, v: &V3, what: &str) -> Result<DVec3, LoadError> {
+        let p = DVec3::from(*v.get_ref());
+        if !p.is_finite() {
+            return Err(LoadError::NonFinite {
+                at: self.line(v.span()),
+                what: what.into(),
+            });
+        }
+        Ok(p)
+    }
+
+    fn colour(&self, c: &Spanned<ColourDoc>, max: f64) -> Result<[f64; 3], LoadError> {
+        let rgb = match c.get_ref() {
+            ColourDoc::Rgb(rgb) => *rgb,
+            ColourDoc::Hex(s) => parse_hex(s)
+                .ok_or_else(|| self.invalid(c.span(), format!("{s:?} is not a #rrggbb colour")))?,
+        };
+        if rgb.iter().any(|v| !(0.0..=max).contains(v)) {
+            return Err(self.invalid(
+                c.span(),
+                format!("colour channels must be between 0 and {max}"),
+            ));
+        }
+        Ok(rgb)
+    }
+}
+
+fn parse_hex(s: &str) -> Option<[f64; 3]> {
+    let h = s.strip_prefix('#')?;
+    if h.len() != 6 || !h.is_ascii() {
+        return None;
+    }
+    let ch = |i: usize| u8::from_str_radix(&h[i..i + 2], 16).ok().map(|v| v as f64 / 255.0);
+    Some([ch(0)?, ch(2)?, ch(4)?])
+}
+
+/// Parses scene-file bytes; meshes are looked up beside `path`.
+pub(crate) fn parse(
+    bytes: &[u8],
+    path: &Path,
+    opts: &LoadOptions,
+) -> Result<(Scene, SceneOptions), LoadError> {
+    let src = std::str::from_utf8(bytes).map_err(|e| {
+        let line = bytes[..e.valid_up_to()].iter().filter(|&&b| b == b'\n').count() as u64 + 1;
+        LoadError::syntax(path, line, "not UTF-8 text")
+    })?;
+    let cx = Ctx { path, src };
+    let doc: Doc = toml::from_str(src).map_err(|e| LoadError::Syntax {
+        at: match e.span() {
+            Some(s) => cx.line(s),
+            None => Location::file(path),
+        },
+        message: e.message().trim_end().to_string(),
+    })?;
+    let mut scene = Scene::default();
+    for mesh in &doc.mesh {
+        let sub = load_mesh(&cx, mesh.get_ref(), opts)?;
+        scene.append(&sub);
+    }
+    if doc.mesh.is_empty() {
+        scene.warnings.push(format!("{}: no [[mesh]]", path.display()));
+    }
+    for l in &doc.light {
+        scene.lights.push(light(&cx, l)?);
+    }
+    let options = options(&cx, &doc)?;
+    if let Some(cam) = &doc.camera {
+        let size = options.size.unwrap_or((800, 600));
+        scene.camera = Some(camera(&cx, cam, &scene, size)?);
+    }
+    Ok((scene, options))
+}
+
+fn load_mesh(cx: &Ctx, m: &MeshDoc, opts: &LoadOptions) -> Result<Scene, LoadError> {
+    let at = cx.line(m.path.span());
+    let reference = m.path.get_ref();
+    if Format::from_path(Path::new(reference)) == Some(Format::Toml) {
+        return Err(LoadError::Unsupported {
+            at,
+            what: "a scene file naming another scene file".into(),
+        });
+    }
+    let file = refs::resolve(reference, &at, opts)?;
+    let mut sub = super::load(&file, opts).map_err(|e| LoadError::InMesh {
+        at: at.clone(),
+        source: Box::new(e),
+    })?;
+    let mut matrix = DMat4::IDENTITY;
+    if let Some(t) = &m.translate {
+        matrix = DMat4::from_translation(cx.finite3(t, "translation")?);
+    }
+    if let Some(r) = &m.rotate {
+        matrix *= DMat4::from_quat(rotation(cx, r)?);
+    }
+    if let Some(s) = &m.scale {
+        let v = match s.get_ref() {
+            ScaleDoc::Uniform(k) => DVec3::splat(*k),
+            ScaleDoc::PerAxis(a) => DVec3::from(*a),
+        };
+        if !v.is_finite() || v.x * v.y * v.z == 0.0 {
+            return Err(cx.invalid(s.span(), "scale factors must be finite and non-zero"));
+        }
+        matrix *= DMat4::from_scale(v);
+    }
+    transform::apply(&mut sub, &matrix, 0, 0, 0);
+    if !transform::vertices_finite(&sub, 0) {
+        return Err(LoadError::NonFinite {
+            at,
+            what: "vertex after the mesh's transform".into(),
+        });
+    }
+    if let Some(mat) = &m.material {
+        override_materials(cx, mat, &mut sub)?;
+    }
+    if let Some(name) = &m.name {
+        let single = sub.objects.len() == 1;
+        for o in &mut sub.objects {
+            o.name = if single {
+                name.clone()
+            } else {
+                format!("{name}/{}", o.name)
+            };
+        }
+    }
+    Ok(sub)
+}
+
+fn rotation(cx: &Ctx, r: &Spanned<RotateDoc>) -> Result<DQuat, LoadError> {
+    let q = match r.get_ref() {
+        RotateDoc::Euler([x, y, z]) => {
+            DQuat::from_rotation_z(z.to_radians())
+                * DQuat::from_rotation_y(y.to_radians())
+                * DQuat::from_rotation_x(x.to_radians())
+        }
+        RotateDoc::AxisAngle(a) => {
+            let axis = DVec3::from(a.axis);
+            if axis.length_squared() == 0.0 || !axis.is_finite() {
+                return Err(cx.invalid(r.span(), "the rotation axis must be finite and non-zero"));
+            }
+            DQuat::from_axis_angle(axis.normalize(), a.angle.to_radians())
+        }
+    };
+    if !q.is_finite() {
+        return Err(LoadError::NonFinite {
+            at: cx.line(r.span()),
+            what: "rotation".into(),
+        });
+    }
+    Ok(q)
+}
+
+fn override_materials(
+    cx: &Ctx,
+    mat: &Spanned<doc::MaterialDoc>,
+    sub: &mut Scene,
+) -> Result<(), LoadError> {
+    let d = mat.get_ref();
+    let kd = d.kd.as_ref().map(|c| cx.colour(c, 1.0)).transpose()?;
+    let ka = d.ka.as_ref().map(|c| cx.colour(c, 1.0)).transpose()?;
+    let ks = d.ks.as_ref().map(|c| cx.colour(c, 1.0)).transpose()?;
+    if d.ns.is_some_and(|v| !(v.is_finite() && v >= 0.0)) {
+        return Err(cx.invalid(mat.span(), "ns must be a finite number >= 0"));
+    }
+    if d.opacity.is_some_and(|v| !(0.0..=1.0).contains(&v)) {
+        return Err(cx.invalid(mat.span(), "opacity must be between 0 and 1"));
+    }
+    if d.illum.is_some_and(|v| v > 10) {
+        return Err(cx.invalid(mat.span(), "illum must be a model number 0..10"));
+    }
+    for m in &mut sub.materials {
+        if let Some(n) = &d.name {
+            m.name = n.clone();
+        }
+        if let Some(c) = kd {
+            m.kd = c;
+        }
+        if let Some(c) = ka {
+            m.ka = c;
+        }
+        if let Some(c) = ks {
+            m.ks = c;
+        }
+        if let Some(v) = d.ns {
+            m.ns = v;
+        }
+        if let Some(v) = d.opacity {
+            m.opacity = v;
+        }
+        if let Some(v) = d.illum {
+            m.illum = v;
+        }
+    }
+    Ok(())
+}
+
+fn light(cx: &Ctx, l: &Spanned<doc::LightDoc>) -> Result<Light, LoadError> {
+    let d = l.get_ref();
+    let need = |v: &Option<V3>, what: &str| -> Result<DVec3, LoadError> {
+        match v {
+            Some(v) => cx.finite3(v, what),
+            None => Err(cx.invalid(l.span(), format!("a {:?} light needs {what}", d.kind))),
+        }
+    };
+    let extra = |v: &Option<V3>, what: &str| -> Result<(), LoadError> {
+        match v {
+            Some(v) => Err(cx.invalid(v.span(), format!("a {:?} light has no {what}", d.kind))),
+            None => Ok(()),
+        }
+    };
+    let kind = match d.kind {
+        LightKindDoc::Directional => {
+            extra(&d.position, "position")?;
+            let dir = need(&d.direction, "direction")?;
+            if dir.length_squared() == 0.0 {
+                return Err(cx.invalid(l.span(), "the light direction is zero"));
+            }
+            LightKind::Directional(dir)
+        }
+        LightKindDoc::Point => {
+            extra(&d.direction, "direction")?;
+            LightKind::Point(need(&d.position, "position")?)
+        }
+        LightKindDoc::Ambient | LightKindDoc::Headlight => {
+            extra(&d.direction, "direction")?;
+            extra(&d.position, "position")?;
+            if d.kind == LightKindDoc::Ambient {
+                LightKind::Ambient
+            } else {
+                LightKind::Headlight
+            }
+        }
+    };
+    let colour = match &d.color {
+        Some(c) => cx.colour(c, f64::MAX)?,
+        None => [1.0; 3],
+    };
+    let k = d.intensity.unwrap_or(1.0);
+    if !(k.is_finite() && k >= 0.0) {
+        return Err(cx.invalid(l.span(), "intensity must be a finite number >= 0"));
+    }
+    Ok(Light {
+        kind,
+        color: colour.map(|c| c * k),
+    })
+}
+
+fn options(cx: &Ctx, doc: &Doc) -> Result<SceneOptions, LoadError> {
+    let Some(o) = &doc.output else {
+        return Ok(SceneOptions::default());
+    };
+    let size = match &o.size {
+        None => None,
+        Some(s) => {
+            let (w, h) = match s.get_ref() {
+                SizeDoc::Pair([w, h]) => (*w, *h),
+                SizeDoc::Text(t) => t
+                    .split_once(['x', 'X'])
+                    .and_then(|(w, h)| Some((w.trim().parse().ok()?, h.trim().parse().ok()?)))
+                    .ok_or_else(|| cx.invalid(s.span(), format!("size {t:?} is not WxH")))?,
+            };
+            if !(1..=65536).contains(&w) || !(1..=65536).contains(&h) {
+                return Err(cx.invalid(s.span(), format!("size {w}x{h}: each side must be 1 to 65536")));
+            }
+            Some((w, h))
+        }
+    };
+    let outline_width = match &o.outline_width {
+        Some(w) if !(w.get_ref().is_finite() && *w.get_ref() > 0.0) => {
+            return Err(cx.invalid(w.span(), "outline_width must be a finite number > 0"))
+        }
+        w => w.as_ref().map(|w| *w.get_ref()),
+    };
+    Ok(SceneOptions {
+        size,
+        background: o.background.as_ref().map(|c| cx.colour(c, 1.0)).transpose()?,
+        outline: o.outline,
+        outline_color: o.outline_color.as_ref().map(|c| cx.colour(c, 1.0)).transpose()?,
+        outline_width,
+        format: o.format.map(lower),
+        sort: o.sort.map(lower),
+        arith: o.arith.map(lower),
+        cull: o.cull.map(lower),
+    })
+}
+
+fn camera(
+    cx: &Ctx,
+    c: &Spanned<doc::CameraDoc>,
+    scene: &Scene,
+    (width, height): (u32, u32),
+) -> Result<Camera, LoadError> {
+    let d = c.get_ref();
+    let at = || cx.line(c.span());
+    let cam_err = |source| LoadError::Camera { at: at(), source };
+    let fov = d.fov.unwrap_or(45.0);
+    let target = d.target.as_ref().map(|t| cx.finite3(t, "camera target")).transpose()?;
+    let mut cam = match &d.eye {
+        Some(e) => {
+            let eye = cx.finite3(e, "camera eye")?;
+            let target = match target {
+                Some(t) => t,
+                None => scene.bounds().map_or(DVec3::ZERO, |(lo, hi)| (lo + hi) * 0.5),
+            };
+            Camera::new(eye, target, width, height)
+        }
+        None => {
+            let (lo, hi) = scene
+                .bounds()
+                .ok_or_else(|| cam_err(crate::CameraError::EmptyScene))?;
+            let dir = DVec3::from(DEFAULT_VIEW_DIRECTION);
+            let mut cam = Camera::framing_bounds(lo, hi, dir, fov, width, height)
+                .map_err(cam_err)?;
+            if let Some(t) = target {
+                cam.eye = t + (cam.eye - cam.target);
+                cam.target = t;
+            }
+            cam
+        }
+    };
+    cam.fov_deg = fov;
+    if let Some(up) = &d.up {
+        cam.up = cx.finite3(up, "camera up")?;
+    }
+    cam.near = d.near;
+    cam.far = d.far;
+    if let (Some(n), None) = (cam.near, cam.far) {
+        if !(n > 0.0 && n.is_finite()) {
+            return Err(cam_err(crate::CameraError::BadClip(n, f64::NAN)));
+        }
+    }
+    if let (None, Some(f)) = (cam.near, cam.far) {
+        if !(f > 0.0 && f.is_finite()) {
+            return Err(cam_err(crate::CameraError::BadClip(f64::NAN, f)));
+        }
+    }
+    cam.validate().map_err(cam_err)?;
+    Ok(cam)
+}
