@@ -1,0 +1,275 @@
+//! Input faces: bad input gives typed errors; non-convex, non-planar and degenerate faces
+//! are converted with exactly the right area and the right original edges.
+
+mod common;
+
+use common::*;
+use glam::DVec3;
+use limn_kernel::check::check_polygon;
+use limn_kernel::{ExactKernel, ExactPolygon, FloatKernel, Kernel, KernelError};
+use num_rational::BigRational;
+use num_traits::Zero;
+
+/// Twice the area of an outline given in grid units in the z = const plane (shoelace).
+fn outline_area2(pts: &[[i64; 3]]) -> i128 {
+    (0..pts.len())
+        .map(|i| {
+            let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
+            p[0] as i128 * q[1] as i128 - q[0] as i128 * p[1] as i128
+        })
+        .sum()
+}
+
+fn total_area2(polys: &[ExactPolygon], axis: usize) -> BigRational {
+    polys
+        .iter()
+        .map(|p| projected_area2(p, axis))
+        .fold(BigRational::zero(), |s, a| s + a)
+}
+
+fn originals(polys: &[ExactPolygon]) -> usize {
+    polys
+        .iter()
+        .map(|p| (0..p.len()).filter(|&i| p.edge_is_original(i)).count())
+        .sum()
+}
+
+fn check_all(polys: &[ExactPolygon]) {
+    for p in polys {
+        check_polygon(p).unwrap();
+    }
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let k = kernel();
+    let f = FloatKernel::new(DVec3::splat(-1.0), DVec3::splat(1.0)).unwrap();
+    let ok = DVec3::new(0.1, 0.2, 0.3);
+    for bad in [
+        DVec3::new(f64::NAN, 0.0, 0.0),
+        DVec3::new(0.0, f64::INFINITY, 0.0),
+    ] {
+        let face = [ok, DVec3::ZERO, bad];
+        assert!(matches!(
+            k.face_polygons(&face),
+            Err(KernelError::NonFinite(..))
+        ));
+        assert!(matches!(
+            f.face_polygons(&face),
+            Err(KernelError::NonFinite(..))
+        ));
+        assert!(matches!(k.point(bad), Err(KernelError::NonFinite(..))));
+        assert!(k.plane_through(bad, DVec3::X).is_err());
+        assert!(k.plane_through(ok, bad).is_err());
+        assert!(f.plane_through(ok, bad).is_err());
+    }
+    let outside = [ok, DVec3::ZERO, DVec3::new(5.0, 0.0, 0.0)];
+    assert!(matches!(
+        k.face_polygons(&outside),
+        Err(KernelError::OutsideGrid(..))
+    ));
+    assert!(matches!(k.face_polygons(&[]), Err(KernelError::Empty)));
+    assert!(matches!(f.face_polygons(&[]), Err(KernelError::Empty)));
+    assert!(matches!(
+        k.plane_through(ok, DVec3::ZERO),
+        Err(KernelError::ZeroNormal)
+    ));
+    assert!(matches!(
+        k.point(DVec3::splat(1e30)),
+        Err(KernelError::TooFar(..))
+    ));
+    assert!(k.point(DVec3::splat(1e6)).is_ok());
+    assert!(matches!(
+        ExactKernel::new(DVec3::ZERO, DVec3::splat(f64::NAN)),
+        Err(KernelError::NonFinite(..))
+    ));
+    assert!(ExactKernel::new(DVec3::ONE, DVec3::ZERO).is_err());
+    assert!(matches!(
+        ExactKernel::with_bits(DVec3::ZERO, DVec3::ONE, 30),
+        Err(KernelError::BadBits(30))
+    ));
+    assert!(ExactKernel::new(DVec3::splat(-f64::MAX), DVec3::splat(f64::MAX)).is_err());
+    assert!(ExactKernel::new(DVec3::ZERO, DVec3::splat(1e-310)).is_err());
+    // A single-point scene is valid; every face in it has zero area.
+    let p = ExactKernel::new(DVec3::ONE, DVec3::ONE).unwrap();
+    assert!(p.face_polygons(&[DVec3::ONE; 3]).unwrap().is_empty());
+}
+
+#[test]
+fn degenerate_faces_are_empty() {
+    let k = kernel();
+    assert!(face(&k, &[[0, 0, 0], [5, 5, 5]]).is_empty());
+    assert!(face(&k, &[[0, 0, 0], [5, 5, 5], [10, 10, 10]]).is_empty());
+    assert!(face(&k, &[[1, 2, 3]; 4]).is_empty());
+    // Collapses after snapping: corners closer than half a step.
+    let s = k.step();
+    let tiny = [
+        DVec3::ZERO,
+        DVec3::new(0.2 * s, 0.0, 0.0),
+        DVec3::new(0.0, 0.2 * s, 0.0),
+    ];
+    assert!(k.face_polygons(&tiny).unwrap().is_empty());
+}
+
+#[test]
+fn duplicate_and_collinear_corners_are_removed() {
+    let k = kernel();
+    let pts = [
+        [0, 0, 0],
+        [0, 0, 0],
+        [5, 0, 0],
+        [10, 0, 0],
+        [10, 10, 0],
+        [10, 10, 0],
+        [0, 10, 0],
+        [0, 0, 0],
+    ];
+    let polys = face(&k, &pts);
+    check_all(&polys);
+    assert_eq!(polys.len(), 1);
+    assert_eq!(polys[0].len(), 4);
+    assert_eq!(originals(&polys), 4);
+    assert_eq!(
+        total_area2(&polys, 2),
+        BigRational::from_integer(200.into())
+    );
+}
+
+fn assert_triangulated(pts: &[[i64; 3]], expected_pieces: usize, outline_edges: usize) {
+    let k = kernel();
+    let polys = face(&k, pts);
+    check_all(&polys);
+    assert_eq!(polys.len(), expected_pieces, "{polys:?}");
+    let want = BigRational::from_integer(outline_area2(pts).into());
+    assert_eq!(total_area2(&polys, 2), want);
+    // Every outline edge appears once as an original edge; diagonals are not original.
+    assert_eq!(originals(&polys), outline_edges);
+    // Same result for every rotation of the corner order.
+    for r in 1..pts.len() {
+        let mut q = pts.to_vec();
+        q.rotate_left(r);
+        let polys = face(&k, &q);
+        assert_eq!(total_area2(&polys, 2), want);
+        assert_eq!(originals(&polys), outline_edges);
+    }
+}
+
+#[test]
+fn l_shape() {
+    let l = [
+        [0, 0, 7],
+        [20, 0, 7],
+        [20, 10, 7],
+        [10, 10, 7],
+        [10, 20, 7],
+        [0, 20, 7],
+    ];
+    assert_triangulated(&l, 4, 6);
+}
+
+#[test]
+fn star() {
+    let mut pts = Vec::new();
+    for i in 0..10 {
+        let a = std::f64::consts::PI * i as f64 / 5.0;
+        let r = if i % 2 == 0 { 1000.0 } else { 400.0 };
+        pts.push([
+            (r * a.cos()).round() as i64,
+            (r * a.sin()).round() as i64,
+            -3,
+        ]);
+    }
+    assert_triangulated(&pts, 8, 10);
+}
+
+#[test]
+fn clockwise_l_shape_faces_down() {
+    let mut l = vec![
+        [0, 0, 7],
+        [20, 0, 7],
+        [20, 10, 7],
+        [10, 10, 7],
+        [10, 20, 7],
+        [0, 20, 7],
+    ];
+    l.reverse();
+    let k = kernel();
+    let polys = face(&k, &l);
+    check_all(&polys);
+    assert!(polys.iter().all(|p| p.support().normal()[2] < 0));
+    assert_eq!(
+        total_area2(&polys, 2),
+        BigRational::from_integer((-600).into())
+    );
+}
+
+#[test]
+fn non_planar_quad_is_two_triangles() {
+    let k = kernel();
+    let quad = [[0, 0, 0], [100, 0, 0], [100, 100, 30], [0, 100, 0]];
+    let polys = face(&k, &quad);
+    check_all(&polys);
+    assert_eq!(polys.len(), 2);
+    assert_eq!(originals(&polys), 4);
+    // Both triangles face up; their projections cover the square exactly.
+    assert!(polys.iter().all(|p| p.support().normal()[2] > 0));
+    assert_eq!(
+        total_area2(&polys, 2),
+        BigRational::from_integer(20000.into())
+    );
+}
+
+#[test]
+fn snap_noise_is_planarised() {
+    // A square whose corner is one grid step off the plane: still one polygon, all edges
+    // original, vertices exactly on the support plane (checked by check_polygon).
+    let k = kernel();
+    let quad = [[0, 0, 0], [1000, 0, 0], [1000, 1000, 1], [0, 1000, 0]];
+    let polys = face(&k, &quad);
+    check_all(&polys);
+    assert_eq!(polys.len(), 1);
+    assert_eq!(originals(&polys), 4);
+}
+
+#[test]
+fn self_intersecting_bow_tie_is_dropped_without_panic() {
+    let k = kernel();
+    let bow = [[0, 0, 0], [100, 100, 0], [100, 0, 0], [0, 100, 0]];
+    assert!(face(&k, &bow).is_empty());
+    let f = FloatKernel::new(DVec3::splat(-1.0), DVec3::splat(1.0)).unwrap();
+    let bow_w: Vec<DVec3> = bow
+        .iter()
+        .map(|p| DVec3::new(p[0] as f64, p[1] as f64, 0.0) * 1e-3)
+        .collect();
+    assert!(f.face_polygons(&bow_w).unwrap().is_empty());
+    // An unbalanced self-intersection (a figure with a crossing) is dropped too.
+    let fig = [[0, 0, 0], [300, 300, 0], [300, 0, 0], [0, 100, 0]];
+    assert!(face(&k, &fig).is_empty());
+}
+
+#[test]
+fn float_kernel_triangulates_too() {
+    let f = FloatKernel::new(DVec3::splat(-50.0), DVec3::splat(50.0)).unwrap();
+    let l: Vec<DVec3> = [
+        [0., 0.],
+        [20., 0.],
+        [20., 10.],
+        [10., 10.],
+        [10., 20.],
+        [0., 20.],
+    ]
+    .iter()
+    .map(|p| DVec3::new(p[0], p[1], 1.0))
+    .collect();
+    let polys = f.face_polygons(&l).unwrap();
+    assert_eq!(polys.len(), 4);
+    let mut area = 0.0;
+    let mut originals = 0;
+    for p in &polys {
+        let v: Vec<DVec3> = p.vertices().collect();
+        area += 0.5 * (v[1] - v[0]).cross(v[2] - v[0]).z;
+        originals += (0..3).filter(|&i| f.edge_is_original(p, i)).count();
+    }
+    assert_eq!(area, 300.0);
+    assert_eq!(originals, 6);
+}

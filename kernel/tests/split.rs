@@ -1,0 +1,208 @@
+//! Splitting: pieces on the right side (exact reference), no spanning piece, areas add
+//! up (rationals), no zero-area piece, numbers never grow.
+
+mod common;
+
+use common::*;
+use limn_kernel::check::{check_polygon, check_split};
+use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane, PolygonSide, Side};
+use num_traits::Zero;
+use proptest::prelude::*;
+
+/// A splitting plane chosen relative to `poly`, biased toward degenerate positions.
+#[derive(Debug, Clone)]
+enum Cut {
+    Random([i64; 3], [i64; 3], [i64; 3]),
+    ThroughVertex(usize, [i64; 3], [i64; 3]),
+    ThroughTwoVertices(usize, usize, [i64; 3]),
+    Support(i128, bool),
+    AlongEdge(usize, i64, i64, i128),
+    Api([f64; 3], [f64; 3]),
+    ThroughInterior([i64; 3], [i64; 3]),
+}
+
+fn cut() -> impl Strategy<Value = Cut> {
+    let unit = || [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0];
+    prop_oneof![
+        2 => (grid_point(), grid_point(), grid_point()).prop_map(|(a, b, c)| Cut::Random(a, b, c)),
+        2 => (0usize..16, grid_point(), grid_point()).prop_map(|(i, a, b)| Cut::ThroughVertex(i, a, b)),
+        2 => (0usize..16, 0usize..16, grid_point()).prop_map(|(i, j, a)| Cut::ThroughTwoVertices(i, j, a)),
+        1 => (-2i128..=2, any::<bool>()).prop_map(|(d, f)| Cut::Support(d, f)),
+        2 => (0usize..16, -3i64..=3, -3i64..=3, -1i128..=1).prop_map(|(i, s, t, d)| Cut::AlongEdge(i, s, t, d)),
+        2 => (unit(), unit()).prop_map(|(p, n)| Cut::Api(p, n)),
+        4 => ([-99i64..99, -99i64..99, -99i64..99], [-99i64..99, -99i64..99, -99i64..99]).prop_map(|(a, b)| Cut::ThroughInterior(a, b)),
+    ]
+}
+
+fn grid(k: &ExactKernel, p: &ExactPolygon, i: usize) -> [i64; 3] {
+    let v = k.vertex_grid(p, i % p.len());
+    v.map(|c| c.round() as i64)
+}
+
+fn make_cut(k: &ExactKernel, poly: &ExactPolygon, c: &Cut) -> Option<Plane> {
+    let g = |a: [i64; 3]| limn_kernel::GridPoint::from_array(a);
+    match c {
+        Cut::Random(a, b, c) => Plane::through(g(*a), g(*b), g(*c)),
+        Cut::ThroughVertex(i, a, b) => Plane::through(g(grid(k, poly, *i)), g(*a), g(*b)),
+        Cut::ThroughTwoVertices(i, j, a) => {
+            Plane::through(g(grid(k, poly, *i)), g(grid(k, poly, *j)), g(*a))
+        }
+        Cut::Support(d, flip) => {
+            let (a, b, c, e) = poly.support().coefficients();
+            let p = Plane::new(a, b, c, e + d)?;
+            Some(if *flip { p.flipped() } else { p })
+        }
+        Cut::AlongEdge(i, s, t, d) => {
+            let (a, b, c, e) = poly.support().coefficients();
+            let (a2, b2, c2, e2) = poly.edge_plane(i % poly.len()).coefficients();
+            Plane::new(
+                a * s + a2 * t,
+                b * s + b2 * t,
+                c * s + c2 * t,
+                e * *s as i128 + e2 * *t as i128 + d,
+            )
+        }
+        Cut::ThroughInterior(a, b) => {
+            let n = poly.len() as f64;
+            let c = (0..poly.len())
+                .map(|i| k.vertex_grid(poly, i))
+                .fold([0.0; 3], |s, v| {
+                    [s[0] + v[0] / n, s[1] + v[1] / n, s[2] + v[2] / n]
+                })
+                .map(|x| x.round() as i64);
+            let add = |d: &[i64; 3]| g([c[0] + d[0], c[1] + d[1], c[2] + d[2]]);
+            Plane::through(g(c), add(a), add(b))
+        }
+        Cut::Api(p, n) => k
+            .plane_through(glam::DVec3::from_array(*p), glam::DVec3::from_array(*n))
+            .ok(),
+    }
+}
+
+/// All checks of one split; returns the pieces.
+fn checked_split(
+    k: &ExactKernel,
+    poly: &ExactPolygon,
+    h: &Plane,
+) -> (Option<ExactPolygon>, Option<ExactPolygon>) {
+    let (f, b) = k.split(poly, h);
+    check_split(poly, h, f.as_ref(), b.as_ref())
+        .unwrap_or_else(|e| panic!("{e}: {poly:?} by {h:?}"));
+    // The reference: every vertex of each piece on the right side, some strictly.
+    for (piece, want) in [(&f, Side::Front), (&b, Side::Back)] {
+        let Some(p) = piece else { continue };
+        let sides: Vec<Side> = (0..p.len()).map(|i| vertex_side(p, i, h)).collect();
+        assert!(
+            !sides.contains(&want.flip()),
+            "piece vertex on the wrong side: {sides:?}"
+        );
+        let c = k.classify(p, h);
+        assert_ne!(c, PolygonSide::Spanning);
+    }
+    // Areas add up exactly (projected along the support's dominant axis: all pieces share
+    // the support plane, so projected areas are proportional to true areas).
+    let axis = poly.support().dominant_axis();
+    let total = projected_area2(poly, axis);
+    let parts = [&f, &b]
+        .iter()
+        .filter_map(|p| p.as_ref())
+        .map(|p| {
+            let a = projected_area2(p, axis);
+            assert!(!a.is_zero(), "zero-area piece");
+            a
+        })
+        .fold(num_rational::BigRational::zero(), |s, a| s + a);
+    assert_eq!(total, parts, "areas do not add up");
+    (f, b)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(600))]
+
+    #[test]
+    fn one_split(pts in lattice_polygon(), c in cut()) {
+        let k = kernel();
+        for poly in face(&k, &pts) {
+            check_polygon(&poly).unwrap();
+            if let Some(h) = make_cut(&k, &poly, &c) {
+                checked_split(&k, &poly, &h);
+            }
+        }
+    }
+
+    #[test]
+    fn triangles(a in grid_point(), b in grid_point(), c in grid_point(), cuts in prop::collection::vec(cut(), 1..6)) {
+        let k = kernel();
+        for poly in face(&k, &[a, b, c]) {
+            let mut p = poly;
+            for c in &cuts {
+                let Some(h) = make_cut(&k, &p, c) else { continue };
+                let (f, b) = checked_split(&k, &p, &h);
+                p = f.or(b).unwrap();
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(40))]
+
+    /// 100 splits in a row: every check after every split, and every plane of the result
+    /// is an input plane (so no number ever grows beyond the input bounds; overflow checks
+    /// are on in the test profile).
+    #[test]
+    fn hundred_splits_in_a_row(pts in lattice_polygon(), cuts in prop::collection::vec(cut(), 100), keep in prop::collection::vec(any::<bool>(), 100)) {
+        let k = kernel();
+        for poly in face(&k, &pts) {
+            let mut inputs: Vec<Plane> = vec![*poly.support()];
+            inputs.extend((0..poly.len()).map(|i| *poly.edge_plane(i)));
+            let mut p = poly;
+            let mut splits = 0;
+            for (c, keep_front) in cuts.iter().zip(&keep) {
+                let Some(h) = make_cut(&k, &p, c) else { continue };
+                inputs.push(h);
+                inputs.push(h.flipped());
+                let (f, b) = checked_split(&k, &p, &h);
+                if f.is_some() && b.is_some() {
+                    splits += 1;
+                }
+                p = if *keep_front { f.or(b) } else { b.or(f) }.unwrap();
+                for i in 0..p.len() {
+                    prop_assert!(inputs.contains(p.edge_plane(i)));
+                }
+                prop_assert_eq!(p.support(), &inputs[0]);
+            }
+            // The generators must actually exercise splitting.
+            prop_assert!(splits >= 5, "only {} proper splits", splits);
+        }
+    }
+}
+
+#[test]
+fn split_through_vertices_keeps_both_pieces_proper() {
+    let k = kernel();
+    let sq = face(&k, &[[0, 0, 0], [10, 0, 0], [10, 10, 0], [0, 10, 0]]);
+    assert_eq!(sq.len(), 1);
+    // The diagonal plane through (0,0) and (10,10).
+    let h = Plane::new(1, -1, 0, 0).unwrap();
+    let (f, b) = checked_split(&k, &sq[0], &h);
+    let (f, b) = (f.unwrap(), b.unwrap());
+    assert_eq!((f.len(), b.len()), (3, 3));
+    // The cut edge is not original, the others are.
+    let originals = |p: &ExactPolygon| (0..p.len()).filter(|&i| p.edge_is_original(i)).count();
+    assert_eq!(originals(&f), 2);
+    assert_eq!(originals(&b), 2);
+    // A plane touching only a corner does not split.
+    let touch = Plane::new(1, 1, 0, 0).unwrap();
+    let (f2, b2) = checked_split(&k, &sq[0], &touch);
+    assert!(f2.is_some() && b2.is_none());
+    // Coplanar: same facing goes to the front, opposite to the back.
+    let s = *sq[0].support();
+    assert!(matches!(k.split(&sq[0], &s), (Some(_), None)));
+    assert!(matches!(k.split(&sq[0], &s.flipped()), (None, Some(_))));
+    assert_eq!(k.classify(&sq[0], &s), PolygonSide::Coplanar);
+    assert_eq!(
+        k.classify(&sq[0], &s.flipped()),
+        PolygonSide::CoplanarOpposite
+    );
+}
