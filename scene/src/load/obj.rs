@@ -44,6 +44,8 @@ struct Obj<'a> {
     /// Material name → index in the scene (added when first used).
     materials: HashMap<String, u32>,
     material_name: Option<String>,
+    /// Line of the last `usemtl`.
+    material_line: u64,
     material: Option<u32>,
     texcoords: u64,
     ignored_lines: u64,
@@ -61,6 +63,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         object: None,
         materials: HashMap::new(),
         material_name: None,
+        material_line: 0,
         material: None,
         texcoords: 0,
         ignored_lines: 0,
@@ -127,6 +130,7 @@ impl Obj<'_> {
                     return Err(LoadError::syntax(self.path, n, "usemtl without a name"));
                 }
                 self.material_name = Some(name);
+                self.material_line = n;
                 self.material = None;
             }
             b"mtllib" => self.mtllib(n, rest_after_keyword(line))?,
@@ -198,7 +202,7 @@ impl Obj<'_> {
             });
         }
         let object = self.current_object()?;
-        let material = self.current_material(n)?;
+        let material = self.current_material()?;
         check_u32(self.scene.faces.len(), "faces", self.path)?;
         self.scene.faces.push(Face {
             vertices,
@@ -254,7 +258,7 @@ impl Obj<'_> {
         Ok(o)
     }
 
-    fn current_material(&mut self, n: u64) -> Result<u32, LoadError> {
+    fn current_material(&mut self) -> Result<u32, LoadError> {
         if let Some(m) = self.material {
             return Ok(m);
         }
@@ -268,8 +272,9 @@ impl Obj<'_> {
                     None => {
                         if !name.is_empty() {
                             self.scene.warnings.push(format!(
-                                "{}:{n}: material {name:?} is not defined; using the default grey",
-                                self.path.display()
+                                "{}:{}: material {name:?} is not defined; using the default grey",
+                                self.path.display(),
+                                self.material_line
                             ));
                         }
                         Material::default_grey()
