@@ -271,7 +271,12 @@ mod tests {
 
     #[test]
     fn target_projects_to_picture_centre() {
-        let cam = Camera::new(DVec3::new(3.0, 2.0, 5.0), DVec3::new(0.5, 0.0, -1.0), 800, 600);
+        let cam = Camera::new(
+            DVec3::new(3.0, 2.0, 5.0),
+            DVec3::new(0.5, 0.0, -1.0),
+            800,
+            600,
+        );
         let vp = cam.view_projection(0.1, 100.0);
         let p = cam.project_with(&vp, cam.target);
         assert!((p.x - 400.0).abs() < 1e-9 && (p.y - 300.0).abs() < 1e-9);

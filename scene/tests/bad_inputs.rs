@@ -12,7 +12,8 @@ fn ascii_stl(body: &str) -> String {
     format!("solid t\nfacet normal 0 0 1\nouter loop\n{body}endloop\nendfacet\nendsolid t\n")
 }
 
-const PLY_TRI_HEADER: &str = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n\
+const PLY_TRI_HEADER: &str =
+    "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n\
                               element face 1\nproperty list uchar int vertex_indices\n";
 
 // ---------------------------------------------------------------- empty file
@@ -42,7 +43,11 @@ fn truncated_obj_line() {
 #[test]
 fn truncated_ascii_stl() {
     let d = dir();
-    let p = write(d.path(), "t.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n");
+    let p = write(
+        d.path(),
+        "t.stl",
+        "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n",
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::Truncated { .. }), "{e}");
     assert_at(&e, &p, Some(5));
@@ -60,7 +65,11 @@ fn truncated_binary_stl_header() {
 #[test]
 fn truncated_ply_header() {
     let d = dir();
-    let p = write(d.path(), "t.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n");
+    let p = write(
+        d.path(),
+        "t.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n",
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::Truncated { .. }), "{e}");
     assert_at(&e, &p, Some(5));
@@ -82,7 +91,11 @@ fn truncated_binary_ply_inside_a_face_list() {
 fn truncated_ascii_ply_line() {
     let d = dir();
     let body = "0 0 0\n1 0 0\n0 1 0\n3 0 1\n";
-    let p = write(d.path(), "t.ply", ply("ascii", PLY_TRI_HEADER, body.as_bytes()));
+    let p = write(
+        d.path(),
+        "t.ply",
+        ply("ascii", PLY_TRI_HEADER, body.as_bytes()),
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::Syntax { .. }), "{e}");
     assert_at(&e, &p, Some(13));
@@ -185,7 +198,11 @@ fn non_finite_obj() {
 #[test]
 fn non_finite_stl() {
     let d = dir();
-    let p = write(d.path(), "n.stl", ascii_stl("vertex 0 0 0\nvertex inf 0 0\nvertex 0 1 0\n"));
+    let p = write(
+        d.path(),
+        "n.stl",
+        ascii_stl("vertex 0 0 0\nvertex inf 0 0\nvertex 0 1 0\n"),
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::NonFinite { .. }), "{e}");
     assert_at(&e, &p, Some(5));
@@ -202,7 +219,11 @@ fn non_finite_stl() {
 fn non_finite_ply() {
     let d = dir();
     let body = "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n";
-    let p = write(d.path(), "n.ply", ply("ascii", PLY_TRI_HEADER, body.as_bytes()));
+    let p = write(
+        d.path(),
+        "n.ply",
+        ply("ascii", PLY_TRI_HEADER, body.as_bytes()),
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::NonFinite { .. }), "{e}");
     assert_at(&e, &p, Some(11));
@@ -230,7 +251,11 @@ fn non_finite_gltf() {
 fn non_finite_toml() {
     let d = dir();
     write(d.path(), "m.obj", format!("{TRI_OBJ}f 1 2 3\n"));
-    let p = write(d.path(), "s.toml", "[[mesh]]\npath = \"m.obj\"\ntranslate = [nan, 0, 0]\n");
+    let p = write(
+        d.path(),
+        "s.toml",
+        "[[mesh]]\npath = \"m.obj\"\ntranslate = [nan, 0, 0]\n",
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::NonFinite { .. }), "{e}");
     assert_at(&e, &p, Some(3));
@@ -241,7 +266,12 @@ fn non_finite_toml() {
 #[test]
 fn index_zero_and_out_of_range_obj() {
     let d = dir();
-    for (f, zero) in [("f 0 1 2", true), ("f 1 2 4", false), ("f -4 1 2", false), ("f 1//3 2//1 3//1", false)] {
+    for (f, zero) in [
+        ("f 0 1 2", true),
+        ("f 1 2 4", false),
+        ("f -4 1 2", false),
+        ("f 1//3 2//1 3//1", false),
+    ] {
         let p = write(d.path(), "i.obj", format!("{TRI_OBJ}vn 0 0 1\n{f}\n"));
         let e = err(&p);
         if zero {
@@ -257,12 +287,20 @@ fn index_zero_and_out_of_range_obj() {
 fn index_out_of_range_ply_and_gltf() {
     let d = dir();
     let body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n";
-    let p = write(d.path(), "i.ply", ply("ascii", PLY_TRI_HEADER, body.as_bytes()));
+    let p = write(
+        d.path(),
+        "i.ply",
+        ply("ascii", PLY_TRI_HEADER, body.as_bytes()),
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::IndexOutOfRange { .. }), "{e}");
     assert_at(&e, &p, Some(13));
     let body = "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n";
-    let p = write(d.path(), "j.ply", ply("ascii", PLY_TRI_HEADER, body.as_bytes()));
+    let p = write(
+        d.path(),
+        "j.ply",
+        ply("ascii", PLY_TRI_HEADER, body.as_bytes()),
+    );
     assert!(matches!(err(&p), LoadError::IndexOutOfRange { .. }));
     let mut buf = quad_buffer();
     buf[50..52].copy_from_slice(&9u16.to_le_bytes());
@@ -279,16 +317,29 @@ fn too_few_vertices() {
     let d = dir();
     let p = write(d.path(), "f.obj", format!("{TRI_OBJ}f 1 2\n"));
     let e = err(&p);
-    assert!(matches!(e, LoadError::TooFewVertices { count: 2, .. }), "{e}");
+    assert!(
+        matches!(e, LoadError::TooFewVertices { count: 2, .. }),
+        "{e}"
+    );
     assert_at(&e, &p, Some(4));
     let body = "0 0 0\n1 0 0\n0 1 0\n2 0 1\n";
-    let p = write(d.path(), "f.ply", ply("ascii", PLY_TRI_HEADER, body.as_bytes()));
+    let p = write(
+        d.path(),
+        "f.ply",
+        ply("ascii", PLY_TRI_HEADER, body.as_bytes()),
+    );
     let e = err(&p);
-    assert!(matches!(e, LoadError::TooFewVertices { count: 2, .. }), "{e}");
+    assert!(
+        matches!(e, LoadError::TooFewVertices { count: 2, .. }),
+        "{e}"
+    );
     assert_at(&e, &p, Some(13));
     let p = write(d.path(), "f.stl", ascii_stl("vertex 0 0 0\nvertex 1 0 0\n"));
     let e = err(&p);
-    assert!(matches!(e, LoadError::TooFewVertices { count: 2, .. }), "{e}");
+    assert!(
+        matches!(e, LoadError::TooFewVertices { count: 2, .. }),
+        "{e}"
+    );
     assert_at(&e, &p, Some(6));
 }
 
@@ -299,10 +350,7 @@ fn mtllib_outside_the_folder_is_refused_unless_allowed() {
     let d = dir();
     write(d.path(), "outside.mtl", "newmtl a\nKd 1 0 0\n");
     let abs = d.path().join("outside.mtl");
-    let mut cases = vec![
-        "../outside.mtl".to_string(),
-        abs.display().to_string(),
-    ];
+    let mut cases = vec!["../outside.mtl".to_string(), abs.display().to_string()];
     #[cfg(unix)]
     {
         std::os::unix::fs::symlink(&abs, d.path().join("in/link.mtl")).unwrap_or_else(|_| {
@@ -312,12 +360,26 @@ fn mtllib_outside_the_folder_is_refused_unless_allowed() {
         cases.push("link.mtl".to_string());
     }
     for r in cases {
-        let p = write(d.path(), "in/m.obj", format!("mtllib {r}\n{TRI_OBJ}usemtl a\nf 1 2 3\n"));
+        let p = write(
+            d.path(),
+            "in/m.obj",
+            format!("mtllib {r}\n{TRI_OBJ}usemtl a\nf 1 2 3\n"),
+        );
         let e = err(&p);
         assert!(matches!(e, LoadError::OutsideFolder { .. }), "{r}: {e}");
         assert_at(&e, &p, Some(1));
-        let s = load(&p, &LoadOptions { allow_outside: true }).unwrap();
-        assert_eq!(s.materials[0].kd, [1.0, 0.0, 0.0], "{r} is followed when allowed");
+        let s = load(
+            &p,
+            &LoadOptions {
+                allow_outside: true,
+            },
+        )
+        .unwrap();
+        assert_eq!(
+            s.materials[0].kd,
+            [1.0, 0.0, 0.0],
+            "{r} is followed when allowed"
+        );
     }
 }
 
@@ -329,18 +391,39 @@ fn gltf_buffer_outside_the_folder_is_refused() {
     let e = err(&p);
     assert!(matches!(e, LoadError::OutsideFolder { .. }), "{e}");
     assert_at(&e, &p, None);
-    assert!(load(&p, &LoadOptions { allow_outside: true }).is_ok());
+    assert!(load(
+        &p,
+        &LoadOptions {
+            allow_outside: true
+        }
+    )
+    .is_ok());
 }
 
 #[test]
 fn scene_mesh_outside_the_folder_is_refused() {
     let d = dir();
     write(d.path(), "m.obj", format!("{TRI_OBJ}f 1 2 3\n"));
-    let p = write(d.path(), "in/s.toml", "# scene\n[[mesh]]\npath = \"../m.obj\"\n");
+    let p = write(
+        d.path(),
+        "in/s.toml",
+        "# scene\n[[mesh]]\npath = \"../m.obj\"\n",
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::OutsideFolder { .. }), "{e}");
     assert_at(&e, &p, Some(3));
-    assert_eq!(load(&p, &LoadOptions { allow_outside: true }).unwrap().faces.len(), 1);
+    assert_eq!(
+        load(
+            &p,
+            &LoadOptions {
+                allow_outside: true
+            }
+        )
+        .unwrap()
+        .faces
+        .len(),
+        1
+    );
 }
 
 // ---------------------------------------------------------------- counts beyond the data
@@ -352,20 +435,41 @@ fn counts_claiming_more_than_the_file_holds() {
     stl[80..84].copy_from_slice(&4_000_000_000u32.to_le_bytes());
     let p = write(d.path(), "c.stl", stl);
     let e = err(&p);
-    assert!(matches!(e, LoadError::CountTooLarge { claimed: 4_000_000_000, room: 12, .. }), "{e}");
+    assert!(
+        matches!(
+            e,
+            LoadError::CountTooLarge {
+                claimed: 4_000_000_000,
+                room: 12,
+                ..
+            }
+        ),
+        "{e}"
+    );
     assert_at(&e, &p, None);
 
     let huge = PLY_TRI_HEADER.replace("vertex 3", "vertex 4000000000");
     for fmt in ["ascii", "binary_little_endian"] {
-        let p = write(d.path(), "c.ply", ply(fmt, &huge, b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+        let p = write(
+            d.path(),
+            "c.ply",
+            ply(fmt, &huge, b"0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+        );
         let e = err(&p);
         assert!(matches!(e, LoadError::CountTooLarge { .. }), "{fmt}: {e}");
         assert_at(&e, &p, Some(3));
     }
 
-    let p = write(d.path(), "c.gltf", quad_gltf(&data_uri(&quad_buffer()), 400));
+    let p = write(
+        d.path(),
+        "c.gltf",
+        quad_gltf(&data_uri(&quad_buffer()), 400),
+    );
     let e = err(&p);
-    assert!(matches!(e, LoadError::CountTooLarge { claimed: 400, .. }), "{e}");
+    assert!(
+        matches!(e, LoadError::CountTooLarge { claimed: 400, .. }),
+        "{e}"
+    );
     assert_at(&e, &p, None);
 
     let mut g = glb(&quad_gltf("", 4), &quad_buffer());
@@ -428,7 +532,11 @@ fn obj_unknown_statement_and_bad_numbers() {
 fn broken_mtl_names_the_mtl_file_and_line() {
     let d = dir();
     let mtl = write(d.path(), "b.mtl", "newmtl a\nKd 1 0 0\nd nope\n");
-    let p = write(d.path(), "b.obj", format!("mtllib b.mtl\n{TRI_OBJ}f 1 2 3\n"));
+    let p = write(
+        d.path(),
+        "b.obj",
+        format!("mtllib b.mtl\n{TRI_OBJ}f 1 2 3\n"),
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::Syntax { .. }), "{e}");
     assert_at(&e, &mtl, Some(3));
@@ -447,7 +555,11 @@ fn ply_semantic_errors() {
     assert!(matches!(e, LoadError::Syntax { .. }), "{e}");
     assert_at(&e, &p, Some(2));
     let body = "0 0 0 9\n1 0 0\n0 1 0\n3 0 1 2\n";
-    let p = write(d.path(), "z.ply", ply("ascii", PLY_TRI_HEADER, body.as_bytes()));
+    let p = write(
+        d.path(),
+        "z.ply",
+        ply("ascii", PLY_TRI_HEADER, body.as_bytes()),
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::Syntax { .. }), "{e}");
     assert_at(&e, &p, Some(10));
@@ -461,12 +573,18 @@ fn gltf_invalid_documents() {
     let e = err(&p);
     assert!(matches!(e, LoadError::Invalid { .. }), "{e}");
     assert_at(&e, &p, None);
-    let cycle = quad_gltf(&data_uri(&quad_buffer()), 4)
-        .replace(r#""scale": [2, 2, 2]"#, r#""scale": [2, 2, 2], "children": [0]"#);
+    let cycle = quad_gltf(&data_uri(&quad_buffer()), 4).replace(
+        r#""scale": [2, 2, 2]"#,
+        r#""scale": [2, 2, 2], "children": [0]"#,
+    );
     let p = write(d.path(), "c.gltf", cycle);
     let e = err(&p);
     assert!(matches!(e, LoadError::Invalid { .. }), "{e}");
-    let p = write(d.path(), "s.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"nodes\": 3}\n");
+    let p = write(
+        d.path(),
+        "s.gltf",
+        "{\"asset\": {\"version\": \"2.0\"},\n \"nodes\": 3}\n",
+    );
     let e = err(&p);
     assert!(matches!(e, LoadError::Syntax { .. }), "{e}");
     assert_at(&e, &p, Some(2));

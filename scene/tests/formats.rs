@@ -18,16 +18,29 @@ fn obj_keeps_ngons_materials_and_order() {
     let p = write(d.path(), "cube.obj", CUBE_OBJ);
     let s = ok(&p);
     assert_eq!(s.faces.len(), 6);
-    assert!(s.faces.iter().all(|f| f.vertices.len() == 4), "quads stay quads");
-    assert_eq!(s.faces[0].vertices, vec![0, 3, 2, 1], "file order and 0-based indices");
+    assert!(
+        s.faces.iter().all(|f| f.vertices.len() == 4),
+        "quads stay quads"
+    );
+    assert_eq!(
+        s.faces[0].vertices,
+        vec![0, 3, 2, 1],
+        "file order and 0-based indices"
+    );
     assert_eq!(s.objects.len(), 1);
     assert_eq!(s.objects[0].name, "box");
     let red = &s.materials[s.faces[0].material as usize];
     assert_eq!(red.name, "red");
-    assert_eq!((red.kd, red.ka, red.ks), ([1.0, 0.0, 0.0], [0.1, 0.0, 0.0], [0.5; 3]));
+    assert_eq!(
+        (red.kd, red.ka, red.ks),
+        ([1.0, 0.0, 0.0], [0.1, 0.0, 0.0], [0.5; 3])
+    );
     assert_eq!((red.ns, red.illum, red.opacity), (32.0, 2, 1.0));
     let glass = &s.materials[s.faces[2].material as usize];
-    assert_eq!((glass.kd, glass.opacity, glass.illum), ([0.2, 0.4, 0.6], 0.25, 0));
+    assert_eq!(
+        (glass.kd, glass.opacity, glass.illum),
+        ([0.2, 0.4, 0.6], 0.25, 0)
+    );
     assert_eq!(s.faces[1].material, s.faces[0].material);
     assert!(s.is_closed(), "the cube's quads face outwards consistently");
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
@@ -48,22 +61,36 @@ fn obj_negative_indices_normals_groups_and_defaults() {
     let p = write(d.path(), "pent.obj", src);
     let s = ok(&p);
     assert_eq!(s.faces.len(), 4);
-    assert_eq!(s.faces[0].vertices, vec![0, 1, 2, 3, 4], "a pentagon, negative indices");
+    assert_eq!(
+        s.faces[0].vertices,
+        vec![0, 1, 2, 3, 4],
+        "a pentagon, negative indices"
+    );
     assert_eq!(s.faces[0].normals, None);
     assert_eq!(s.faces[1].normals, Some(vec![0, 0, 0]));
     assert_eq!(s.faces[2].normals, Some(vec![0, 0, 0]));
     assert_eq!(s.faces[3].normals, None);
     let names: Vec<_> = s.objects.iter().map(|o| o.name.as_str()).collect();
     assert_eq!(names, ["pent", "left side", "right"]);
-    assert_eq!(s.faces[3].object, s.faces[1].object, "a group named again continues");
-    assert!(s.faces.iter().all(|f| s.materials[f.material as usize] == Material::default_grey()));
+    assert_eq!(
+        s.faces[3].object, s.faces[1].object,
+        "a group named again continues"
+    );
+    assert!(s
+        .faces
+        .iter()
+        .all(|f| s.materials[f.material as usize] == Material::default_grey()));
     assert_eq!(s.materials.len(), 1);
 }
 
 #[test]
 fn obj_tr_line_continuation_and_ignored_statements() {
     let d = dir();
-    write(d.path(), "m.mtl", "newmtl a\nKd 0 1 0\nTr 0.75\nmap_Kd tex.png\n");
+    write(
+        d.path(),
+        "m.mtl",
+        "newmtl a\nKd 0 1 0\nTr 0.75\nmap_Kd tex.png\n",
+    );
     let src = "mtllib m.mtl\ns 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nusemtl a\nf 1 2 \\\n 3\n";
     let p = write(d.path(), "t.obj", src);
     let s = ok(&p);
@@ -83,7 +110,10 @@ fn obj_missing_mtl_warns_and_uses_defaults() {
         "mtllib nowhere.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl shiny\nf 1 2 3\n",
     );
     let s = ok(&p);
-    assert_eq!(s.materials[s.faces[0].material as usize].kd, Material::default_grey().kd);
+    assert_eq!(
+        s.materials[s.faces[0].material as usize].kd,
+        Material::default_grey().kd
+    );
     assert_eq!(s.warnings.len(), 2, "{:?}", s.warnings);
     assert!(s.warnings[0].contains("nowhere.mtl") && s.warnings[0].contains("m.obj:1"));
     assert!(s.warnings[1].contains("shiny") && s.warnings[1].contains("m.obj:5"));
@@ -93,7 +123,11 @@ fn obj_missing_mtl_warns_and_uses_defaults() {
 fn obj_mtllib_inside_a_subfolder_is_fine() {
     let d = dir();
     write(d.path(), "mats/a.mtl", "newmtl a\nKd 0 0 1\n");
-    let p = write(d.path(), "m.obj", "mtllib mats/../mats/a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+    let p = write(
+        d.path(),
+        "m.obj",
+        "mtllib mats/../mats/a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n",
+    );
     let s = ok(&p);
     assert_eq!(s.materials[0].kd, [0.0, 0.0, 1.0]);
 }
@@ -101,7 +135,11 @@ fn obj_mtllib_inside_a_subfolder_is_fine() {
 #[test]
 fn binary_stl_starting_with_solid_is_binary_and_shares_vertices() {
     let d = dir();
-    let p = write(d.path(), "cube.stl", binary_stl(b"solid cube exported", &cube_triangles()));
+    let p = write(
+        d.path(),
+        "cube.stl",
+        binary_stl(b"solid cube exported", &cube_triangles()),
+    );
     let s = ok(&p);
     assert_eq!(s.faces.len(), 12);
     assert_eq!(s.vertices.len(), 8, "identical corners are shared");
@@ -110,7 +148,10 @@ fn binary_stl_starting_with_solid_is_binary_and_shares_vertices() {
     assert_eq!(s.materials, vec![Material::default_grey()]);
     // Face ids follow the file: the first face is the first triangle.
     let t = cube_triangles();
-    let want: Vec<DVec3> = t[0].iter().map(|v| DVec3::new(v[0] as f64, v[1] as f64, v[2] as f64)).collect();
+    let want: Vec<DVec3> = t[0]
+        .iter()
+        .map(|v| DVec3::new(v[0] as f64, v[1] as f64, v[2] as f64))
+        .collect();
     assert_eq!(face_points(&s, 0), want);
 }
 
@@ -146,7 +187,10 @@ fn ascii_ply_vertex_colours_are_averaged_into_unlit_materials() {
     assert_eq!(m0.name, "#800080");
     let m1 = &s.materials[s.faces[1].material as usize];
     assert_eq!(m1.kd, [2.0 / 3.0, 0.0, 1.0 / 3.0]);
-    assert_eq!(s.faces[1].material, s.faces[2].material, "equal colours share a material");
+    assert_eq!(
+        s.faces[1].material, s.faces[2].material,
+        "equal colours share a material"
+    );
     assert_eq!(s.materials.len(), 2);
 }
 
@@ -172,7 +216,11 @@ fn ply_face_colours_normals_and_extra_elements() {
                   property float green\nproperty float blue\nproperty float alpha\n\
                   element edge 1\nproperty int vertex1\nproperty int vertex2\n";
     let body = "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2 0.25 0.5 1 0.5\n0 1\n";
-    let s = ok(&write(d.path(), "n.ply", ply("ascii", header, body.as_bytes())));
+    let s = ok(&write(
+        d.path(),
+        "n.ply",
+        ply("ascii", header, body.as_bytes()),
+    ));
     assert_eq!(s.normals.len(), 3);
     assert_eq!(s.faces[0].normals, Some(vec![0, 1, 2]));
     let m = &s.materials[0];
@@ -187,13 +235,19 @@ fn gltf_with_data_uri_applies_the_node_hierarchy() {
     assert_eq!(s.faces.len(), 2);
     assert_eq!(s.objects[0].name, "child");
     // child scale 2, then parent translation 10 along x.
-    assert_eq!(face_points(&s, 0), vec![
-        DVec3::new(10.0, 0.0, 0.0),
-        DVec3::new(12.0, 0.0, 0.0),
-        DVec3::new(12.0, 2.0, 0.0),
-    ]);
+    assert_eq!(
+        face_points(&s, 0),
+        vec![
+            DVec3::new(10.0, 0.0, 0.0),
+            DVec3::new(12.0, 0.0, 0.0),
+            DVec3::new(12.0, 2.0, 0.0),
+        ]
+    );
     let m = &s.materials[0];
-    assert_eq!((m.name.as_str(), m.kd, m.opacity, m.illum), ("red", [1.0, 0.0, 0.0], 0.5, 1));
+    assert_eq!(
+        (m.name.as_str(), m.kd, m.opacity, m.illum),
+        ("red", [1.0, 0.0, 0.0], 0.5, 1)
+    );
 }
 
 #[test]
@@ -201,7 +255,11 @@ fn gltf_with_buffer_file_and_glb_load_the_same() {
     let d = dir();
     write(d.path(), "bin/quad.bin", quad_buffer());
     let a = ok(&write(d.path(), "a.gltf", quad_gltf("bin/quad.bin", 4)));
-    let b = ok(&write(d.path(), "b.glb", glb(&quad_gltf("", 4), &quad_buffer())));
+    let b = ok(&write(
+        d.path(),
+        "b.glb",
+        glb(&quad_gltf("", 4), &quad_buffer()),
+    ));
     assert_eq!(a.vertices, b.vertices);
     assert_eq!(a.faces, b.faces);
     assert_eq!(a.materials, b.materials);
@@ -212,10 +270,16 @@ fn gltf_mirrored_node_reverses_winding_and_unlit_is_illum0() {
     let d = dir();
     let json = quad_gltf(&data_uri(&quad_buffer()), 4)
         .replace(r#""scale": [2, 2, 2]"#, r#""scale": [-1, 1, 1]"#)
-        .replace(r#""alphaMode": "BLEND","#, r#""extensions": {"KHR_materials_unlit": {}},"#);
+        .replace(
+            r#""alphaMode": "BLEND","#,
+            r#""extensions": {"KHR_materials_unlit": {}},"#,
+        );
     let s = ok(&write(d.path(), "m.gltf", json));
     let n = limn_scene::polygon_normal(&face_points(&s, 0));
-    assert!(n.z > 0.0, "a mirrored node keeps faces facing the same way: {n}");
+    assert!(
+        n.z > 0.0,
+        "a mirrored node keeps faces facing the same way: {n}"
+    );
     assert_eq!((s.materials[0].illum, s.materials[0].opacity), (0, 1.0));
 }
 

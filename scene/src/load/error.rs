@@ -76,7 +76,9 @@ pub enum LoadError {
         source: std::io::Error,
     },
     /// The file's extension names no format limn reads.
-    #[error("{at}: unsupported file extension {ext:?} (expected obj, stl, ply, gltf, glb or toml)")]
+    #[error(
+        "{at}: unsupported file extension {ext:?} (expected obj, stl, ply, gltf, glb or toml)"
+    )]
     UnsupportedExtension {
         /// The file.
         at: Location,

@@ -173,11 +173,21 @@ mod tests {
     fn errors_name_the_line() {
         let mut lib = Library::default();
         let mut w = Vec::new();
-        let e = parse(b"newmtl a\nKd 1 x 0\n", Path::new("a.mtl"), &mut lib, &mut w)
-            .unwrap_err();
+        let e = parse(
+            b"newmtl a\nKd 1 x 0\n",
+            Path::new("a.mtl"),
+            &mut lib,
+            &mut w,
+        )
+        .unwrap_err();
         assert!(e.to_string().starts_with("a.mtl:2:"), "{e}");
-        let e = parse(b"newmtl a\nKd 1 nan 0\n", Path::new("a.mtl"), &mut lib, &mut w)
-            .unwrap_err();
+        let e = parse(
+            b"newmtl a\nKd 1 nan 0\n",
+            Path::new("a.mtl"),
+            &mut lib,
+            &mut w,
+        )
+        .unwrap_err();
         assert!(matches!(e, LoadError::NonFinite { .. }));
     }
 }

@@ -26,10 +26,36 @@ use crate::{Face, Material, Scene};
 
 /// Statements accepted and ignored.
 const IGNORED: &[&[u8]] = &[
-    b"vt", b"vp", b"s", b"mg", b"maplib", b"usemap", b"lod", b"bevel", b"c_interp",
-    b"d_interp", b"shadow_obj", b"trace_obj", b"ctech", b"stech", b"cstype", b"deg",
-    b"bmat", b"step", b"curv", b"curv2", b"surf", b"parm", b"trim", b"hole", b"scrv",
-    b"sp", b"end", b"con", b"call", b"csh",
+    b"vt",
+    b"vp",
+    b"s",
+    b"mg",
+    b"maplib",
+    b"usemap",
+    b"lod",
+    b"bevel",
+    b"c_interp",
+    b"d_interp",
+    b"shadow_obj",
+    b"trace_obj",
+    b"ctech",
+    b"stech",
+    b"cstype",
+    b"deg",
+    b"bmat",
+    b"step",
+    b"curv",
+    b"curv2",
+    b"surf",
+    b"parm",
+    b"trim",
+    b"hole",
+    b"scrv",
+    b"sp",
+    b"end",
+    b"con",
+    b"call",
+    b"csh",
 ];
 
 struct Obj<'a> {
@@ -292,7 +318,11 @@ impl Obj<'_> {
 
     fn mtllib(&mut self, n: u64, rest: &[u8]) -> Result<(), LoadError> {
         if rest.is_empty() {
-            return Err(LoadError::syntax(self.path, n, "mtllib without a file name"));
+            return Err(LoadError::syntax(
+                self.path,
+                n,
+                "mtllib without a file name",
+            ));
         }
         let at = Location::line(self.path, n);
         let whole = lossy(rest);

@@ -26,10 +26,10 @@ const RECORD: usize = 50;
 
 /// Parses an STL file (binary or ASCII, told apart by content).
 pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
-    let claimed = (bytes.len() >= HEADER).then(|| {
-        u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as u64
-    });
-    let exact_binary = claimed.is_some_and(|n| HEADER as u64 + RECORD as u64 * n == bytes.len() as u64);
+    let claimed = (bytes.len() >= HEADER)
+        .then(|| u32::from_le_bytes([bytes[80], bytes[81], bytes[82], bytes[83]]) as u64);
+    let exact_binary =
+        claimed.is_some_and(|n| HEADER as u64 + RECORD as u64 * n == bytes.len() as u64);
     let starts_solid = bytes
         .trim_ascii_start()
         .get(..5)
@@ -175,7 +175,9 @@ fn parse_ascii(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
             (Expect::FacetOrEnd, b"facet") => state = Expect::OuterLoop,
             (Expect::FacetOrEnd, b"endsolid") => state = Expect::Solid,
             (Expect::FacetOrEnd, _) => return Err(bad("\"facet\" or \"endsolid\"")),
-            (Expect::OuterLoop, b"outer") if toks.next().map(|t| t.eq_ignore_ascii_case(b"loop")) == Some(true) => {
+            (Expect::OuterLoop, b"outer")
+                if toks.next().map(|t| t.eq_ignore_ascii_case(b"loop")) == Some(true) =>
+            {
                 corners.clear();
                 state = Expect::VertexOrEndLoop;
             }

@@ -117,11 +117,20 @@ pub(crate) fn parse_f64(token: &[u8]) -> Option<f64> {
 }
 
 /// Parses a float token or reports a syntax error naming `what`.
-pub(crate) fn number(path: &Path, line: u64, token: Option<&[u8]>, what: &str) -> Result<f64, LoadError> {
+pub(crate) fn number(
+    path: &Path,
+    line: u64,
+    token: Option<&[u8]>,
+    what: &str,
+) -> Result<f64, LoadError> {
     match token {
         None => Err(LoadError::syntax(path, line, format!("missing {what}"))),
         Some(t) => parse_f64(t).ok_or_else(|| {
-            LoadError::syntax(path, line, format!("{what}: {:?} is not a number", lossy(t)))
+            LoadError::syntax(
+                path,
+                line,
+                format!("{what}: {:?} is not a number", lossy(t)),
+            )
         }),
     }
 }

@@ -49,7 +49,9 @@ pub(crate) fn is_finite(m: &DMat4) -> bool {
 
 /// Whether all transformed vertices are finite (a huge scale can overflow).
 pub(crate) fn vertices_finite(scene: &Scene, first_vertex: usize) -> bool {
-    scene.vertices[first_vertex..].iter().all(|v: &DVec3| v.is_finite())
+    scene.vertices[first_vertex..]
+        .iter()
+        .all(|v: &DVec3| v.is_finite())
 }
 
 #[cfg(test)]
@@ -62,9 +64,16 @@ mod tests {
         let mut s = Scene::default();
         let m = s.add_material(Material::default_grey());
         let o = s.add_object("t");
-        s.add_polygon(&[DVec3::ZERO, DVec3::X, DVec3::Y], m, o).unwrap();
+        s.add_polygon(&[DVec3::ZERO, DVec3::X, DVec3::Y], m, o)
+            .unwrap();
         s.normals.push(DVec3::Z);
-        apply(&mut s, &DMat4::from_scale(DVec3::new(-2.0, 1.0, 1.0)), 0, 0, 0);
+        apply(
+            &mut s,
+            &DMat4::from_scale(DVec3::new(-2.0, 1.0, 1.0)),
+            0,
+            0,
+            0,
+        );
         assert_eq!(s.faces[0].vertices, vec![2, 1, 0]);
         assert_eq!(s.vertices[1], DVec3::new(-2.0, 0.0, 0.0));
         assert!((s.normals[0] - DVec3::Z).length() < 1e-15);

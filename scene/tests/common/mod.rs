@@ -43,12 +43,18 @@ pub fn err(path: &Path) -> LoadError {
 pub fn assert_at(e: &LoadError, path: &Path, line: Option<u64>) {
     let msg = e.to_string();
     let shown = path.display().to_string();
-    assert!(msg.contains(&shown), "message {msg:?} does not name {shown}");
+    assert!(
+        msg.contains(&shown),
+        "message {msg:?} does not name {shown}"
+    );
     let at = e.location();
     assert_eq!(at.path, path, "location of {msg:?}");
     if let Some(l) = line {
         assert_eq!(at.line, Some(l), "line of {msg:?}");
-        assert!(msg.contains(&format!("{shown}:{l}:")), "message {msg:?} lacks :{l}:");
+        assert!(
+            msg.contains(&format!("{shown}:{l}:")),
+            "message {msg:?} lacks :{l}:"
+        );
     }
 }
 
@@ -136,10 +142,18 @@ pub fn binary_ply_square(big: bool) -> Vec<u8> {
                   element face 2\nproperty list uchar int vertex_indices\n";
     let mut body = Vec::new();
     let f = |v: f32, b: &mut Vec<u8>| {
-        b.extend_from_slice(&if big { v.to_be_bytes() } else { v.to_le_bytes() })
+        b.extend_from_slice(&if big {
+            v.to_be_bytes()
+        } else {
+            v.to_le_bytes()
+        })
     };
     let i = |v: i32, b: &mut Vec<u8>| {
-        b.extend_from_slice(&if big { v.to_be_bytes() } else { v.to_le_bytes() })
+        b.extend_from_slice(&if big {
+            v.to_be_bytes()
+        } else {
+            v.to_le_bytes()
+        })
     };
     let verts = [
         ([0., 0., 0.], [255, 0, 0]),
@@ -228,11 +242,11 @@ pub fn data_uri(bytes: &[u8]) -> String {
 /// A GLB container around `json` and `bin`, assembled by hand.
 pub fn glb(json: &str, bin: &[u8]) -> Vec<u8> {
     let mut j = json.as_bytes().to_vec();
-    while j.len() % 4 != 0 {
+    while !j.len().is_multiple_of(4) {
         j.push(b' ');
     }
     let mut b = bin.to_vec();
-    while b.len() % 4 != 0 {
+    while !b.len().is_multiple_of(4) {
         b.push(0);
     }
     let total = 12 + 8 + j.len() + if b.is_empty() { 0 } else { 8 + b.len() };

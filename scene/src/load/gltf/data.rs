@@ -18,7 +18,9 @@ use glam::DVec3;
 use super::super::{refs, LoadError, LoadOptions, Location};
 
 fn u32_at(b: &[u8], at: usize) -> Option<u32> {
-    Some(u32::from_le_bytes(b.get(at..at.checked_add(4)?)?.try_into().ok()?))
+    Some(u32::from_le_bytes(
+        b.get(at..at.checked_add(4)?)?.try_into().ok()?,
+    ))
 }
 
 /// Splits a GLB file into its JSON chunk and optional BIN chunk.
@@ -67,12 +69,14 @@ pub(crate) fn split_glb<'a>(
             });
         };
         let len = len as usize;
-        let body = rest.get(8..8 + len).ok_or_else(|| LoadError::CountTooLarge {
-            at: at(),
-            what: "bytes".into(),
-            claimed: len as u64,
-            room: rest.len() as u64 - 8,
-        })?;
+        let body = rest
+            .get(8..8 + len)
+            .ok_or_else(|| LoadError::CountTooLarge {
+                at: at(),
+                what: "bytes".into(),
+                claimed: len as u64,
+                room: rest.len() as u64 - 8,
+            })?;
         match (&kind.to_le_bytes(), index) {
             (b"JSON", 0) => json = Some(body),
             (b"BIN\0", 1) => bin = Some(body),

@@ -20,8 +20,8 @@ mod data;
 use std::collections::HashMap;
 use std::path::Path;
 
-use ::gltf::mesh::Mode;
 use ::gltf::material::AlphaMode;
+use ::gltf::mesh::Mode;
 use ::gltf::Document;
 use glam::DMat4;
 
@@ -88,7 +88,9 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         ));
     }
     if b.scene.faces.is_empty() {
-        b.scene.warnings.push(format!("{}: no faces", path.display()));
+        b.scene
+            .warnings
+            .push(format!("{}: no faces", path.display()));
     }
     Ok(b.scene)
 }
@@ -156,8 +158,11 @@ impl Builder<'_, '_> {
             }
         };
         let mut visited = vec![false; doc.nodes().len()];
-        let mut stack: Vec<(::gltf::Node, DMat4)> =
-            roots.into_iter().rev().map(|n| (n, DMat4::IDENTITY)).collect();
+        let mut stack: Vec<(::gltf::Node, DMat4)> = roots
+            .into_iter()
+            .rev()
+            .map(|n| (n, DMat4::IDENTITY))
+            .collect();
         while let Some((node, parent)) = stack.pop() {
             let at = || Location::record(self.path, format!("node {}", node.index()));
             if std::mem::replace(&mut visited[node.index()], true) {
@@ -206,14 +211,19 @@ impl Builder<'_, '_> {
             )
         };
         let mode = prim.mode();
-        if !matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan) {
+        if !matches!(
+            mode,
+            Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
+        ) {
             self.skipped_modes += 1;
             return Ok(());
         }
-        let pos = prim.get(&::gltf::Semantic::Positions).ok_or_else(|| LoadError::Invalid {
-            at: at(),
-            message: "no POSITION attribute".into(),
-        })?;
+        let pos = prim
+            .get(&::gltf::Semantic::Positions)
+            .ok_or_else(|| LoadError::Invalid {
+                at: at(),
+                message: "no POSITION attribute".into(),
+            })?;
         let positions = data::read_vec3(&pos, self.buffers, "position", self.path)?;
         let normals = match prim.get(&::gltf::Semantic::Normals) {
             Some(acc) if acc.count() == positions.len() => {
@@ -286,7 +296,9 @@ impl Builder<'_, '_> {
             Some(i) => {
                 let [r, g, b, a] = m.pbr_metallic_roughness().base_color_factor();
                 let kd = [r, g, b].map(|c| (c as f64).clamp(0.0, 1.0));
-                let name = m.name().map_or_else(|| format!("material {i}"), str::to_string);
+                let name = m
+                    .name()
+                    .map_or_else(|| format!("material {i}"), str::to_string);
                 let mut mat = if m.unlit() {
                     Material::unlit(&name, kd)
                 } else {

@@ -147,7 +147,11 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Header, LoadError> {
     let mut elements: Vec<Element> = Vec::new();
     let first = lines.next_line().transpose()?;
     if !matches!(&first, Some((_, l)) if l.trim_ascii() == b"ply") {
-        return Err(LoadError::syntax(path, 1, "not a PLY file: the first line must be \"ply\""));
+        return Err(LoadError::syntax(
+            path,
+            1,
+            "not a PLY file: the first line must be \"ply\"",
+        ));
     }
     loop {
         let Some(next) = lines.next_line() else {
@@ -180,7 +184,9 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Header, LoadError> {
             }
             b"comment" | b"obj_info" => {}
             b"element" => {
-                let name = toks.next().ok_or_else(|| err("element without a name".into()))?;
+                let name = toks
+                    .next()
+                    .ok_or_else(|| err("element without a name".into()))?;
                 let count = toks
                     .next()
                     .and_then(|t| std::str::from_utf8(t).ok()?.parse::<u64>().ok())
@@ -199,7 +205,10 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Header, LoadError> {
                 let ty = toks.next().unwrap_or_default();
                 let scalar = |t: Option<&[u8]>| {
                     Scalar::parse(t.unwrap_or_default()).ok_or_else(|| {
-                        err(format!("unknown property type {:?}", lossy(t.unwrap_or_default())))
+                        err(format!(
+                            "unknown property type {:?}",
+                            lossy(t.unwrap_or_default())
+                        ))
                     })
                 };
                 let kind = if ty == b"list" {
@@ -214,7 +223,9 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Header, LoadError> {
                 } else {
                     Kind::Scalar(scalar(Some(ty))?)
                 };
-                let name = toks.next().ok_or_else(|| err("property without a name".into()))?;
+                let name = toks
+                    .next()
+                    .ok_or_else(|| err("property without a name".into()))?;
                 el.properties.push(Property {
                     name: lossy(name),
                     kind,
@@ -224,8 +235,8 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Header, LoadError> {
             other => return Err(err(format!("unknown header line {:?}", lossy(other)))),
         }
     }
-    let encoding = encoding
-        .ok_or_else(|| LoadError::syntax(path, 2, "the header has no format line"))?;
+    let encoding =
+        encoding.ok_or_else(|| LoadError::syntax(path, 2, "the header has no format line"))?;
     let body_line = lines.next_number();
     Ok(Header {
         encoding,

@@ -79,7 +79,11 @@ impl ColourProps {
 /// Parses a PLY file.
 pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
     let header = header::parse(bytes, path)?;
-    let mut src = Source::new(header.encoding, &bytes[header.body_start..], header.body_line);
+    let mut src = Source::new(
+        header.encoding,
+        &bytes[header.body_start..],
+        header.body_line,
+    );
     check_counts(&header.elements, &src, path)?;
 
     let mut scene = Scene::default();

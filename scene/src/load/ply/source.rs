@@ -2,8 +2,8 @@
 
 use std::path::Path;
 
-use super::header::{Encoding, Scalar};
 use super::super::{LoadError, Location};
+use super::header::{Encoding, Scalar};
 
 /// Where values come from.
 pub(crate) enum Source<'a> {
@@ -109,7 +109,10 @@ impl<'a> Source<'a> {
         match self {
             Source::Ascii { line, number, .. } => {
                 let l = line.trim_ascii_start();
-                let end = l.iter().position(|b| b.is_ascii_whitespace()).unwrap_or(l.len());
+                let end = l
+                    .iter()
+                    .position(|b| b.is_ascii_whitespace())
+                    .unwrap_or(l.len());
                 let (tok, rest) = l.split_at(end);
                 *line = rest;
                 if tok.is_empty() {
@@ -165,9 +168,7 @@ impl<'a> Source<'a> {
     /// Bytes (binary) or lines (ASCII, an upper bound) left.
     pub(crate) fn room(&self) -> u64 {
         match self {
-            Source::Ascii { rest, .. } => {
-                rest.iter().filter(|&&b| b == b'\n').count() as u64 + 1
-            }
+            Source::Ascii { rest, .. } => rest.iter().filter(|&&b| b == b'\n').count() as u64 + 1,
             Source::Binary { data, pos, .. } => (data.len() - *pos) as u64,
         }
     }

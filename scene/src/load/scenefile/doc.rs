@@ -43,14 +43,17 @@ pub(crate) struct OutputDoc {
 }
 
 #[derive(Deserialize)]
-#[serde(untagged, expecting = "a size: [width, height] or \"WxH\"")]
+#[serde(untagged, expecting = "expected a size: [width, height] or \"WxH\"")]
 pub(crate) enum SizeDoc {
     Pair([u32; 2]),
     Text(String),
 }
 
 #[derive(Deserialize)]
-#[serde(untagged, expecting = "a colour: [r, g, b] (each 0 to 1) or \"#rrggbb\"")]
+#[serde(
+    untagged,
+    expecting = "expected a colour: [r, g, b] (each 0 to 1) or \"#rrggbb\""
+)]
 pub(crate) enum ColourDoc {
     Rgb([f64; 3]),
     Hex(String),
@@ -108,7 +111,7 @@ pub(crate) struct MeshDoc {
 #[derive(Deserialize)]
 #[serde(
     untagged,
-    expecting = "a rotation: [x, y, z] degrees about the axes, or { axis = [x, y, z], angle = degrees }"
+    expecting = "expected a rotation: [x, y, z] degrees about the axes, or { axis = [x, y, z], angle = degrees }"
 )]
 pub(crate) enum RotateDoc {
     Euler([f64; 3]),
@@ -123,7 +126,7 @@ pub(crate) struct AxisAngleDoc {
 }
 
 #[derive(Deserialize)]
-#[serde(untagged, expecting = "a scale: a number or [x, y, z]")]
+#[serde(untagged, expecting = "expected a scale: a number or [x, y, z]")]
 pub(crate) enum ScaleDoc {
     Uniform(f64),
     PerAxis([f64; 3]),

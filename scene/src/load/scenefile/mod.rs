@@ -106,7 +106,10 @@ struct Ctx<'a> {
 impl Ctx<'_> {
     fn line(&self, span: Range<usize>) -> Location {
         let end = span.start.min(self.src.len());
-        let line = self.src.as_bytes()[..end].iter().filter(|&&b| b == b'\n').count();
+        let line = self.src.as_bytes()[..end]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count();
         Location::line(self.path, line as u64 + 1)
     }
 
@@ -149,7 +152,11 @@ fn parse_hex(s: &str) -> Option<[f64; 3]> {
     if h.len() != 6 || !h.is_ascii() {
         return None;
     }
-    let ch = |i: usize| u8::from_str_radix(&h[i..i + 2], 16).ok().map(|v| v as f64 / 255.0);
+    let ch = |i: usize| {
+        u8::from_str_radix(&h[i..i + 2], 16)
+            .ok()
+            .map(|v| v as f64 / 255.0)
+    };
     Some([ch(0)?, ch(2)?, ch(4)?])
 }
 
@@ -160,7 +167,11 @@ pub(crate) fn parse(
     opts: &LoadOptions,
 ) -> Result<(Scene, SceneOptions), LoadError> {
     let src = std::str::from_utf8(bytes).map_err(|e| {
-        let line = bytes[..e.valid_up_to()].iter().filter(|&&b| b == b'\n').count() as u64 + 1;
+        let line = bytes[..e.valid_up_to()]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count() as u64
+            + 1;
         LoadError::syntax(path, line, "not UTF-8 text")
     })?;
     let cx = Ctx { path, src };
@@ -177,7 +188,9 @@ pub(crate) fn parse(
         scene.append(&sub);
     }
     if doc.mesh.is_empty() {
-        scene.warnings.push(format!("{}: no [[mesh]]", path.display()));
+        scene
+            .warnings
+            .push(format!("{}: no [[mesh]]", path.display()));
     }
     for l in &doc.light {
         scene.lights.push(light(&cx, l)?);
@@ -378,7 +391,10 @@ fn options(cx: &Ctx, doc: &Doc) -> Result<SceneOptions, LoadError> {
                     .ok_or_else(|| cx.invalid(s.span(), format!("size {t:?} is not WxH")))?,
             };
             if !(1..=65536).contains(&w) || !(1..=65536).contains(&h) {
-                return Err(cx.invalid(s.span(), format!("size {w}x{h}: each side must be 1 to 65536")));
+                return Err(cx.invalid(
+                    s.span(),
+                    format!("size {w}x{h}: each side must be 1 to 65536"),
+                ));
             }
             Some((w, h))
         }
@@ -391,9 +407,17 @@ fn options(cx: &Ctx, doc: &Doc) -> Result<SceneOptions, LoadError> {
     };
     Ok(SceneOptions {
         size,
-        background: o.background.as_ref().map(|c| cx.colour(c, 1.0)).transpose()?,
+        background: o
+            .background
+            .as_ref()
+            .map(|c| cx.colour(c, 1.0))
+            .transpose()?,
         outline: o.outline,
-        outline_color: o.outline_color.as_ref().map(|c| cx.colour(c, 1.0)).transpose()?,
+        outline_color: o
+            .outline_color
+            .as_ref()
+            .map(|c| cx.colour(c, 1.0))
+            .transpose()?,
         outline_width,
         format: o.format.map(lower),
         sort: o.sort.map(lower),
@@ -412,13 +436,19 @@ fn camera(
     let at = || cx.line(c.span());
     let cam_err = |source| LoadError::Camera { at: at(), source };
     let fov = d.fov.unwrap_or(45.0);
-    let target = d.target.as_ref().map(|t| cx.finite3(t, "camera target")).transpose()?;
+    let target = d
+        .target
+        .as_ref()
+        .map(|t| cx.finite3(t, "camera target"))
+        .transpose()?;
     let mut cam = match &d.eye {
         Some(e) => {
             let eye = cx.finite3(e, "camera eye")?;
             let target = match target {
                 Some(t) => t,
-                None => scene.bounds().map_or(DVec3::ZERO, |(lo, hi)| (lo + hi) * 0.5),
+                None => scene
+                    .bounds()
+                    .map_or(DVec3::ZERO, |(lo, hi)| (lo + hi) * 0.5),
             };
             Camera::new(eye, target, width, height)
         }
@@ -427,8 +457,8 @@ fn camera(
                 .bounds()
                 .ok_or_else(|| cam_err(crate::CameraError::EmptyScene))?;
             let dir = DVec3::from(DEFAULT_VIEW_DIRECTION);
-            let mut cam = Camera::framing_bounds(lo, hi, dir, fov, width, height)
-                .map_err(cam_err)?;
+            let mut cam =
+                Camera::framing_bounds(lo, hi, dir, fov, width, height).map_err(cam_err)?;
             if let Some(t) = target {
                 cam.eye = t + (cam.eye - cam.target);
                 cam.target = t;
