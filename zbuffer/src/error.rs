@@ -1,0 +1,47 @@
+//! The crate's error type.
+
+use limn_scene::{CameraError, SceneError};
+use thiserror::Error;
+
+/// Everything that can go wrong while rendering, comparing or writing images.
+#[derive(Debug, Error, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ZError {
+    /// The scene breaks an invariant (index out of range, non-finite coordinate, ...).
+    #[error("invalid scene: {0}")]
+    Scene(#[from] SceneError),
+    /// The camera cannot be used.
+    #[error("invalid camera: {0}")]
+    Camera(#[from] CameraError),
+    /// Near and far planes must satisfy `0 < near < far < ∞`.
+    #[error("near {near} and far {far} planes must satisfy 0 < near < far < inf")]
+    BadDepthRange {
+        /// The near distance given.
+        near: f64,
+        /// The far distance given.
+        far: f64,
+    },
+    /// A coordinate lies outside the range a method accepts (see [`crate::MAX_COORD`] and
+    /// [`crate::MIN_RAYCAST_COORD`]).
+    #[error("{what} coordinate {value:e} is outside the accepted range")]
+    OutOfRange {
+        /// Which input the coordinate belongs to ("vertex", "eye", "ray").
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+    /// Two images that must have the same size do not.
+    #[error("image sizes differ: {0}x{1} and {2}x{3}")]
+    SizeMismatch(u32, u32, u32, u32),
+    /// PNG encoding failed.
+    #[error("PNG encoding failed: {0}")]
+    Png(String),
+    /// Writing a file failed.
+    #[error("cannot write {path}: {message}")]
+    Io {
+        /// The file.
+        path: String,
+        /// The operating system's message.
+        message: String,
+    },
+}

@@ -1,0 +1,271 @@
+//! The common entry point: methods, options and results.
+
+use std::fmt;
+use std::str::FromStr;
+
+use limn_scene::{shade_face, Camera, Scene};
+use thiserror::Error;
+
+use crate::abuffer::{abuffer, FaceLook};
+use crate::image::{rgb_to_u8, ColorImage, DepthImage, IdImage, NO_FACE};
+use crate::setup::{prepare, Collect, Frame, Prepared};
+use crate::{raycast, scanline, warnock, zbuf, DepthFormat, ZError};
+
+/// An image-space hidden-surface method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// Full-screen z-buffer.
+    ZBuffer,
+    /// Scan-line z-buffer (one row of depth); the same ids as [`Method::ZBuffer`].
+    ScanLine,
+    /// Per-pixel fragment lists, for transparency.
+    ABuffer,
+    /// Warnock's area subdivision.
+    Warnock,
+    /// One exact ray per pixel centre (the arbiter).
+    RayCast,
+}
+
+impl Method {
+    /// Every method.
+    pub const ALL: [Method; 5] = [
+        Method::ZBuffer,
+        Method::ScanLine,
+        Method::ABuffer,
+        Method::Warnock,
+        Method::RayCast,
+    ];
+
+    /// The method's name as used on command lines: `zbuffer`, `scanline`, `abuffer`,
+    /// `warnock`, `raycast`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::ZBuffer => "zbuffer",
+            Method::ScanLine => "scanline",
+            Method::ABuffer => "abuffer",
+            Method::Warnock => "warnock",
+            Method::RayCast => "raycast",
+        }
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A method name that [`Method::from_str`] does not know.
+#[derive(Debug, Clone, PartialEq, Eq, Error)]
+#[error("unknown method {0:?} (expected zbuffer, scanline, abuffer, warnock or raycast)")]
+pub struct ParseMethodError(pub String);
+
+impl FromStr for Method {
+    type Err = ParseMethodError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Method::ALL
+            .into_iter()
+            .find(|m| m.name().eq_ignore_ascii_case(s))
+            .ok_or_else(|| ParseMethodError(s.to_string()))
+    }
+}
+
+/// Options shared by every method.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RenderOptions {
+    /// How depth is stored (z-buffer, scan-line, Warnock and A-buffer ordering; ray
+    /// casting is always exact). Default [`DepthFormat::F64`].
+    pub depth: DepthFormat,
+    /// Drop faces whose plane has the eye strictly behind it. Default `false`.
+    pub cull_back_faces: bool,
+    /// Near and far distances; when `None`, the camera's own, else chosen from the
+    /// scene's bounds by `Camera::near_far`. Default `None`.
+    pub near_far: Option<(f64, f64)>,
+    /// Background colour, linear RGB in [0, 1]. Default white.
+    pub background: [f64; 3],
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            depth: DepthFormat::F64,
+            cull_back_faces: false,
+            near_far: None,
+            background: [1.0; 3],
+        }
+    }
+}
+
+/// Counters of one rendering.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct RenderStats {
+    /// Triangles after culling and clipping (world triangles for ray casting).
+    pub triangles: usize,
+    /// Triangles that needed clipping.
+    pub clipped_triangles: usize,
+    /// Faces dropped as back faces.
+    pub culled_faces: usize,
+    /// Pixel fragments generated (ray–triangle tests for ray casting, areas examined for
+    /// Warnock).
+    pub fragments: u64,
+    /// Depth comparisons decided by exact arithmetic (ray casting).
+    pub exact_fallbacks: u64,
+    /// Working memory of the method's own buffers in bytes (depth and id buffers, row
+    /// buffers and edge tables, fragment lists, BVH), excluding the output images.
+    pub working_bytes: usize,
+}
+
+/// What a method produces.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Raster {
+    /// Flat-shaded colours over the background.
+    pub color: ColorImage,
+    /// Window depth of the visible surface.
+    pub depth: DepthImage,
+    /// Face id of the visible surface.
+    pub ids: IdImage,
+    /// Counters.
+    pub stats: RenderStats,
+}
+
+/// Renders `scene` seen by `camera` with `method`.
+///
+/// Errors: an invalid scene or camera, a bad near/far override, or coordinates outside
+/// the accepted range ([`crate::MAX_COORD`]; for ray casting also
+/// [`crate::MIN_RAYCAST_COORD`]). Any valid scene renders, including NaN-free
+/// degenerate faces, faces behind the eye and huge coordinates.
+pub fn render(
+    scene: &Scene,
+    camera: &Camera,
+    method: Method,
+    opts: &RenderOptions,
+) -> Result<Raster, ZError> {
+    let frame = Frame::new(scene, camera, opts)?;
+    let (w, h) = (frame.width, frame.height);
+    let mut stats = RenderStats::default();
+    let (ids, depths, colors) = match method {
+        Method::RayCast => {
+            let out = raycast::raycast(scene, &frame, opts.cull_back_faces)?;
+            stats.fragments = out.tests;
+            stats.exact_fallbacks = out.exact_fallbacks;
+            stats.working_bytes = out.working_bytes;
+            stats.triangles = out.triangles;
+            stats.culled_faces = out.culled_faces;
+            (out.ids, out.depths, None)
+        }
+        Method::ZBuffer | Method::ScanLine => {
+            let prep = prepared(scene, &frame, opts, &mut stats);
+            let b = if method == Method::ZBuffer {
+                zbuf::zbuffer(&prep, w, h, opts.depth)
+            } else {
+                scanline::scanline(&prep, w, h, opts.depth)
+            };
+            stats.fragments = b.fragments;
+            stats.working_bytes = b.working_bytes;
+            (b.ids, b.depths, None)
+        }
+        Method::Warnock => {
+            let prep = prepared(scene, &frame, opts, &mut stats);
+            let o = warnock::warnock(&prep, w, h, opts.depth);
+            stats.fragments = o.areas;
+            (o.ids, o.depths, None)
+        }
+        Method::ABuffer => {
+            let prep = prepared(scene, &frame, opts, &mut stats);
+            let eye = frame.camera.eye;
+            let look = |face: u32| {
+                let m = &scene.materials[scene.faces[face as usize].material as usize];
+                let alpha = if m.opacity.is_nan() {
+                    1.0
+                } else {
+                    m.opacity.clamp(0.0, 1.0)
+                };
+                FaceLook {
+                    color: shade_face(scene, face, eye),
+                    alpha,
+                }
+            };
+            let a = abuffer(&prep, w, h, opts.depth, opts.background, &look);
+            stats.fragments = a.fragments;
+            stats.working_bytes = a.working_bytes;
+            (a.ids, a.depths, Some(a.colors))
+        }
+    };
+    Ok(finish(scene, &frame, opts, ids, depths, colors, stats))
+}
+
+/// Culls, clips and projects for the screen-space methods.
+fn prepared(scene: &Scene, frame: &Frame, opts: &RenderOptions, stats: &mut RenderStats) -> Prepared {
+    let mut prep = Prepared::default();
+    prepare(scene, frame, opts.cull_back_faces, Collect::Triangles(&mut prep));
+    stats.triangles = prep.tris.len();
+    stats.clipped_triangles = prep.clipped_tris;
+    stats.culled_faces = prep.culled_faces;
+    prep
+}
+
+fn finish(
+    scene: &Scene,
+    frame: &Frame,
+    opts: &RenderOptions,
+    ids: Vec<u32>,
+    depths: Vec<f64>,
+    colors: Option<Vec<[f64; 3]>>,
+    stats: RenderStats,
+) -> Raster {
+    let (w, h) = (frame.width, frame.height);
+    let pixels = match colors {
+        Some(c) => c.into_iter().map(rgb_to_u8).collect(),
+        None => {
+            // Shade each visible face once.
+            let mut palette: Vec<Option<[u8; 3]>> = vec![None; scene.faces.len()];
+            let bg = rgb_to_u8(opts.background);
+            ids.iter()
+                .map(|&id| {
+                    if id == NO_FACE {
+                        return bg;
+                    }
+                    *palette[id as usize]
+                        .get_or_insert_with(|| rgb_to_u8(shade_face(scene, id, frame.camera.eye)))
+                })
+                .collect()
+        }
+    };
+    Raster {
+        color: ColorImage {
+            width: w,
+            height: h,
+            pixels,
+        },
+        depth: DepthImage {
+            width: w,
+            height: h,
+            depths,
+        },
+        ids: IdImage {
+            width: w,
+            height: h,
+            ids,
+        },
+        stats,
+    }
+}
+
+/// The projected edges whose neighbourhood is ambiguous between float and exact
+/// answers: every face's outline and the edges cut by the near and far planes (after
+/// culling and clipping as [`render`] does), in pixel coordinates. Triangulation
+/// diagonals are left out. Lines where faces pierce each other are not included; a
+/// caller comparing with a painter's output adds the edges of its fragments.
+pub fn scene_edges(
+    scene: &Scene,
+    camera: &Camera,
+    opts: &RenderOptions,
+) -> Result<Vec<([f64; 2], [f64; 2])>, ZError> {
+    let frame = Frame::new(scene, camera, opts)?;
+    let mut edges = Vec::new();
+    prepare(scene, &frame, opts.cull_back_faces, Collect::Edges(&mut edges));
+    Ok(edges
+        .into_iter()
+        .map(|(a, b, _)| ([a.x, a.y], [b.x, b.y]))
+        .collect())
+}
