@@ -189,7 +189,13 @@ impl Painter for EpsPainter {
     fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
         let checked = check(picture)?;
         let o = &self.options;
-        let paper = o.paper.map(|v| if v.is_finite() { v.clamp(0.0, 1.0) } else { 1.0 });
+        let paper = o.paper.map(|v| {
+            if v.is_finite() {
+                v.clamp(0.0, 1.0)
+            } else {
+                1.0
+            }
+        });
         let mut stats = PaintStats::default();
         let backdrop = match picture.background {
             Some(bg) => flatten([bg[0], bg[1], bg[2]], bg[3], paper),
@@ -202,10 +208,7 @@ impl Painter for EpsPainter {
             backdrop,
             rgb: None,
         };
-        let gouraud = picture
-            .fragments
-            .iter()
-            .any(|f| f.vertex_colors.is_some());
+        let gouraud = picture.fragments.iter().any(|f| f.vertex_colors.is_some());
 
         let mut sink = Sink::new(out);
         let b = &mut sink.buf;
@@ -226,7 +229,11 @@ impl Painter for EpsPainter {
             );
         }
         let outline = checked.outline.map(|ol| {
-            let c = flatten([ol.color[0], ol.color[1], ol.color[2]], ol.color[3], backdrop);
+            let c = flatten(
+                [ol.color[0], ol.color[1], ol.color[2]],
+                ol.color[3],
+                backdrop,
+            );
             (ol, w.quantise(c))
         });
         if let Some((ol, _)) = outline {

@@ -73,7 +73,7 @@ pub(crate) fn push_num(buf: &mut Vec<u8>, v: f64, decimals: u8) {
         return;
     }
     let mut width = usize::from(decimals);
-    while frac % 10 == 0 {
+    while frac.is_multiple_of(10) {
         frac /= 10;
         width -= 1;
     }
@@ -144,7 +144,11 @@ pub(crate) fn push_milli(buf: &mut Vec<u8>, m: u16) {
 /// Appends a fixed-point colour channel from [`channel_fixed`].
 pub(crate) fn push_fixed(buf: &mut Vec<u8>, q: u32, decimals: u8) {
     let decimals = decimals.min(MAX_DECIMALS);
-    push_num(buf, f64::from(q) / POW10[usize::from(decimals)] as f64, decimals);
+    push_num(
+        buf,
+        f64::from(q) / POW10[usize::from(decimals)] as f64,
+        decimals,
+    );
 }
 
 /// Appends `s` escaped for an XML attribute value in double quotes.

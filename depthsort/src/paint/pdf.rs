@@ -122,7 +122,8 @@ impl Content {
         for (f, reverse) in run.iter().zip(reversals(run)) {
             for (k, p) in f.oriented(reverse).enumerate() {
                 self.point(p);
-                self.buf.extend_from_slice(if k == 0 { b" m " } else { b" l " });
+                self.buf
+                    .extend_from_slice(if k == 0 { b" m " } else { b" l " });
             }
             self.buf.extend_from_slice(b"h\n");
         }
@@ -180,7 +181,8 @@ impl Content {
                 let last = if closed { edges - 1 } else { edges };
                 for k in 0..=last {
                     self.point(f.points[(start + k) % n]);
-                    self.buf.extend_from_slice(if k == 0 { b" m " } else { b" l " });
+                    self.buf
+                        .extend_from_slice(if k == 0 { b" m " } else { b" l " });
                 }
                 if closed {
                     self.buf.extend_from_slice(b"h ");

@@ -115,7 +115,13 @@ impl PngPainter {
                         let mut paint = Paint::default();
                         paint.set_color_rgba8(r, g, b, a);
                         paint.anti_alias = aa;
-                        pixmap.fill_path(&path, &paint, FillRule::Winding, Transform::identity(), None);
+                        pixmap.fill_path(
+                            &path,
+                            &paint,
+                            FillRule::Winding,
+                            Transform::identity(),
+                            None,
+                        );
                     }
                     Style::Gouraud(a) => gouraud(&mut pixmap, run, &path, a, aa),
                 }
@@ -242,8 +248,14 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
         let lo = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
         let hi = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
         let clamp = |v: f64, a: u32, b: u32| (v.max(f64::from(a)).min(f64::from(b))) as u32;
-        let (tx0, tx1) = (clamp(lo(0).floor() - 1.0, x0, x1), clamp(hi(0).ceil() + 1.0, x0, x1));
-        let (ty0, ty1) = (clamp(lo(1).floor() - 1.0, y0, y1), clamp(hi(1).ceil() + 1.0, y0, y1));
+        let (tx0, tx1) = (
+            clamp(lo(0).floor() - 1.0, x0, x1),
+            clamp(hi(0).ceil() + 1.0, x0, x1),
+        );
+        let (ty0, ty1) = (
+            clamp(lo(1).floor() - 1.0, y0, y1),
+            clamp(hi(1).ceil() + 1.0, y0, y1),
+        );
         let [a, b, c] = t.p;
         for j in ty0..ty1 {
             let py = f64::from(j) + 0.5;
@@ -258,8 +270,8 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
                     best[idx] = score;
                     let l = [l0.max(0.0), l1.max(0.0), l2.max(0.0)];
                     let sum = l[0] + l[1] + l[2];
-                    color[idx] =
-                        [0, 1, 2].map(|k| (l[0] * t.c[0][k] + l[1] * t.c[1][k] + l[2] * t.c[2][k]) / sum);
+                    color[idx] = [0, 1, 2]
+                        .map(|k| (l[0] * t.c[0][k] + l[1] * t.c[1][k] + l[2] * t.c[2][k]) / sum);
                 }
             }
         }

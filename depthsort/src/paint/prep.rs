@@ -366,7 +366,11 @@ mod tests {
     fn validity() {
         assert!(is_valid(&frag(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])));
         assert!(!is_valid(&frag(vec![[0.0, 0.0], [1.0, 0.0]])));
-        assert!(!is_valid(&frag(vec![[0.0, 0.0], [f64::NAN, 0.0], [0.0, 1.0]])));
+        assert!(!is_valid(&frag(vec![
+            [0.0, 0.0],
+            [f64::NAN, 0.0],
+            [0.0, 1.0]
+        ])));
         let mut f = frag(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]);
         f.fill[3] = f64::INFINITY;
         assert!(!is_valid(&f));
@@ -384,7 +388,10 @@ mod tests {
         let Clipped::Cut(c) = guard().clip(&f) else {
             panic!("expected a cut")
         };
-        assert_eq!(&*c.points, &[[0.0, 0.0], [200.0, 0.0], [200.0, 10.0], [0.0, 10.0]]);
+        assert_eq!(
+            &*c.points,
+            &[[0.0, 0.0], [200.0, 0.0], [200.0, 10.0], [0.0, 10.0]]
+        );
         // (0,0)→(200,0) lies on an original edge, (200,0)→(200,10) on the box.
         assert_eq!(&*c.edges, &[true, false, true, true]);
     }
@@ -441,10 +448,15 @@ mod tests {
         }
         p.fragments.insert(1, frag(vec![[0.0, 0.0]]));
         let mut sizes = Vec::new();
-        let counts = walk(&p, &guard(), |_| (), |run| {
-            sizes.push(run.len());
-            Ok(())
-        })
+        let counts = walk(
+            &p,
+            &guard(),
+            |_| (),
+            |run| {
+                sizes.push(run.len());
+                Ok(())
+            },
+        )
         .unwrap();
         assert_eq!(sizes, vec![2, 1, 2]);
         assert_eq!(counts.skipped, 1);
@@ -453,13 +465,20 @@ mod tests {
     #[test]
     fn reversal_matches_the_first_orientation() {
         let mut p = Picture::new(10, 10);
-        p.fragments.push(frag(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]));
-        p.fragments.push(frag(vec![[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]));
+        p.fragments
+            .push(frag(vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]));
+        p.fragments
+            .push(frag(vec![[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]));
         let mut got = Vec::new();
-        walk(&p, &guard(), |_| (), |run| {
-            got.extend(reversals(run));
-            Ok(())
-        })
+        walk(
+            &p,
+            &guard(),
+            |_| (),
+            |run| {
+                got.extend(reversals(run));
+                Ok(())
+            },
+        )
         .unwrap();
         assert_eq!(got, vec![false, true]);
     }

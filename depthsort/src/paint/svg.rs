@@ -23,7 +23,9 @@
 
 use std::io::Write;
 
-use super::fmt::{alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink};
+use super::fmt::{
+    alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
+};
 use super::prep::{check, reversals, walk, Frag};
 use super::{PaintError, PaintStats, Painter, Picture};
 
