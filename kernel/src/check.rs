@@ -28,7 +28,7 @@ pub fn check_polygon(poly: &ExactPolygon) -> Result<(), String> {
         for j in 0..n {
             let e = poly.edge_plane(j);
             let incident = j == i || (j + 1) % n == i;
-            let side = poly.side_exact(i, e);
+            let side = poly.side_exact(i, &e);
             if incident && side != Side::On {
                 return Err(format!("vertex {i} is off its edge plane {j}"));
             }

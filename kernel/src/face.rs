@@ -16,11 +16,10 @@
 //!    Outlines that are not simple (self-intersecting) are dropped, like zero-area faces.
 
 use glam::DVec3;
-use smallvec::SmallVec;
 
 use crate::grid::{GridPoint, Quantizer};
-use crate::plane::{dominant_axis, Plane};
-use crate::polygon::{err32, Corner, ExactPolygon};
+use crate::plane::{dominant_axis, Coeffs, Plane};
+use crate::polygon::{err32, Builder, Corner, ExactPolygon};
 use crate::triangulate::triangulate;
 use crate::KernelError;
 
@@ -62,7 +61,7 @@ pub(crate) fn convex_polygon(pts: &[GridPoint], support: Plane, original: &[bool
     let (u, v) = plane_axes(k);
     let sgn: i64 = if n_s[k] > 0 { 1 } else { -1 };
     let n = pts.len();
-    let mut corners = SmallVec::with_capacity(n);
+    let mut out = Builder::default();
     for i in 0..n {
         let p = pts[i].to_array();
         let q = pts[(i + 1) % n].to_array();
@@ -71,7 +70,7 @@ pub(crate) fn convex_polygon(pts: &[GridPoint], support: Plane, original: &[bool
         m[u] = sgn * dv;
         m[v] = -sgn * du;
         let d = -(sgn as i128) * (dv as i128 * p[u] as i128 - du as i128 * p[v] as i128);
-        let edge = Plane::raw(m[0], m[1], m[2], d);
+        let edge = Coeffs::new(m[0], m[1], m[2], d);
         let mut pos = p.map(|c| c as f64);
         let s = support.eval(&pts[i]);
         let mut err = 0.0;
@@ -81,14 +80,14 @@ pub(crate) fn convex_polygon(pts: &[GridPoint], support: Plane, original: &[bool
             pos[k] = t as f64 / n_s[k] as f64;
             err = crate::predicates::finish_err(pos[k].abs() * (1.0 / 1_125_899_906_842_624.0));
         }
-        corners.push(Corner {
-            edge,
+        let corner = Corner {
             pos,
             err: err32(err),
             original: original[i],
-        });
+        };
+        out.push(corner, edge);
     }
-    ExactPolygon { support, corners }
+    out.finish(support)
 }
 
 /// Removes corners collinear with their neighbours (in projection along `k`), repeatedly.

@@ -11,17 +11,11 @@ pub const NORMAL_BOUND: i64 = 1 << 55;
 /// Exclusive bound on `|d|` of every plane the exact kernel uses.
 pub const OFFSET_BOUND: i128 = 1 << 83;
 
-/// An oriented plane with integer coefficients: the points `x` (in grid coordinates) with
-/// `a·x + b·y + c·z + d = 0`. Its front is where the left side is positive.
-///
-/// Guarantees (checked by every constructor): the normal is not zero,
-/// `|a|, |b|, |c| <` [`NORMAL_BOUND`] `= 2^55` and `|d| <` [`OFFSET_BOUND`] `= 2^83`.
-/// These bounds make every predicate of the kernel fit 256-bit integers.
-///
-/// `d` is stored as two 64-bit halves so that a plane takes 32 bytes with 8-byte
-/// alignment (an `i128` field would force 48).
+/// The integer coefficients of a plane, stored compactly (32 bytes, 8-byte aligned; `d`
+/// is split into two 64-bit halves because an `i128` field would force 48 bytes). This is
+/// how polygons store their edge planes; [`Plane`] adds the f64 roundings the filter uses.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct Plane {
+pub(crate) struct Coeffs {
     a: i64,
     b: i64,
     c: i64,
@@ -29,16 +23,100 @@ pub struct Plane {
     d_hi: i64,
 }
 
+impl fmt::Debug for Coeffs {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.plane().fmt(f)
+    }
+}
+
+impl Coeffs {
+    #[inline]
+    pub(crate) fn new(a: i64, b: i64, c: i64, d: i128) -> Coeffs {
+        debug_assert!(a.abs() < NORMAL_BOUND && b.abs() < NORMAL_BOUND && c.abs() < NORMAL_BOUND);
+        debug_assert!(d.abs() < OFFSET_BOUND);
+        debug_assert!(a != 0 || b != 0 || c != 0);
+        Coeffs {
+            a,
+            b,
+            c,
+            d_lo: d as u64,
+            d_hi: (d >> 64) as i64,
+        }
+    }
+
+    #[inline]
+    pub(crate) fn normal(&self) -> [i64; 3] {
+        [self.a, self.b, self.c]
+    }
+
+    #[inline]
+    pub(crate) fn d(&self) -> i128 {
+        ((self.d_hi as i128) << 64) | self.d_lo as i128
+    }
+
+    /// `d` rounded to f64 without a 128-bit conversion: one rounding when `|d| < 2^63`,
+    /// otherwise relative error at most `3·2^-53` (the high half, below `2^19`, converts
+    /// exactly; the low half and the sum round once each).
+    #[inline]
+    pub(crate) fn d_f64(&self) -> f64 {
+        let lo = self.d_lo as i64;
+        if (lo >> 63) == self.d_hi {
+            lo as f64
+        } else {
+            self.d_hi as f64 * 18_446_744_073_709_551_616.0 + self.d_lo as f64
+        }
+    }
+
+    #[inline]
+    pub(crate) fn flipped(&self) -> Coeffs {
+        Coeffs::new(-self.a, -self.b, -self.c, -self.d())
+    }
+
+    /// The full plane (with its f64 roundings).
+    #[inline]
+    pub(crate) fn plane(&self) -> Plane {
+        Plane {
+            k: *self,
+            f: [self.a as f64, self.b as f64, self.c as f64, self.d_f64()],
+        }
+    }
+}
+
+/// An oriented plane with integer coefficients: the points `x` (in grid coordinates) with
+/// `a·x + b·y + c·z + d = 0`. Its front is where the left side is positive.
+///
+/// Guarantees (checked by every constructor): the normal is not zero,
+/// `|a|, |b|, |c| <` [`NORMAL_BOUND`] `= 2^55` and `|d| <` [`OFFSET_BOUND`] `= 2^83`.
+/// These bounds make every predicate of the kernel fit 256-bit integers.
+///
+/// The plane also carries its coefficients rounded to f64 (`a`, `b`, `c` with one
+/// rounding, `d` with relative error at most `3·2^-53`) for the floating-point filter, so
+/// classifying many polygons against one plane converts nothing. Equality and hashing
+/// look at the integer coefficients only.
+#[derive(Clone, Copy)]
+pub struct Plane {
+    k: Coeffs,
+    f: [f64; 4],
+}
+
+impl PartialEq for Plane {
+    fn eq(&self, other: &Plane) -> bool {
+        self.k == other.k
+    }
+}
+
+impl Eq for Plane {}
+
+impl std::hash::Hash for Plane {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        self.k.hash(state);
+    }
+}
+
 impl fmt::Debug for Plane {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "Plane::new({}, {}, {}, {}).unwrap()",
-            self.a,
-            self.b,
-            self.c,
-            self.d()
-        )
+        let [a, b, c] = self.normal();
+        write!(f, "Plane::new({a}, {b}, {c}, {}).unwrap()", self.d())
     }
 }
 
@@ -57,17 +135,21 @@ impl Plane {
     }
 
     /// Builds a plane whose bounds the caller has established (checked in debug builds).
+    #[inline]
     pub(crate) fn raw(a: i64, b: i64, c: i64, d: i128) -> Plane {
-        debug_assert!(a.abs() < NORMAL_BOUND && b.abs() < NORMAL_BOUND && c.abs() < NORMAL_BOUND);
-        debug_assert!(d.abs() < OFFSET_BOUND);
-        debug_assert!(a != 0 || b != 0 || c != 0);
-        Plane {
-            a,
-            b,
-            c,
-            d_lo: d as u64,
-            d_hi: (d >> 64) as i64,
-        }
+        Coeffs::new(a, b, c, d).plane()
+    }
+
+    /// The compact integer coefficients.
+    #[inline]
+    pub(crate) fn coeffs(&self) -> Coeffs {
+        self.k
+    }
+
+    /// The coefficients rounded to f64 `[a, b, c, d]`.
+    #[inline]
+    pub fn approx(&self) -> [f64; 4] {
+        self.f
     }
 
     /// The plane through three grid points, oriented so that `p`, `q`, `r` run
@@ -100,34 +182,36 @@ impl Plane {
     /// The normal `(a, b, c)`.
     #[inline]
     pub fn normal(&self) -> [i64; 3] {
-        [self.a, self.b, self.c]
+        self.k.normal()
     }
 
     /// The offset `d`.
     #[inline]
     pub fn d(&self) -> i128 {
-        ((self.d_hi as i128) << 64) | self.d_lo as i128
+        self.k.d()
     }
 
     /// All four coefficients.
     pub fn coefficients(&self) -> (i64, i64, i64, i128) {
-        (self.a, self.b, self.c, self.d())
+        let [a, b, c] = self.normal();
+        (a, b, c, self.d())
     }
 
     /// The same plane facing the other way.
     #[inline]
     pub fn flipped(&self) -> Plane {
-        Plane::raw(-self.a, -self.b, -self.c, -self.d())
+        Plane {
+            k: self.k.flipped(),
+            f: self.f.map(|v| -v),
+        }
     }
 
     /// `a·x + b·y + c·z + d` at a grid point, exactly. Valid for coordinates of magnitude
     /// up to [`crate::grid::FAR_LIMIT`] (the value then stays below `2^119`).
     #[inline]
     pub fn eval(&self, p: &GridPoint) -> i128 {
-        self.a as i128 * p.x as i128
-            + self.b as i128 * p.y as i128
-            + self.c as i128 * p.z as i128
-            + self.d()
+        let [a, b, c] = self.normal();
+        a as i128 * p.x as i128 + b as i128 * p.y as i128 + c as i128 * p.z as i128 + self.d()
     }
 
     /// The exact side of a grid point (coordinates up to [`crate::grid::FAR_LIMIT`]).

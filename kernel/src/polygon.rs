@@ -3,24 +3,23 @@
 
 use smallvec::SmallVec;
 
-use crate::plane::Plane;
+use crate::plane::{Coeffs, Plane};
 use crate::predicates::{self, as_grid, PlaneF};
 use crate::traits::{PolygonSide, Side};
 
-/// Corners stored inline (no heap allocation) up to this count.
+/// Vertices and edges stored inline (no heap allocation) up to this count.
 pub(crate) const INLINE: usize = 4;
 
-/// One corner of a polygon: vertex `i` and the edge leaving it (towards vertex `i + 1`).
+/// The cached data of vertex `i`: what the filter reads, kept apart from the edge planes
+/// so that classification touches as little memory as possible.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Corner {
-    /// The plane of edge `i`; the polygon's interior is on its back side.
-    pub(crate) edge: Plane,
     /// Approximate grid coordinates of vertex `i`.
     pub(crate) pos: [f64; 3],
     /// Bound on the error of every coordinate of `pos`; 0 means `pos` is exact (and then a
     /// grid point).
     pub(crate) err: f32,
-    /// Whether edge `i` lies on an edge of the input face.
+    /// Whether edge `i` (from vertex `i` to `i + 1`) lies on an edge of the input face.
     pub(crate) original: bool,
 }
 
@@ -35,6 +34,40 @@ pub(crate) fn err32(e: f64) -> f32 {
     }
 }
 
+/// Corner and edge lists under construction.
+#[derive(Default)]
+pub(crate) struct Builder {
+    corners: SmallVec<[Corner; INLINE]>,
+    edges: SmallVec<[Coeffs; INLINE]>,
+}
+
+impl Builder {
+    /// Appends vertex `i` and the plane of edge `i`.
+    #[inline]
+    pub(crate) fn push(&mut self, corner: Corner, edge: Coeffs) {
+        self.corners.push(corner);
+        self.edges.push(edge);
+    }
+
+    /// The polygon, computing the filter's per-polygon bounds.
+    pub(crate) fn finish(self, support: Plane) -> ExactPolygon {
+        let mut max_abs: f32 = 0.0;
+        let mut max_err: f32 = 0.0;
+        for c in &self.corners {
+            let m = c.pos[0].abs().max(c.pos[1].abs()).max(c.pos[2].abs());
+            max_abs = max_abs.max(err32(m));
+            max_err = max_err.max(c.err);
+        }
+        ExactPolygon {
+            corners: self.corners,
+            max_abs,
+            max_err,
+            edges: self.edges,
+            support,
+        }
+    }
+}
+
 /// A convex polygon of the exact kernel.
 ///
 /// Representation: the supporting plane `S` and, per edge `i`, a bounding plane `Eᵢ` with
@@ -43,10 +76,19 @@ pub(crate) fn err32(e: f64) -> f32 {
 /// together with its proven error bound. Guarantees: at least three vertices, strictly
 /// convex (no three consecutive vertices collinear), non-zero area, vertices
 /// counter-clockwise seen from the front of `S`.
+///
+/// Layout: the data the filter reads (cached positions, per-polygon bounds) comes first
+/// and is stored apart from the edge planes; up to [`INLINE`] vertices need no heap.
 #[derive(Debug, Clone)]
+#[repr(C)]
 pub struct ExactPolygon {
-    pub(crate) support: Plane,
     pub(crate) corners: SmallVec<[Corner; INLINE]>,
+    /// Upper bound on `|coordinate|` over all cached vertex positions (semi-static filter).
+    max_abs: f32,
+    /// Upper bound on the error bounds of all cached vertex positions.
+    max_err: f32,
+    pub(crate) edges: SmallVec<[Coeffs; INLINE]>,
+    pub(crate) support: Plane,
 }
 
 impl ExactPolygon {
@@ -67,8 +109,8 @@ impl ExactPolygon {
 
     /// The bounding plane of edge `i` (from vertex `i` to `i + 1`); the interior is on its
     /// back side. Panics if `i` is out of range.
-    pub fn edge_plane(&self, i: usize) -> &Plane {
-        &self.corners[i].edge
+    pub fn edge_plane(&self, i: usize) -> Plane {
+        self.edges[i].plane()
     }
 
     /// Whether edge `i` lies on an edge of the input face.
@@ -81,8 +123,8 @@ impl ExactPolygon {
         let n = self.corners.len();
         [
             self.support,
-            self.corners[(i + n - 1) % n].edge,
-            self.corners[i].edge,
+            self.edges[(i + n - 1) % n].plane(),
+            self.edges[i].plane(),
         ]
     }
 
@@ -102,15 +144,18 @@ impl ExactPolygon {
         predicates::side_of_intersection(&s, &a, &b, h).unwrap_or(Side::On)
     }
 
-    /// Side of vertex `i` using the filter first; counts a fallback in `fallbacks`.
+    /// The semi-static filter's sign at corner `c`: `1` front, `-1` back, `0` undecided.
+    /// Branch-free, so that random outcomes cost no mispredictions.
+    #[inline(always)]
+    fn coarse_sign(c: &Corner, hf: &PlaneF, coarse: f64) -> i8 {
+        let v = hf.eval(&c.pos);
+        (v > coarse) as i8 - (v < -coarse) as i8
+    }
+
+    /// The side of vertex `i` after the coarse filter failed: the per-vertex filter, then
+    /// the exact evaluation (counted in `fallbacks`).
     #[inline]
-    pub(crate) fn side_filtered(
-        &self,
-        i: usize,
-        h: &Plane,
-        hf: &PlaneF,
-        fallbacks: &mut u64,
-    ) -> Side {
+    fn fine_side(&self, i: usize, h: &Plane, hf: &PlaneF, fallbacks: &mut u64) -> Side {
         let c = &self.corners[i];
         match hf.side(&c.pos, c.err as f64) {
             Some(s) => s,
@@ -121,47 +166,113 @@ impl ExactPolygon {
         }
     }
 
-    /// Sides of all vertices (filter first unless `filter` is false).
-    pub(crate) fn sides(
+    #[inline]
+    fn coarse_bound(&self, hf: &PlaneF) -> f64 {
+        hf.bound_for(self.max_abs as f64, self.max_err as f64)
+    }
+
+    /// Side of vertex `i` using the filters first; counts a fallback in `fallbacks`.
+    #[inline]
+    pub(crate) fn side_filtered(
+        &self,
+        i: usize,
+        h: &Plane,
+        hf: &PlaneF,
+        fallbacks: &mut u64,
+    ) -> Side {
+        match Self::coarse_sign(&self.corners[i], hf, self.coarse_bound(hf)) {
+            1 => Side::Front,
+            -1 => Side::Back,
+            _ => self.fine_side(i, h, hf, fallbacks),
+        }
+    }
+
+    /// Sides of all vertices: the coarse filter on every vertex, then the per-vertex
+    /// filter and exact evaluations for the undecided ones (or exact only, without filter).
+    #[inline]
+    fn sides(
         &self,
         h: &Plane,
+        hf: &PlaneF,
         filter: bool,
         fallbacks: &mut u64,
     ) -> SmallVec<[Side; 8]> {
-        let hf = PlaneF::new(h);
-        (0..self.corners.len())
-            .map(|i| {
-                if filter {
-                    self.side_filtered(i, h, &hf, fallbacks)
-                } else {
-                    self.side_exact(i, h)
-                }
+        if !filter {
+            return (0..self.corners.len())
+                .map(|i| self.side_exact(i, h))
+                .collect();
+        }
+        let coarse = self.coarse_bound(hf);
+        let mut signs: SmallVec<[i8; 8]> = SmallVec::with_capacity(self.corners.len());
+        let mut unsure = false;
+        for c in &self.corners {
+            let s = Self::coarse_sign(c, hf, coarse);
+            unsure |= s == 0;
+            signs.push(s);
+        }
+        let mut sides: SmallVec<[Side; 8]> = signs
+            .iter()
+            .map(|&s| match s {
+                1 => Side::Front,
+                -1 => Side::Back,
+                _ => Side::On,
             })
-            .collect()
-    }
-
-    /// Classification against `h`.
-    pub(crate) fn classify(&self, h: &Plane, filter: bool, fallbacks: &mut u64) -> PolygonSide {
-        let hf = PlaneF::new(h);
-        let (mut front, mut back) = (false, false);
-        for i in 0..self.corners.len() {
-            let s = if filter {
-                self.side_filtered(i, h, &hf, fallbacks)
-            } else {
-                self.side_exact(i, h)
-            };
-            match s {
-                Side::Front => front = true,
-                Side::Back => back = true,
-                Side::On => {}
-            }
-            if front && back {
-                return PolygonSide::Spanning;
+            .collect();
+        if unsure {
+            for (i, &s) in signs.iter().enumerate() {
+                if s == 0 {
+                    sides[i] = self.fine_side(i, h, hf, fallbacks);
+                }
             }
         }
-        match (front, back) {
-            (true, _) => PolygonSide::Front,
-            (_, true) => PolygonSide::Back,
+        sides
+    }
+
+    /// Classification against `h`: the coarse filter on every vertex; only if it leaves
+    /// vertices undecided and the answer open, the per-vertex filter and then exact
+    /// evaluations for those vertices, stopping as soon as the answer is known.
+    pub(crate) fn classify(&self, h: &Plane, filter: bool, fallbacks: &mut u64) -> PolygonSide {
+        const FRONT: u8 = 1;
+        const BACK: u8 = 2;
+        let bit = |s: Side| match s {
+            Side::Front => FRONT,
+            Side::Back => BACK,
+            Side::On => 0,
+        };
+        let hf = PlaneF::new(h);
+        let mut flags = 0u8;
+        if filter {
+            let coarse = self.coarse_bound(&hf);
+            let (mut front, mut back, mut unsure) = (false, false, false);
+            for c in &self.corners {
+                let s = Self::coarse_sign(c, &hf, coarse);
+                front |= s > 0;
+                back |= s < 0;
+                unsure |= s == 0;
+            }
+            flags = (front as u8 * FRONT) | (back as u8 * BACK);
+            if unsure && flags != FRONT | BACK {
+                for (i, c) in self.corners.iter().enumerate() {
+                    if Self::coarse_sign(c, &hf, coarse) == 0 {
+                        flags |= bit(self.fine_side(i, h, &hf, fallbacks));
+                        if flags == FRONT | BACK {
+                            break;
+                        }
+                    }
+                }
+            }
+        } else {
+            for i in 0..self.corners.len() {
+                flags |= bit(self.side_exact(i, h));
+                if flags == FRONT | BACK {
+                    break;
+                }
+            }
+        }
+        match flags {
+            3 => PolygonSide::Spanning,
+            FRONT => PolygonSide::Front,
+            BACK => PolygonSide::Back,
             _ if self.support.same_facing(h) => PolygonSide::Coplanar,
             _ => PolygonSide::CoplanarOpposite,
         }
@@ -174,7 +285,8 @@ impl ExactPolygon {
         filter: bool,
         fallbacks: &mut u64,
     ) -> (Option<ExactPolygon>, Option<ExactPolygon>) {
-        let sides = self.sides(h, filter, fallbacks);
+        let hf = PlaneF::new(h);
+        let sides = self.sides(h, &hf, filter, fallbacks);
         let front = sides.contains(&Side::Front);
         let back = sides.contains(&Side::Back);
         match (front, back) {
@@ -190,21 +302,30 @@ impl ExactPolygon {
             (true, true) => {}
         }
         let n = self.corners.len();
-        let neg = h.flipped();
-        let mut fp: SmallVec<[Corner; INLINE]> = SmallVec::new();
-        let mut bp: SmallVec<[Corner; INLINE]> = SmallVec::new();
+        let neg = h.coeffs().flipped();
+        let hk = h.coeffs();
+        let sf = PlaneF::new(&self.support);
+        let mut fp = Builder::default();
+        let mut bp = Builder::default();
         for i in 0..n {
-            let c = self.corners[i];
+            let (c, e) = (self.corners[i], self.edges[i]);
             let j = if i + 1 == n { 0 } else { i + 1 };
             let (si, sj) = (sides[i], sides[j]);
-            // Vertex i itself.
+            // Vertex i itself; its outgoing edge becomes the cut when the polygon leaves
+            // the piece's side right after it.
             if si != Side::Back {
-                let cut = si == Side::On && sj == Side::Back;
-                fp.push(if cut { cut_corner(&c, neg) } else { c });
+                if si == Side::On && sj == Side::Back {
+                    fp.push(cut_corner(&c), neg);
+                } else {
+                    fp.push(c, e);
+                }
             }
             if si != Side::Front {
-                let cut = si == Side::On && sj == Side::Front;
-                bp.push(if cut { cut_corner(&c, *h) } else { c });
+                if si == Side::On && sj == Side::Front {
+                    bp.push(cut_corner(&c), hk);
+                } else {
+                    bp.push(c, e);
+                }
             }
             // A strict crossing of edge i.
             let crossing = matches!(
@@ -212,36 +333,32 @@ impl ExactPolygon {
                 (Side::Front, Side::Back) | (Side::Back, Side::Front)
             );
             if crossing {
-                let (pos, err) = predicates::approximate(&self.support, &c.edge, h)
+                let edge = e.plane();
+                let (pos, err) = predicates::approximate_f(&sf, &PlaneF::new(&edge), &hf)
+                    .or_else(|| predicates::approximate(&self.support, &edge, h))
                     .unwrap_or(([0.0; 3], f64::INFINITY));
                 let on_edge = Corner {
-                    edge: c.edge,
                     pos,
                     err: err32(err),
                     original: c.original,
                 };
                 if si == Side::Front {
-                    fp.push(cut_corner(&on_edge, neg));
-                    bp.push(on_edge);
+                    fp.push(cut_corner(&on_edge), neg);
+                    bp.push(on_edge, e);
                 } else {
-                    fp.push(on_edge);
-                    bp.push(cut_corner(&on_edge, *h));
+                    fp.push(on_edge, e);
+                    bp.push(cut_corner(&on_edge), hk);
                 }
             }
         }
-        let mk = |corners| ExactPolygon {
-            support: self.support,
-            corners,
-        };
-        (Some(mk(fp)), Some(mk(bp)))
+        (Some(fp.finish(self.support)), Some(bp.finish(self.support)))
     }
 }
 
-/// The corner at the same vertex whose outgoing edge is the cut `plane`.
+/// The corner at the same vertex whose outgoing edge is a cut (not original).
 #[inline]
-fn cut_corner(c: &Corner, plane: Plane) -> Corner {
+fn cut_corner(c: &Corner) -> Corner {
     Corner {
-        edge: plane,
         pos: c.pos,
         err: c.err,
         original: false,

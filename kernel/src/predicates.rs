@@ -50,12 +50,28 @@ pub(crate) struct PlaneF {
 impl PlaneF {
     #[inline]
     pub(crate) fn new(p: &Plane) -> PlaneF {
-        let n = p.normal().map(|v| v as f64);
+        let [a, b, c, d] = p.approx();
+        let n = [a, b, c];
         PlaneF {
             n,
-            d: p.d() as f64,
+            d,
             nsum: n[0].abs() + n[1].abs() + n[2].abs(),
         }
+    }
+
+    /// `fl(ã·x + b̃·y + c̃·z + d̃)`.
+    #[inline(always)]
+    pub(crate) fn eval(&self, x: &[f64; 3]) -> f64 {
+        self.n[0] * x[0] + self.n[1] * x[1] + self.n[2] * x[2] + self.d
+    }
+
+    /// A bound valid for [`PlaneF::eval`] at every approximate point whose coordinates have
+    /// magnitude at most `max_abs` and error bound at most `max_err` (the per-vertex bound
+    /// of [`PlaneF::side`] with `|x̃ᵢ|` replaced by `max_abs`: a semi-static filter shared
+    /// by all vertices of a polygon).
+    #[inline]
+    pub(crate) fn bound_for(&self, max_abs: f64, max_err: f64) -> f64 {
+        ((self.nsum * max_abs + self.d.abs()) * FILTER_REL + self.nsum * max_err) * SAFETY * SAFETY
     }
 
     /// The filtered side of an approximate point with error bound `err`, or `None` when
@@ -124,15 +140,29 @@ pub fn side_of_intersection(p1: &Plane, p2: &Plane, p3: &Plane, h: &Plane) -> Op
 /// An approximation of the intersection of three planes in grid coordinates, with a bound
 /// `err` on the error of every coordinate. `None` if the planes do not meet in one point.
 ///
-/// First Cramer's rule in f64 with a bound on every rounding (see the module docs: each
-/// determinant entry suffers at most 8 roundings, bounded by `2^-48` times the
-/// determinant computed on absolute values); when the denominator is too uncertain, the
-/// exact `I256` determinants are rounded instead (relative error at most `8u`).
+/// First Cramer's rule in f64 with a bound on every rounding (see [`approximate_f`]);
+/// when the denominator is too uncertain, the exact `I256` determinants are rounded
+/// instead (relative error at most `8u`).
 pub fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3], f64)> {
-    let f = |p: &Plane| (p.normal().map(|v| v as f64), -(p.d() as f64));
-    let (n1, h1) = f(p1);
-    let (n2, h2) = f(p2);
-    let (n3, h3) = f(p3);
+    approximate_f(&PlaneF::new(p1), &PlaneF::new(p2), &PlaneF::new(p3))
+        .or_else(|| approximate_exact(p1, p2, p3))
+}
+
+/// Cramer's rule in f64 on rounded coefficients, with a proven bound; `None` when the
+/// denominator is not clearly away from zero.
+///
+/// Each entry of a determinant or numerator suffers at most 10 roundings relative to the
+/// exact product of integer coefficients (3 for `d`'s conversion, 1 per other coefficient,
+/// products, 2 additions per 2×2 minor and per 3-term sum), so its error is at most
+/// `γ₁₀ · M` where `M` is the same expression on absolute values; `2^-48 = 32u` times the
+/// computed `M` covers this. Then with `|D̃ - D| <= e_D < |D̃|`:
+/// `|X/D - X̃/D̃| <= (|X̃|·e_D + |D̃|·e_X) / (|D̃|·(|D̃| - e_D))`, plus the two roundings of
+/// `x̃ = X̃ · fl(1/D̃)`; the safety factor covers the roundings of the bound itself.
+#[inline]
+pub(crate) fn approximate_f(p1: &PlaneF, p2: &PlaneF, p3: &PlaneF) -> Option<([f64; 3], f64)> {
+    let (n1, h1) = (p1.n, -p1.d);
+    let (n2, h2) = (p2.n, -p2.d);
+    let (n3, h3) = (p3.n, -p3.d);
     let cr = |a: [f64; 3], b: [f64; 3]| {
         [
             a[1] * b[2] - a[2] * b[1],
@@ -155,20 +185,26 @@ pub fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3], f64)
     let det_mag = n1[0].abs() * a23[0] + n1[1].abs() * a23[1] + n1[2].abs() * a23[2];
     let e_det = det_mag * DET_REL;
     let ad = det.abs();
-    if ad > 2.0 * e_det {
-        let denom = ad * (ad - e_det);
-        let mut pos = [0.0; 3];
-        let mut err: f64 = 0.0;
-        for j in 0..3 {
-            let x = h1 * c23[j] + h2 * c31[j] + h3 * c12[j];
-            let x_mag = h1.abs() * a23[j] + h2.abs() * a31[j] + h3.abs() * a12[j];
-            let e_x = x_mag * DET_REL;
-            pos[j] = x / det;
-            let e = (x.abs() * e_det + ad * e_x) / denom + pos[j].abs() * U;
-            err = err.max(e);
-        }
-        return Some((pos, finish_err(err)));
+    if ad.is_nan() || ad <= 2.0 * e_det {
+        return None;
     }
+    let inv = 1.0 / det;
+    let inv_denom = 1.0 / (ad * (ad - e_det));
+    let mut pos = [0.0; 3];
+    let mut err: f64 = 0.0;
+    for j in 0..3 {
+        let x = h1 * c23[j] + h2 * c31[j] + h3 * c12[j];
+        let x_mag = h1.abs() * a23[j] + h2.abs() * a31[j] + h3.abs() * a12[j];
+        let e_x = x_mag * DET_REL;
+        pos[j] = x * inv;
+        let e = (x.abs() * e_det + ad * e_x) * inv_denom + pos[j].abs() * (3.0 * U);
+        err = err.max(e);
+    }
+    Some((pos, finish_err(err)))
+}
+
+/// The intersection rounded from the exact determinants.
+fn approximate_exact(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3], f64)> {
     let (x, d) = homogeneous(p1, p2, p3);
     if d == I256::ZERO {
         return None;
@@ -198,15 +234,17 @@ pub(crate) fn finish_err(err: f64) -> f64 {
 #[inline]
 pub(crate) fn as_grid(pos: &[f64; 3], err: f64) -> Option<crate::grid::GridPoint> {
     const LIM: f64 = (1u64 << 62) as f64;
-    if err == 0.0 && pos.iter().all(|v| v.fract() == 0.0 && v.abs() < LIM) {
-        Some(crate::grid::GridPoint::new(
-            pos[0] as i64,
-            pos[1] as i64,
-            pos[2] as i64,
-        ))
-    } else {
-        None
+    if err != 0.0 {
+        return None;
     }
+    let g = pos.map(|v| v as i64);
+    let exact = (0..3).all(|i| v_ok(pos[i], LIM) && g[i] as f64 == pos[i]);
+    exact.then(|| crate::grid::GridPoint::from_array(g))
+}
+
+#[inline]
+fn v_ok(v: f64, lim: f64) -> bool {
+    v.abs() < lim
 }
 
 /// Rounds the exact intersection of three planes to f64 grid coordinates (each

@@ -155,7 +155,7 @@ proptest! {
         let k = kernel();
         for poly in face(&k, &pts) {
             let mut inputs: Vec<Plane> = vec![*poly.support()];
-            inputs.extend((0..poly.len()).map(|i| *poly.edge_plane(i)));
+            inputs.extend((0..poly.len()).map(|i| poly.edge_plane(i)));
             let mut p = poly;
             let mut splits = 0;
             for (c, keep_front) in cuts.iter().zip(&keep) {
@@ -168,7 +168,7 @@ proptest! {
                 }
                 p = if *keep_front { f.or(b) } else { b.or(f) }.unwrap();
                 for i in 0..p.len() {
-                    prop_assert!(inputs.contains(p.edge_plane(i)));
+                    prop_assert!(inputs.contains(&p.edge_plane(i)));
                 }
                 prop_assert_eq!(p.support(), &inputs[0]);
             }
