@@ -114,12 +114,21 @@ pub fn uv_sphere(
     let mut n = 0;
     for s in 0..segments {
         scene.add_face(&[base, ring(1, s), ring(1, s + 1)], material, object)?;
-        scene.add_face(&[bottom, ring(rings - 1, s + 1), ring(rings - 1, s)], material, object)?;
+        scene.add_face(
+            &[bottom, ring(rings - 1, s + 1), ring(rings - 1, s)],
+            material,
+            object,
+        )?;
         n += 2;
     }
     for r in 1..rings - 1 {
         for s in 0..segments {
-            let (a, b, c, d) = (ring(r, s), ring(r + 1, s), ring(r + 1, s + 1), ring(r, s + 1));
+            let (a, b, c, d) = (
+                ring(r, s),
+                ring(r + 1, s),
+                ring(r + 1, s + 1),
+                ring(r, s + 1),
+            );
             scene.add_face(&[a, b, c], material, object)?;
             scene.add_face(&[a, c, d], material, object)?;
             n += 2;
@@ -182,13 +191,19 @@ pub fn torus(
         for s in 0..sides {
             let ph = std::f64::consts::TAU * s as f64 / sides as f64;
             let rad = major + minor * ph.cos();
-            scene.vertices.push(centre + DVec3::new(rad * th.cos(), minor * ph.sin(), -rad * th.sin()));
+            scene
+                .vertices
+                .push(centre + DVec3::new(rad * th.cos(), minor * ph.sin(), -rad * th.sin()));
         }
     }
     let at = |r: u32, s: u32| base + (r % rings) * sides + (s % sides);
     for r in 0..rings {
         for s in 0..sides {
-            scene.add_face(&[at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1)], material, object)?;
+            scene.add_face(
+                &[at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1)],
+                material,
+                object,
+            )?;
         }
     }
     Ok((rings * sides) as usize)

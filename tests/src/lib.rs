@@ -1,1 +1,11 @@
-//! Cross-crate tests and the hard-case corpus.
+//! Cross-crate integration tests and the hard-case corpus for limn.
+//!
+//! * [`corpus`]: the hard cases, built in code.
+//! * [`checker`]: an exact (rational) checker of the painter's invariant.
+//! * [`exact`]: exact runs of the orderings, ready for the checker.
+//! * [`sample`]: which face the painter shows at sample points, for invariance tests.
+
+pub mod checker;
+pub mod corpus;
+pub mod exact;
+pub mod sample;

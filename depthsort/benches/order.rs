@@ -1,0 +1,165 @@
+//! Ordering benchmark: prints one table of milliseconds, fragments, splits and peak memory
+//! per scene and mode, exact and float, measured in one run, with ratios.
+//!
+//! `cargo bench -p limn-depthsort --bench order` (add `-- --quick` to skip the largest
+//! scenes, `-- --big` to include the 1M-triangle sphere).
+
+use std::time::Instant;
+
+use glam::DVec3;
+use limn_depthsort::{order, Arith, OrderOptions, Ordered, SortMode};
+use limn_scene::{shapes, Camera, Material, Scene};
+
+fn soup(n: usize, size: f64, seed: u64) -> Scene {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::diffuse("soup", [0.7, 0.7, 0.7]));
+    let o = s.add_object("soup");
+    let mut rng = seed;
+    let mut next = move || {
+        rng = rng
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((rng >> 11) as f64) / ((1u64 << 53) as f64)
+    };
+    while s.faces.len() < n {
+        let c = DVec3::new(next(), next(), next()) * 2.0 - 1.0;
+        let pts: Vec<DVec3> = (0..3)
+            .map(|_| c + (DVec3::new(next(), next(), next()) - 0.5) * size)
+            .collect();
+        if (pts[1] - pts[0]).cross(pts[2] - pts[0]).length() > 1e-9 {
+            s.add_polygon(&pts, m, o).expect("valid");
+        }
+    }
+    s
+}
+
+fn sphere(rings: u32, segments: u32) -> Scene {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::diffuse("sphere", [0.7, 0.7, 0.7]));
+    let o = s.add_object("sphere");
+    shapes::uv_sphere(&mut s, DVec3::ZERO, 1.0, rings, segments, m, o).expect("valid");
+    s
+}
+
+fn torus() -> Scene {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::diffuse("torus", [0.7, 0.7, 0.7]));
+    let o = s.add_object("torus");
+    shapes::torus(&mut s, DVec3::ZERO, 1.0, 0.4, 200, 50, m, o).expect("valid");
+    s
+}
+
+/// Peak resident memory since the last reset, in MB (Linux; 0 elsewhere).
+fn peak_mb() -> f64 {
+    let s = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    s.lines()
+        .find(|l| l.starts_with("VmHWM:"))
+        .and_then(|l| l.split_whitespace().nth(1))
+        .and_then(|v| v.parse::<f64>().ok())
+        .map_or(0.0, |kb| kb / 1024.0)
+}
+
+fn reset_peak() {
+    let _ = std::fs::write("/proc/self/clear_refs", "5");
+}
+
+struct Row {
+    ms: f64,
+    frags: usize,
+    splits: usize,
+    mb: f64,
+    fallbacks: u64,
+    visible: usize,
+}
+
+fn run(scene: &Scene, cam: &Camera, sort: SortMode, arith: Arith) -> Row {
+    let opts = OrderOptions {
+        sort,
+        arith,
+        ..OrderOptions::default()
+    };
+    let before = peak_mb();
+    reset_peak();
+    let t = Instant::now();
+    let o: Ordered = order(scene, cam, &opts).expect("orderable");
+    let ms = t.elapsed().as_secs_f64() * 1e3;
+    let mb = (peak_mb() - before.min(peak_mb())).max(0.0);
+    let visible = o.stats.polygons;
+    Row {
+        ms,
+        frags: o.fragments.len(),
+        splits: o.stats.splits,
+        mb,
+        fallbacks: o.stats.filter_fallbacks,
+        visible,
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let quick = args.iter().any(|a| a == "--quick");
+    let big = args.iter().any(|a| a == "--big");
+    let mut scenes: Vec<(&str, Scene, Vec<SortMode>)> = vec![
+        ("soup 1k", soup(1000, 0.3, 1), SortMode::ALL.to_vec()),
+        (
+            "soup 10k",
+            soup(10_000, 0.3, 2),
+            vec![
+                SortMode::Adaptive,
+                SortMode::Bsp,
+                SortMode::Newell,
+                SortMode::Simple,
+            ],
+        ),
+        ("sphere 10k", sphere(50, 100), SortMode::ALL.to_vec()),
+        ("torus 10k", torus(), SortMode::ALL.to_vec()),
+    ];
+    if !quick {
+        scenes.push((
+            "sphere 100k",
+            sphere(159, 316),
+            vec![SortMode::Adaptive, SortMode::Simple],
+        ));
+    }
+    if big {
+        scenes.push((
+            "sphere 1M",
+            sphere(500, 1000),
+            vec![SortMode::Adaptive, SortMode::Simple],
+        ));
+    }
+    println!(
+        "| scene | mode | arith | ms | fragments | visible polygons | splits | peak MB | filter fallbacks |"
+    );
+    println!("|---|---|---|---:|---:|---:|---:|---:|---:|");
+    for (name, scene, modes) in &scenes {
+        let cam = Camera::framing(scene, 1920, 1080).expect("camera");
+        let mut exact_adaptive = None;
+        for &mode in modes {
+            for arith in [Arith::Exact, Arith::Float] {
+                let r = run(scene, &cam, mode, arith);
+                println!(
+                    "| {name} | {} | {} | {:.1} | {} | {} | {} | {:.0} | {} |",
+                    mode.name(),
+                    arith.name(),
+                    r.ms,
+                    r.frags,
+                    r.visible,
+                    r.splits,
+                    r.mb,
+                    r.fallbacks
+                );
+                if mode == SortMode::Adaptive && arith == Arith::Exact {
+                    exact_adaptive = Some(r.ms);
+                } else if let Some(base) = exact_adaptive {
+                    if mode == SortMode::Adaptive {
+                        println!(
+                            "|  | ratio exact/float |  | {:.2} |  |  |  |  |  |",
+                            base / r.ms
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,64 @@
+//! After ordering: fragments of one face that are adjacent in the order are joined again.
+//! Two halves of one split are replaced by the piece they were split from, recursively,
+//! so a face that did not need splitting comes out as one polygon, exactly (no
+//! coordinate is compared).
+
+use std::collections::HashSet;
+
+use limn_kernel::Kernel;
+
+use crate::ctx::{Ctx, NONE};
+
+/// Joins sibling pieces inside each run of consecutive pieces of the same face.
+pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
+    let mut out = Vec::with_capacity(order.len());
+    let mut i = 0;
+    while i < order.len() {
+        let face = ctx.pieces[order[i] as usize].face;
+        let mut j = i + 1;
+        while j < order.len() && ctx.pieces[order[j] as usize].face == face {
+            j += 1;
+        }
+        if j - i == 1 {
+            out.push(order[i]);
+        } else {
+            merge_run(ctx, &order[i..j], &mut out);
+        }
+        i = j;
+    }
+    out
+}
+
+/// Pieces of one face never overlap each other in projection, so any order within the
+/// run is valid: join every pair of siblings present until none is left.
+fn merge_run<K: Kernel>(ctx: &Ctx<'_, K>, run: &[u32], out: &mut Vec<u32>) {
+    let mut present: HashSet<u32> = run.iter().copied().collect();
+    let mut list: Vec<u32> = run.to_vec();
+    loop {
+        let mut changed = false;
+        let mut next = Vec::with_capacity(list.len());
+        for &p in &list {
+            if !present.contains(&p) {
+                continue;
+            }
+            let parent = ctx.pieces[p as usize].parent;
+            if parent != NONE {
+                let [a, b] = ctx.pieces[parent as usize].kids;
+                if a != NONE && b != NONE && present.contains(&a) && present.contains(&b) {
+                    present.remove(&a);
+                    present.remove(&b);
+                    present.insert(parent);
+                    next.push(parent);
+                    changed = true;
+                    continue;
+                }
+            }
+            next.push(p);
+        }
+        list = next;
+        if !changed {
+            break;
+        }
+    }
+    out.extend(list.into_iter().filter(|p| present.contains(p)));
+}

@@ -1,0 +1,192 @@
+//! Options, statistics and errors of the orderings.
+
+use limn_kernel::KernelError;
+use limn_scene::{CameraError, SceneError};
+use thiserror::Error;
+
+/// Which visibility ordering to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum SortMode {
+    /// Pairs whose projections may overlap are oriented exactly, the occlusion graph is
+    /// sorted topologically, and only strongly connected components (cycles,
+    /// interpenetration) are split, recursively. The default.
+    #[default]
+    Adaptive,
+    /// A Fuchs–Kedem–Naylor BSP tree of all polygons, traversed back to front.
+    Bsp,
+    /// Newell–Newell–Sancha depth sort with its five tests, swapping and splitting.
+    Newell,
+    /// One depth per polygon (the mean distance of its vertices); wrong on hard cases,
+    /// kept as the baseline that plotting libraries use. The coplanar rule (later face
+    /// wins) applies only to exact ties of that depth.
+    Simple,
+}
+
+impl SortMode {
+    /// Parses `adaptive`, `bsp`, `newell` or `simple`.
+    pub fn from_name(s: &str) -> Option<SortMode> {
+        match s {
+            "adaptive" => Some(SortMode::Adaptive),
+            "bsp" => Some(SortMode::Bsp),
+            "newell" => Some(SortMode::Newell),
+            "simple" => Some(SortMode::Simple),
+            _ => None,
+        }
+    }
+
+    /// The mode's name as accepted by [`SortMode::from_name`].
+    pub fn name(self) -> &'static str {
+        match self {
+            SortMode::Adaptive => "adaptive",
+            SortMode::Bsp => "bsp",
+            SortMode::Newell => "newell",
+            SortMode::Simple => "simple",
+        }
+    }
+
+    /// All modes.
+    pub const ALL: [SortMode; 4] = [
+        SortMode::Adaptive,
+        SortMode::Bsp,
+        SortMode::Newell,
+        SortMode::Simple,
+    ];
+}
+
+/// Which polygon kernel decides.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Arith {
+    /// The exact plane-based kernel (the default).
+    #[default]
+    Exact,
+    /// The f64 kernel with an epsilon: the measured baseline.
+    Float,
+}
+
+impl Arith {
+    /// Parses `exact` or `float`.
+    pub fn from_name(s: &str) -> Option<Arith> {
+        match s {
+            "exact" => Some(Arith::Exact),
+            "float" => Some(Arith::Float),
+            _ => None,
+        }
+    }
+
+    /// The name accepted by [`Arith::from_name`].
+    pub fn name(self) -> &'static str {
+        match self {
+            Arith::Exact => "exact",
+            Arith::Float => "float",
+        }
+    }
+}
+
+/// Back-face culling.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CullMode {
+    /// Cull the back faces of every object that is a closed surface with only opaque
+    /// materials (the default).
+    #[default]
+    Auto,
+    /// Cull every back face.
+    On,
+    /// Cull no back face (faces seen exactly edge-on are still dropped: they cover no
+    /// area).
+    Off,
+}
+
+impl CullMode {
+    /// Parses `auto`, `on` or `off`.
+    pub fn from_name(s: &str) -> Option<CullMode> {
+        match s {
+            "auto" => Some(CullMode::Auto),
+            "on" => Some(CullMode::On),
+            "off" => Some(CullMode::Off),
+            _ => None,
+        }
+    }
+}
+
+/// Options of [`crate::order`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct OrderOptions {
+    /// The ordering. Default: adaptive.
+    pub sort: SortMode,
+    /// The kernel. Default: exact.
+    pub arith: Arith,
+    /// Back-face culling. Default: auto.
+    pub cull: CullMode,
+    /// Seed of the splitter choice in BSP trees (deterministic). Default: 1.
+    pub seed: u64,
+    /// Number of random splitter candidates tried per BSP node. Default: 5.
+    pub candidates: usize,
+    /// Merge fragments of one face that are adjacent in the order. Default: true.
+    pub merge: bool,
+}
+
+impl Default for OrderOptions {
+    fn default() -> Self {
+        OrderOptions {
+            sort: SortMode::Adaptive,
+            arith: Arith::Exact,
+            cull: CullMode::Auto,
+            seed: 1,
+            candidates: 5,
+            merge: true,
+        }
+    }
+}
+
+/// What an ordering did, for reports and benchmarks.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Stats {
+    /// Faces in the scene.
+    pub faces_in: usize,
+    /// Faces of zero area after quantisation (dropped).
+    pub faces_degenerate: usize,
+    /// Faces culled as back faces or seen exactly edge-on.
+    pub faces_culled: usize,
+    /// Faces removed entirely by the near plane or outside the view.
+    pub faces_clipped: usize,
+    /// Convex polygons entering the ordering.
+    pub polygons: usize,
+    /// Pairs whose projections may overlap (after the float prefilter).
+    pub candidate_pairs: usize,
+    /// Pairs that constrain the order (edges of the occlusion graph).
+    pub constraints: usize,
+    /// Strongly connected components with more than one polygon (adaptive), or cycles
+    /// broken (newell).
+    pub components: usize,
+    /// Size of the largest such component.
+    pub largest_component: usize,
+    /// Polygon splits, near-plane clipping included.
+    pub splits: usize,
+    /// Fragments in the order before merging.
+    pub fragments_before_merge: usize,
+    /// Fragments out.
+    pub fragments_out: usize,
+    /// Exact predicates that fell back from their floating-point filter.
+    pub filter_fallbacks: u64,
+    /// Milliseconds spent converting, culling and clipping.
+    pub ms_prepare: f64,
+    /// Milliseconds spent ordering.
+    pub ms_order: f64,
+    /// Milliseconds spent merging and building fragments.
+    pub ms_merge: f64,
+}
+
+/// Errors of the orderings: all come from invalid input.
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum OrderError {
+    /// The scene is inconsistent.
+    #[error("invalid scene: {0}")]
+    Scene(#[from] SceneError),
+    /// The camera is invalid.
+    #[error("invalid camera: {0}")]
+    Camera(#[from] CameraError),
+    /// The geometry cannot be represented by the kernel.
+    #[error("geometry: {0}")]
+    Kernel(#[from] KernelError),
+}

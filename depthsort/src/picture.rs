@@ -1,0 +1,49 @@
+//! From ordered fragments to a paintable [`Picture`]: flat shading per face (only the
+//! effects the scene asks for), opacity, object names, outlines.
+
+use limn_scene::{shade_face, Scene};
+
+use crate::paint::{Outline, PaintFragment, Picture};
+use crate::Ordered;
+
+/// How to turn an order into a picture.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Style {
+    /// Page background (RGBA); `None` = transparent.
+    pub background: Option<[f64; 4]>,
+    /// Outline original model edges with this style; `None` = no outlines.
+    pub outline: Option<Outline>,
+}
+
+/// Builds the picture of `ordered` (which must come from `scene`). Each face is shaded
+/// once (flat, at its centroid, from the eye actually used); `illum 0` materials keep
+/// exactly their `Kd`.
+pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
+    let cam = &ordered.camera;
+    let mut cache: Vec<Option<[f64; 4]>> = vec![None; scene.faces.len()];
+    let mut fragments = Vec::with_capacity(ordered.fragments.len());
+    for f in &ordered.fragments {
+        let face = &scene.faces[f.face as usize];
+        let fill = *cache[f.face as usize].get_or_insert_with(|| {
+            let m = &scene.materials[face.material as usize];
+            let c = shade_face(scene, f.face, cam.eye);
+            [c[0], c[1], c[2], m.opacity.clamp(0.0, 1.0)]
+        });
+        fragments.push(PaintFragment {
+            points: f.points.clone(),
+            fill,
+            vertex_colors: None,
+            face: f.face,
+            object: face.object,
+            original_edges: f.original_edges.clone(),
+        });
+    }
+    Picture {
+        width: cam.width,
+        height: cam.height,
+        background: style.background,
+        objects: scene.objects.iter().map(|o| o.name.clone()).collect(),
+        fragments,
+        outline: style.outline,
+    }
+}

@@ -1,0 +1,122 @@
+//! Before ordering: convert faces to kernel polygons, cull back faces and faces seen
+//! edge-on (exactly), clip at the near plane (exactly), and drop what lies outside the
+//! picture (conservatively, in floats).
+
+use std::collections::HashMap;
+
+use limn_kernel::{Kernel, PolygonSide, Side};
+use limn_scene::Scene;
+
+use crate::ctx::{Ctx, NONE};
+use crate::options::{CullMode, OrderError};
+
+/// Directed edges keyed by the bit patterns of their end points, with use counts.
+type EdgeCounts = HashMap<([u64; 3], [u64; 3]), i32>;
+
+/// For each object: is it a closed surface whose materials are all opaque? Every edge
+/// (by vertex position) must be used exactly once in each direction within the object.
+pub(crate) fn closed_opaque_objects(scene: &Scene) -> Vec<bool> {
+    let n = scene.objects.len();
+    let mut ok = vec![true; n];
+    let mut has_faces = vec![false; n];
+    let mut edges: Vec<EdgeCounts> = vec![HashMap::new(); n];
+    let key = |v: u32| {
+        let p = scene.vertices[v as usize];
+        [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
+    };
+    for f in &scene.faces {
+        let o = f.object as usize;
+        has_faces[o] = true;
+        if !scene.materials[f.material as usize].is_opaque() {
+            ok[o] = false;
+        }
+        let m = f.vertices.len();
+        for i in 0..m {
+            let a = key(f.vertices[i]);
+            let b = key(f.vertices[(i + 1) % m]);
+            if a != b {
+                *edges[o].entry((a, b)).or_insert(0) += 1;
+            }
+        }
+    }
+    for o in 0..n {
+        if !ok[o] || !has_faces[o] {
+            ok[o] = false;
+            continue;
+        }
+        let e = &edges[o];
+        ok[o] = e
+            .iter()
+            .all(|(&(a, b), &c)| c == 1 && e.get(&(b, a)) == Some(&1));
+    }
+    ok
+}
+
+/// Converts, culls and clips every face; returns the ids of the pieces to order.
+pub(crate) fn prepare<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    scene: &Scene,
+    cull: CullMode,
+    near: f64,
+) -> Result<Vec<u32>, OrderError> {
+    let closed = match cull {
+        CullMode::Auto => closed_opaque_objects(scene),
+        CullMode::On => vec![true; scene.objects.len()],
+        CullMode::Off => vec![false; scene.objects.len()],
+    };
+    let eye_world = ctx.camera.eye;
+    let fwd = ctx.camera.forward();
+    let near_plane = ctx.k.plane_through(eye_world + fwd * near, fwd)?;
+    let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
+    let mut items = Vec::new();
+    let mut corners = Vec::new();
+    for (fi, face) in scene.faces.iter().enumerate() {
+        ctx.stats.faces_in += 1;
+        corners.clear();
+        corners.extend(face.vertices.iter().map(|&v| scene.vertices[v as usize]));
+        let polys = ctx.k.face_polygons(&corners)?;
+        if polys.is_empty() {
+            ctx.stats.faces_degenerate += 1;
+            continue;
+        }
+        let cull_back = closed[face.object as usize];
+        let mut kept_any = false;
+        let mut culled_all = true;
+        for poly in polys {
+            let plane = ctx.k.support(&poly);
+            let side = ctx.k.side_of_point(&plane, &ctx.eye);
+            match side {
+                Side::On => continue,
+                Side::Back if cull_back => continue,
+                _ => {}
+            }
+            culled_all = false;
+            let poly = match ctx.k.classify(&poly, &near_plane) {
+                PolygonSide::Front => poly,
+                PolygonSide::Spanning => {
+                    ctx.stats.splits += 1;
+                    match ctx.k.split(&poly, &near_plane).0 {
+                        Some(p) => p,
+                        None => continue,
+                    }
+                }
+                _ => continue,
+            };
+            let id = ctx.add(poly, fi as u32, NONE, Some(side == Side::Front));
+            let b = ctx.pieces[id as usize].bbox;
+            // Entirely outside the picture (with a one-pixel margin): never painted.
+            if b[2] < -1.0 || b[0] > w + 1.0 || b[3] < -1.0 || b[1] > h + 1.0 || !b[0].is_finite() {
+                continue;
+            }
+            kept_any = true;
+            items.push(id);
+        }
+        if culled_all {
+            ctx.stats.faces_culled += 1;
+        } else if !kept_any {
+            ctx.stats.faces_clipped += 1;
+        }
+    }
+    ctx.stats.polygons = items.len();
+    Ok(items)
+}
