@@ -179,9 +179,14 @@ impl Obj<'_> {
         toks: &mut impl Iterator<Item = &'t [u8]>,
         what: &str,
     ) -> Result<DVec3, LoadError> {
-        let x = number(self.path, n, toks.next(), &format!("{what} x"))?;
-        let y = number(self.path, n, toks.next(), &format!("{what} y"))?;
-        let z = number(self.path, n, toks.next(), &format!("{what} z"))?;
+        let names = if what == "vertex" {
+            ["vertex x", "vertex y", "vertex z"]
+        } else {
+            ["normal x", "normal y", "normal z"]
+        };
+        let x = number(self.path, n, toks.next(), names[0])?;
+        let y = number(self.path, n, toks.next(), names[1])?;
+        let z = number(self.path, n, toks.next(), names[2])?;
         let p = DVec3::new(x, y, z);
         if !p.is_finite() {
             return Err(LoadError::NonFinite {

@@ -55,7 +55,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
             room,
         });
     }
-    let mut b = Builder::new(path, n as usize);
+    let mut b: Builder<[u32; 3]> = Builder::new(path, n as usize);
     let object = b.scene.add_object(&stem(path));
     if room > n {
         b.scene.warnings.push(format!(
@@ -71,57 +71,67 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
     {
         let f = |k: usize| {
             let o = 12 + 4 * k;
-            f32::from_le_bytes([rec[o], rec[o + 1], rec[o + 2], rec[o + 3]]) as f64
+            f32::from_le_bytes([rec[o], rec[o + 1], rec[o + 2], rec[o + 3]]) + 0.0
         };
-        let corners = [0, 1, 2].map(|c| DVec3::new(f(3 * c), f(3 * c + 1), f(3 * c + 2)));
-        if corners.iter().any(|p| !p.is_finite()) {
+        let corners = [0, 1, 2].map(|c| [f(3 * c), f(3 * c + 1), f(3 * c + 2)]);
+        if corners.iter().flatten().any(|c| !c.is_finite()) {
             return Err(LoadError::NonFinite {
                 at: Location::record(path, format!("triangle {}", i + 1)),
                 what: "vertex coordinate".into(),
             });
         }
-        b.face(&corners, object)?;
+        // Keyed by the f32 bits (−0 folded into +0 above): half the key of an f64.
+        let keyed = corners.map(|p| {
+            (
+                p.map(f32::to_bits),
+                DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64),
+            )
+        });
+        b.face(&keyed, object)?;
     }
     Ok(b.scene)
 }
 
-/// Builds faces over shared vertices.
-struct Builder<'a> {
+/// Builds faces over shared vertices, found by a key made of their coordinates' bits.
+struct Builder<'a, K> {
     path: &'a Path,
     scene: Scene,
-    index: BitsMap<[u64; 3], u32>,
+    index: BitsMap<K, u32>,
     material: u32,
 }
 
-impl<'a> Builder<'a> {
+impl<'a, K: std::hash::Hash + Eq + Copy> Builder<'a, K> {
     fn new(path: &'a Path, faces: usize) -> Self {
         let mut scene = Scene::default();
-        // `faces` was checked against the file size by the caller.
+        // `faces` was checked against the file size by the caller. A closed triangle
+        // mesh has about half as many vertices as triangles.
         scene.faces.reserve(faces);
+        scene.vertices.reserve(faces / 2 + 3);
         let material = scene.add_material(Material::default_grey());
+        let mut index = BitsMap::default();
+        index.reserve(faces / 2 + 3);
         Builder {
             path,
             scene,
-            index: BitsMap::default(),
+            index,
             material,
         }
     }
 
-    fn vertex(&mut self, p: DVec3) -> Result<u32, LoadError> {
-        let key = position_key(p.to_array());
+    fn vertex(&mut self, key: K, p: DVec3) -> Result<u32, LoadError> {
         if let Some(&v) = self.index.get(&key) {
             return Ok(v);
         }
         check_u32(self.scene.vertices.len(), "vertices", self.path)?;
-        let v = self.scene.add_vertex(p + DVec3::ZERO);
+        let v = self.scene.add_vertex(p);
         self.index.insert(key, v);
         Ok(v)
     }
 
-    fn face(&mut self, corners: &[DVec3], object: u32) -> Result<(), LoadError> {
+    fn face(&mut self, corners: &[(K, DVec3)], object: u32) -> Result<(), LoadError> {
         let vertices = corners
             .iter()
-            .map(|&p| self.vertex(p))
+            .map(|&(k, p)| self.vertex(k, p))
             .collect::<Result<Vec<_>, _>>()?;
         check_u32(self.scene.faces.len(), "faces", self.path)?;
         self.scene.faces.push(Face {
@@ -144,11 +154,11 @@ enum Expect {
 }
 
 fn parse_ascii(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
-    let mut b = Builder::new(path, 0);
+    let mut b: Builder<[u64; 3]> = Builder::new(path, 0);
     let mut lines = Lines::new(bytes, path, false);
     let mut state = Expect::Solid;
     let mut object = 0;
-    let mut corners: Vec<DVec3> = Vec::with_capacity(3);
+    let mut corners: Vec<([u64; 3], DVec3)> = Vec::with_capacity(3);
     let mut last = 0;
     while let Some(next) = lines.next_line() {
         let (n, line) = next?;
@@ -194,14 +204,14 @@ fn parse_ascii(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                         )
                     })?;
                 }
-                let p = DVec3::from(c);
+                let p = DVec3::from(c) + DVec3::ZERO;
                 if !p.is_finite() {
                     return Err(LoadError::NonFinite {
                         at: Location::line(path, n),
                         what: "vertex coordinate".into(),
                     });
                 }
-                corners.push(p);
+                corners.push((position_key(c), p));
             }
             (Expect::VertexOrEndLoop, b"endloop") => {
                 if corners.len() < 3 {

@@ -163,7 +163,14 @@ pub(crate) struct BitsHasher(u64);
 
 impl Hasher for BitsHasher {
     fn finish(&self) -> u64 {
-        self.0
+        // murmur3's finaliser: coordinates read from f32 have 29 zero low bits, and the
+        // table indexes by the low bits, so they must depend on every input bit.
+        let mut h = self.0;
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+        h ^ (h >> 33)
     }
     fn write(&mut self, bytes: &[u8]) {
         for chunk in bytes.chunks(8) {
