@@ -228,7 +228,7 @@ fn non_finite_ply() {
     assert!(matches!(e, LoadError::NonFinite { .. }), "{e}");
     assert_at(&e, &p, Some(11));
     let mut bytes = binary_ply_square(true);
-    let at = bytes.len() - 2 * 13 - 4 * 15; // vertex 1's x, big endian
+    let at = bytes.len() - 2 * 13 - 4 * 15; // the first vertex's x, big endian
     bytes[at..at + 4].copy_from_slice(&f32::INFINITY.to_be_bytes());
     let p = write(d.path(), "b.ply", bytes);
     let e = err(&p);

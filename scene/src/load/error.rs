@@ -8,14 +8,16 @@ use thiserror::Error;
 use crate::{CameraError, SceneError};
 
 /// Where in an input file a problem was found: the file, and for text formats the
-/// 1-based line; for binary formats a record such as `triangle 17` when one applies.
+/// 1-based line; for binary formats a record such as `triangle 17` (numbered from 1)
+/// when one applies.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Location {
     /// The file, as given (not canonicalised).
     pub path: PathBuf,
     /// 1-based line number, for text formats.
     pub line: Option<u64>,
-    /// A record in a binary format (`triangle 17`, `vertex 3`, `accessor 2`).
+    /// A record in a binary format: `triangle 17`, `vertex 3` (numbered from 1, as
+    /// people count), or `accessor 2`, `node 0` (glTF's own 0-based indices).
     pub record: Option<String>,
 }
 
