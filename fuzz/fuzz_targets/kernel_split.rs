@@ -104,7 +104,9 @@ fuzz_target!(|case: Case| {
         return;
     };
     for poly in polys {
-        check_polygon(&poly).unwrap();
+        if let Err(e) = check_polygon(&poly) {
+            panic!("{e}\ncase {case:?}\npolygon {poly:?}");
+        }
         let mut p = poly;
         for (cut, keep_front) in case.cuts.iter().take(200) {
             let Some(h) = plane(&k, &p, cut) else {

@@ -112,6 +112,11 @@ fn drop_collinear(pts: &mut Vec<GridPoint>, k: usize) {
 }
 
 /// Whether the outline is strictly convex and simple, turning with sign `sgn` along `k`.
+///
+/// All turns having the same sign is not enough: the outline may wind around more than
+/// once. With the fan `(p₀, pᵢ, pᵢ₊₁)` also turning the same way, the rays from `p₀` are
+/// sorted by angle, each step below 180°; requiring every `pᵢ` strictly on the same side
+/// of the line `p₀p₁` keeps the whole sweep below 180°, so the outline winds once.
 fn strictly_convex(pts: &[GridPoint], k: usize, sgn: i32) -> bool {
     let n = pts.len();
     if n < 3 {
@@ -119,8 +124,8 @@ fn strictly_convex(pts: &[GridPoint], k: usize, sgn: i32) -> bool {
     }
     let turns = (0..n).all(|i| orient_k(pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n], k) == sgn);
     let fan = (1..n - 1).all(|i| orient_k(pts[0], pts[i], pts[i + 1], k) == sgn);
-    let span = n == 3 || orient_k(pts[0], pts[1], pts[n - 1], k) == sgn;
-    turns && fan && span
+    let half = (2..n).all(|i| orient_k(pts[0], pts[1], pts[i], k) == sgn);
+    turns && fan && half
 }
 
 /// Converts one input face (see the module docs).

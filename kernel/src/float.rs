@@ -116,15 +116,19 @@ impl FloatKernel {
         })
     }
 
+    /// Convex, planar and winding once (every corner on the inner side of the line
+    /// through the first two), all within epsilon.
     fn is_convex(&self, pts: &[DVec3], normal: DVec3) -> bool {
         let n = pts.len();
         let unit = normal.normalize();
         let w = unit.dot(pts[0]);
-        (0..n).all(|i| {
+        let tol = self.eps * self.eps;
+        let turns = (0..n).all(|i| {
             let (a, b, c) = (pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n]);
-            (b - a).cross(c - b).dot(unit) > self.eps * self.eps
-                && (unit.dot(b) - w).abs() <= self.eps
-        })
+            (b - a).cross(c - b).dot(unit) > tol && (unit.dot(b) - w).abs() <= self.eps
+        });
+        let once = (2..n).all(|i| (pts[1] - pts[0]).cross(pts[i] - pts[0]).dot(unit) > tol);
+        turns && once
     }
 }
 

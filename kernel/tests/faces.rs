@@ -273,3 +273,39 @@ fn float_kernel_triangulates_too() {
     assert_eq!(area, 300.0);
     assert_eq!(originals, 6);
 }
+
+/// Found by the `kernel_split` fuzz target: an outline whose turns all have the same sign
+/// but which winds around twice (after removing a collinear spike) was taken for convex.
+#[test]
+fn fuzz_double_winding_original() {
+    let k = kernel();
+    let pts = [
+        [327679, -1, -1],
+        [33554432, -1, -1],
+        [-1, -1, -1],
+        [-16514824, -1, -1],
+        [33554176, 33554432, -1],
+        [33554432, -171, -1],
+        [65535, 0, 0],
+    ];
+    for p in face(&k, &pts) {
+        check_polygon(&p).unwrap();
+    }
+}
+
+/// The same, reduced: five corners in one plane, every turn clockwise, winding twice.
+#[test]
+fn fuzz_double_winding_reduced() {
+    let k = kernel();
+    let pts = [
+        [327679, -1, -1],
+        [-16514824, -1, -1],
+        [33554176, 33554432, -1],
+        [33554432, -171, -1],
+        [65535, 0, -1],
+    ];
+    let polys = face(&k, &pts);
+    check_all(&polys);
+    // Not a simple outline: it is dropped, never returned as one convex polygon.
+    assert!(polys.len() != 1);
+}
