@@ -99,16 +99,16 @@ pub(crate) fn abuffer(
             }
             let l = looks[face].get_or_insert_with(|| look(face as u32));
             let alpha = l.alpha.clamp(0.0, 1.0);
-            for k in 0..3 {
-                acc[k] += trans * alpha * l.color[k];
+            for (a, c) in acc.iter_mut().zip(l.color) {
+                *a += trans * alpha * c;
             }
             trans *= 1.0 - alpha;
             if alpha >= 1.0 {
                 break;
             }
         }
-        for k in 0..3 {
-            acc[k] += trans * background[k];
+        for (a, b) in acc.iter_mut().zip(background) {
+            *a += trans * b;
         }
         colors[i] = acc;
     }

@@ -93,37 +93,21 @@ impl Segment {
     /// The segment from `a` to `b`.
     pub fn new(a: DVec3, b: DVec3) -> Segment {
         let d = b - a;
-        Segment {
-            o: a,
-            d,
-            inv: DVec3::ONE / d,
-        }
+        // A zero component gets a huge finite reciprocal instead of ∞, so the slab test
+        // never computes 0 · ∞: a ray inside the slab gets an interval around 0.
+        let inv = DVec3::from_array(d.to_array().map(|c| if c == 0.0 { 1e300 } else { 1.0 / c }));
+        Segment { o: a, d, inv }
     }
 
-    /// Entry parameter of the segment into the box, or `None` when it misses (with the
-    /// interval widened by a relative 1e-9, so rounding never loses a hit).
+    /// Entry parameter of the segment into the box, or `None` when it misses. The
+    /// interval is widened by 1e-9 (the boxes are inflated as well), so rounding never
+    /// loses a hit.
     #[inline]
     pub fn enter(&self, n: &Node) -> Option<f64> {
-        let (mut t0, mut t1) = (-1e-9f64, 1.0 + 1e-9f64);
-        for k in 0..3 {
-            let (o, d, inv) = (self.o[k], self.d[k], self.inv[k]);
-            if d == 0.0 {
-                if o < n.lo[k] || o > n.hi[k] {
-                    return None;
-                }
-                continue;
-            }
-            let (mut a, mut b) = ((n.lo[k] - o) * inv, (n.hi[k] - o) * inv);
-            if a > b {
-                std::mem::swap(&mut a, &mut b);
-            }
-            let slack = 1e-9 * (a.abs().max(b.abs()) + 1.0);
-            t0 = t0.max(a - slack);
-            t1 = t1.min(b + slack);
-            if t0 > t1 {
-                return None;
-            }
-        }
-        Some(t0)
+        let a = (n.lo - self.o) * self.inv;
+        let b = (n.hi - self.o) * self.inv;
+        let t0 = a.min(b).max_element().max(0.0);
+        let t1 = a.max(b).min_element().min(1.0);
+        (t0 <= t1 + 1e-9).then_some(t0)
     }
 }

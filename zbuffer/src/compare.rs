@@ -4,6 +4,9 @@ use std::collections::BTreeMap;
 
 use crate::image::{IdImage, Mask};
 
+/// A segment in pixel coordinates: `(start, end)`, each `[x, y]`.
+pub type Segment2 = ([f64; 2], [f64; 2]);
+
 /// The result of [`compare`].
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Comparison {
@@ -83,7 +86,7 @@ pub fn default_band_tolerance(width: u32, height: u32) -> f64 {
 /// Marks the pixels whose centre lies within `tolerance_px` of any of the segments
 /// `edges` (pixel coordinates, y down). Non-finite segments and a non-finite or negative
 /// tolerance mark nothing.
-pub fn edge_band(edges: &[([f64; 2], [f64; 2])], width: u32, height: u32, tolerance_px: f64) -> Mask {
+pub fn edge_band(edges: &[Segment2], width: u32, height: u32, tolerance_px: f64) -> Mask {
     let mut m = Mask::new(width, height);
     if !(tolerance_px >= 0.0 && tolerance_px.is_finite()) {
         return m;
@@ -181,7 +184,11 @@ mod tests {
 
     #[test]
     fn band_matches_pointwise_distance() {
-        let edges = [([1.3, 2.2], [17.6, 9.9]), ([4.0, 4.0], [4.0, 12.5]), ([2.0, 7.5], [15.0, 7.5])];
+        let edges = [
+            ([1.3, 2.2], [17.6, 9.9]),
+            ([4.0, 4.0], [4.0, 12.5]),
+            ([2.0, 7.5], [15.0, 7.5]),
+        ];
         let tol = 0.8;
         let m = edge_band(&edges, 20, 16, tol);
         for y in 0..16 {
@@ -208,14 +215,20 @@ mod tests {
         a.ids = vec![1, 2, 2];
         b.ids = vec![1, 2, 3];
         let c = compare(&a, &b, None);
-        assert_eq!((c.pixels, c.mismatches, c.mismatches_outside_band), (3, 1, 1));
+        assert_eq!(
+            (c.pixels, c.mismatches, c.mismatches_outside_band),
+            (3, 1, 1)
+        );
         assert_eq!(c.per_face[&1], (0, 1));
         assert_eq!(c.per_face[&2], (1, 2));
         assert_eq!(c.per_face[&3], (1, 1));
         let mut band = Mask::new(3, 1);
         band.bits[2] = true;
         let c = compare(&a, &b, Some(&band));
-        assert_eq!((c.mismatches, c.mismatches_outside_band, c.band_pixels), (1, 0, 1));
+        assert_eq!(
+            (c.mismatches, c.mismatches_outside_band, c.band_pixels),
+            (1, 0, 1)
+        );
         assert!(c.agrees());
         let small = IdImage::new(2, 1);
         assert_eq!(compare(&a, &small, None).mismatches, 3);

@@ -101,8 +101,8 @@ impl Depth for D24Depth {
     const FAR: u32 = u32::MAX;
     #[inline]
     fn store(d: f64) -> u32 {
-        // `as` saturates and maps NaN to 0; clamp keeps the value inside [0, 2²⁴ − 1].
-        (d.clamp(0.0, 1.0) * MAX24).round() as u32
+        // Round half up (the value is non-negative); `as` maps NaN to 0.
+        (d.clamp(0.0, 1.0) * MAX24 + 0.5) as u32
     }
     #[inline]
     fn load(s: u32) -> f64 {
@@ -121,7 +121,7 @@ impl Depth for D16Depth {
     const FAR: u16 = u16::MAX;
     #[inline]
     fn store(d: f64) -> u16 {
-        (d.clamp(0.0, 1.0) * 65535.0).round() as u16
+        (d.clamp(0.0, 1.0) * 65535.0 + 0.5) as u16
     }
     #[inline]
     fn load(s: u16) -> f64 {

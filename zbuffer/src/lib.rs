@@ -65,7 +65,7 @@ mod triangulate;
 mod warnock;
 mod zbuf;
 
-pub use compare::{compare, default_band_tolerance, edge_band, Comparison};
+pub use compare::{compare, default_band_tolerance, edge_band, Comparison, Segment2};
 pub use depth::DepthFormat;
 pub use error::ZError;
 pub use image::{rgb_to_u8, to_u8, ColorImage, DepthImage, IdImage, Mask, NO_FACE};

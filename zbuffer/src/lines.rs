@@ -39,7 +39,11 @@ pub fn bresenham(x0: i64, y0: i64, x1: i64, y1: i64, mut plot: impl FnMut(i64, i
     let (dx, dy) = (x1 - x0, y1 - y0);
     let steep = dy.abs() > dx.abs();
     // Work in (major, minor) coordinates.
-    let (a0, b0, da, db) = if steep { (y0, x0, dy, dx) } else { (x0, y0, dx, dy) };
+    let (a0, b0, da, db) = if steep {
+        (y0, x0, dy, dx)
+    } else {
+        (x0, y0, dx, dy)
+    };
     let n = da.abs();
     let sa = if da >= 0 { 1 } else { -1 };
     // minor(k) = b0 + floor((2·k·db + n) / (2n)); r is the remainder, in [0, 2n).
@@ -79,7 +83,11 @@ pub fn dda(x0: f64, y0: f64, x1: f64, y1: f64, max_steps: u64, mut plot: impl Fn
     }
     let (dx, dy) = (x1 - x0, y1 - y0);
     let steep = dy.abs() > dx.abs();
-    let (a0, b0, a1, da, db) = if steep { (y0, x0, y1, dy, dx) } else { (x0, y0, x1, dx, dy) };
+    let (a0, b0, a1, da, db) = if steep {
+        (y0, x0, y1, dy, dx)
+    } else {
+        (x0, y0, x1, dx, dy)
+    };
     let m = if da == 0.0 { 0.0 } else { db / da };
     let (i0, i1) = (a0.floor(), a1.floor());
     let step = if i1 >= i0 { 1.0 } else { -1.0 };
@@ -132,10 +140,20 @@ pub fn wireframe(
     let frame = Frame::new(scene, camera, opts)?;
     let (w, h) = (frame.width, frame.height);
     let mut edges = Vec::new();
-    prepare(scene, &frame, opts.cull_back_faces, Collect::Edges(&mut edges));
+    prepare(
+        scene,
+        &frame,
+        opts.cull_back_faces,
+        Collect::Edges(&mut edges),
+    );
     let zb = if lines.hidden_line {
         let mut prep = Default::default();
-        prepare(scene, &frame, opts.cull_back_faces, Collect::Triangles(&mut prep));
+        prepare(
+            scene,
+            &frame,
+            opts.cull_back_faces,
+            Collect::Triangles(&mut prep),
+        );
         Some(zbuffer(&prep, w, h, opts.depth))
     } else {
         None
@@ -219,7 +237,7 @@ fn clip_to_picture(
             }
         }
     }
-    if !(t0 <= t1) {
+    if t0.is_nan() || t1.is_nan() || t0 > t1 {
         return None;
     }
     let at = |t: f64| ScreenVert {

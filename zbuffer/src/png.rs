@@ -112,6 +112,11 @@ pub fn diff_png(a: &IdImage, b: &IdImage, band: Option<&Mask>) -> Result<Vec<u8>
 }
 
 /// Writes [`diff_png`] to a file.
-pub fn save_diff_png(a: &IdImage, b: &IdImage, band: Option<&Mask>, path: &Path) -> Result<(), ZError> {
+pub fn save_diff_png(
+    a: &IdImage,
+    b: &IdImage,
+    band: Option<&Mask>,
+    path: &Path,
+) -> Result<(), ZError> {
     save(path, &diff_png(a, b, band)?)
 }

@@ -53,6 +53,7 @@ pub(crate) struct Output {
     pub culled_faces: usize,
 }
 
+#[derive(Clone, Copy)]
 struct Tri {
     p: [DVec3; 3],
     face: u32,
@@ -101,14 +102,21 @@ fn check_small(what: &'static str, p: DVec3) -> Result<(), ZError> {
 }
 
 fn flush(p: DVec3) -> DVec3 {
-    DVec3::from_array(p.to_array().map(|v| if v.abs() < MIN_RAYCAST_COORD { 0.0 } else { v }))
+    DVec3::from_array(
+        p.to_array()
+            .map(|v| if v.abs() < MIN_RAYCAST_COORD { 0.0 } else { v }),
+    )
 }
 
 /// Screen direction signs of the edge `a → b` from clip coordinates, computed in a
 /// canonical order so that `b → a` gets exactly the opposite signs.
 fn edge_dir(frame: &Frame, a: DVec3, b: DVec3) -> (i8, i8) {
     let key = |v: DVec3| v.to_array().map(f64::to_bits);
-    let (p, q, flip) = if key(a) <= key(b) { (a, b, 1) } else { (b, a, -1) };
+    let (p, q, flip) = if key(a) <= key(b) {
+        (a, b, 1)
+    } else {
+        (b, a, -1)
+    };
     let (cp, cq): (DVec4, DVec4) = (frame.clip(p), frame.clip(q));
     // Along the visible part of the edge, ndc moves as these cross terms say (the
     // factor 1/(w_p w_q) is positive once clipped to w > 0).
@@ -146,8 +154,11 @@ pub(crate) fn raycast(scene: &Scene, frame: &Frame, cull: bool) -> Result<Output
         }
     }
     let boxes: Vec<[DVec3; 3]> = tris.iter().map(|t| t.p).collect();
-    let bvh = Bvh::build(&boxes);
+    let mut bvh = Bvh::build(&boxes);
     drop(boxes);
+    // Store the triangles in the hierarchy's leaf order, so a leaf's are contiguous.
+    let tris: Vec<Tri> = bvh.order.iter().map(|&k| tris[k as usize]).collect();
+    bvh.order = Vec::new();
     let inv = frame.vp.inverse();
     let (w, h) = (frame.width as usize, frame.height as usize);
     let mut out = Output {
@@ -157,7 +168,7 @@ pub(crate) fn raycast(scene: &Scene, frame: &Frame, cull: bool) -> Result<Output
         exact_fallbacks: 0,
         working_bytes: tris.len() * std::mem::size_of::<Tri>()
             + bvh.nodes.len() * std::mem::size_of::<crate::bvh::Node>()
-            + bvh.order.len() * 4,
+            + tris.len() * 4,
         triangles: tris.len(),
         culled_faces,
     };
@@ -181,7 +192,11 @@ pub(crate) fn raycast(scene: &Scene, frame: &Frame, cull: bool) -> Result<Output
             let best = cast(&tris, &bvh, &seg, &mut stack, &mut out);
             if let Some(hit) = best {
                 let t = hit.an / (hit.an - hit.af);
-                let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 0.0 };
+                let t = if t.is_finite() {
+                    t.clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
                 let c = frame.clip(pn + (pf - pn) * t);
                 let d = ((c.z / c.w + 1.0) * 0.5).clamp(0.0, 1.0);
                 out.ids[j * w + i] = tris[hit.tri as usize].face;
@@ -211,7 +226,7 @@ fn cast(
         }
         let node = &bvh.nodes[n as usize];
         if node.count > 0 {
-            for &k in &bvh.order[node.first as usize..(node.first + node.count) as usize] {
+            for k in node.first..node.first + node.count {
                 out.tests += 1;
                 let Some(hit) = test(&tris[k as usize], k, pn, pf) else {
                     continue;
@@ -253,23 +268,30 @@ fn cast(
 #[inline]
 fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3) -> Option<Hit> {
     let [a, b, c] = tri.p;
-    let e = [
-        orient3d(c3(pn), c3(pf), c3(a), c3(b)),
-        orient3d(c3(pn), c3(pf), c3(b), c3(c)),
-        orient3d(c3(pn), c3(pf), c3(c), c3(a)),
-    ]
-    .map(sgn);
-    let s = *e.iter().find(|&&x| x != 0)?;
+    let (cn, cf) = (c3(pn), c3(pf));
+    let corners = [c3(a), c3(b), c3(c)];
+    // Edge signs, stopping at the first edge with the other sign.
+    let mut e = [0i8; 3];
+    let mut s = 0i8;
+    for i in 0..3 {
+        e[i] = sgn(orient3d(cn, cf, corners[i], corners[(i + 1) % 3]));
+        if e[i] != 0 {
+            if s == 0 {
+                s = e[i];
+            } else if e[i] != s {
+                return None;
+            }
+        }
+    }
+    if s == 0 {
+        return None; // the line lies in the triangle's plane, or the triangle is a point
+    }
     // On screen the triangle's orientation is the opposite of `s`.
     let screen_ccw = s < 0;
-    for i in 0..3 {
-        if e[i] == s {
+    for (&ei, &(dx, dy)) in e.iter().zip(&tri.dir) {
+        if ei != 0 {
             continue;
         }
-        if e[i] != 0 {
-            return None;
-        }
-        let (dx, dy) = tri.dir[i];
         let top_left = if screen_ccw {
             dy < 0 || (dy == 0 && dx > 0)
         } else {
@@ -347,6 +369,9 @@ fn exact_sign(tris: &[Tri], x: &Hit, y: &Hit, pn: DVec3, pf: DVec3) -> i32 {
     };
     let (xn, xf) = alphas(x);
     let (yn, yf) = alphas(y);
-    let d = exact::sum(&exact::product(&xn, &yf), &exact::negate(&exact::product(&yn, &xf)));
+    let d = exact::sum(
+        &exact::product(&xn, &yf),
+        &exact::negate(&exact::product(&yn, &xf)),
+    );
     exact::sign(&d)
 }

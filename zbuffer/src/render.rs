@@ -3,13 +3,14 @@
 use std::fmt;
 use std::str::FromStr;
 
-use limn_scene::{shade_face, Camera, Scene};
+use glam::DVec3;
+use limn_scene::{polygon_normal, shade_face, shade_point, Camera, Rgb, Scene};
 use thiserror::Error;
 
 use crate::abuffer::{abuffer, FaceLook};
 use crate::image::{rgb_to_u8, ColorImage, DepthImage, IdImage, NO_FACE};
 use crate::setup::{prepare, Collect, Frame, Prepared};
-use crate::{raycast, scanline, warnock, zbuf, DepthFormat, ZError};
+use crate::{raycast, scanline, warnock, zbuf, DepthFormat, Segment2, ZError};
 
 /// An image-space hidden-surface method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -181,7 +182,7 @@ pub fn render(
                     m.opacity.clamp(0.0, 1.0)
                 };
                 FaceLook {
-                    color: shade_face(scene, face, eye),
+                    color: flat_color(scene, face, eye),
                     alpha,
                 }
             };
@@ -195,9 +196,19 @@ pub fn render(
 }
 
 /// Culls, clips and projects for the screen-space methods.
-fn prepared(scene: &Scene, frame: &Frame, opts: &RenderOptions, stats: &mut RenderStats) -> Prepared {
+fn prepared(
+    scene: &Scene,
+    frame: &Frame,
+    opts: &RenderOptions,
+    stats: &mut RenderStats,
+) -> Prepared {
     let mut prep = Prepared::default();
-    prepare(scene, frame, opts.cull_back_faces, Collect::Triangles(&mut prep));
+    prepare(
+        scene,
+        frame,
+        opts.cull_back_faces,
+        Collect::Triangles(&mut prep),
+    );
     stats.triangles = prep.tris.len();
     stats.clipped_triangles = prep.clipped_tris;
     stats.culled_faces = prep.culled_faces;
@@ -217,16 +228,32 @@ fn finish(
     let pixels = match colors {
         Some(c) => c.into_iter().map(rgb_to_u8).collect(),
         None => {
-            // Shade each visible face once.
-            let mut palette: Vec<Option<[u8; 3]>> = vec![None; scene.faces.len()];
+            // Shade each visible face once, in face order (sequential memory access).
+            let mut visible = vec![false; scene.faces.len()];
+            for &id in &ids {
+                if id != NO_FACE {
+                    visible[id as usize] = true;
+                }
+            }
+            let palette: Vec<[u8; 3]> = visible
+                .iter()
+                .enumerate()
+                .map(|(f, &v)| {
+                    if v {
+                        rgb_to_u8(flat_color(scene, f as u32, frame.camera.eye))
+                    } else {
+                        [0; 3]
+                    }
+                })
+                .collect();
             let bg = rgb_to_u8(opts.background);
             ids.iter()
                 .map(|&id| {
                     if id == NO_FACE {
-                        return bg;
+                        bg
+                    } else {
+                        palette[id as usize]
                     }
-                    *palette[id as usize]
-                        .get_or_insert_with(|| rgb_to_u8(shade_face(scene, id, frame.camera.eye)))
                 })
                 .collect()
         }
@@ -251,6 +278,22 @@ fn finish(
     }
 }
 
+/// `shade_face(scene, face, eye)`, computed without allocating for triangles (the same
+/// operations in the same order, so the same bits).
+fn flat_color(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
+    let f = &scene.faces[face as usize];
+    let m = &scene.materials[f.material as usize];
+    if m.illum == 0 {
+        return m.kd;
+    }
+    if let [a, b, c] = f.vertices[..] {
+        let pts = [a, b, c].map(|v| scene.vertices[v as usize]);
+        let centre = pts.iter().copied().sum::<DVec3>() / 3.0;
+        return shade_point(m, centre, polygon_normal(&pts), eye, &scene.lights);
+    }
+    shade_face(scene, face, eye)
+}
+
 /// The projected edges whose neighbourhood is ambiguous between float and exact
 /// answers: every face's outline and the edges cut by the near and far planes (after
 /// culling and clipping as [`render`] does), in pixel coordinates. Triangulation
@@ -260,10 +303,15 @@ pub fn scene_edges(
     scene: &Scene,
     camera: &Camera,
     opts: &RenderOptions,
-) -> Result<Vec<([f64; 2], [f64; 2])>, ZError> {
+) -> Result<Vec<Segment2>, ZError> {
     let frame = Frame::new(scene, camera, opts)?;
     let mut edges = Vec::new();
-    prepare(scene, &frame, opts.cull_back_faces, Collect::Edges(&mut edges));
+    prepare(
+        scene,
+        &frame,
+        opts.cull_back_faces,
+        Collect::Edges(&mut edges),
+    );
     Ok(edges
         .into_iter()
         .map(|(a, b, _)| ([a.x, a.y], [b.x, b.y]))

@@ -83,7 +83,8 @@ impl Frame {
     fn outcode(&self, c: DVec4) -> u8 {
         let mut o = 0;
         for (k, plane) in PLANES.iter().enumerate() {
-            if !(self.plane_dist(*plane, c) >= 0.0) {
+            let d = self.plane_dist(*plane, c);
+            if d.is_nan() || d < 0.0 {
                 o |= 1 << k;
             }
         }
@@ -105,7 +106,7 @@ impl Frame {
 
 fn check_coord(what: &'static str, p: DVec3) -> Result<(), ZError> {
     for v in p.to_array() {
-        if !(v.abs() <= MAX_COORD) {
+        if v.is_nan() || v.abs() > MAX_COORD {
             return Err(ZError::OutOfRange { what, value: v });
         }
     }
@@ -232,7 +233,7 @@ fn clip_polygon(frame: &Frame, mask: u8, poly: &mut Vec<(DVec4, EdgeKind)>) {
             let ds = frame.plane_dist(*plane, s);
             let de = frame.plane_dist(*plane, e);
             if de >= 0.0 {
-                if !(ds >= 0.0) {
+                if ds.is_nan() || ds < 0.0 {
                     next.push((intersect(s, ds, e, de), ks));
                 }
                 next.push((e, ke));
@@ -313,7 +314,7 @@ pub(crate) fn prepare(scene: &Scene, frame: &Frame, cull: bool, mut collect: Col
 }
 
 fn emit(frame: &Frame, face: u32, poly: &[(DVec4, EdgeKind)], collect: &mut Collect<'_>) {
-    if poly.len() < 3 || poly.iter().any(|(c, _)| !(c.w > 0.0) || !c.is_finite()) {
+    if poly.len() < 3 || poly.iter().any(|(c, _)| !c.is_finite() || c.w <= 0.0) {
         return;
     }
     match collect {

@@ -44,7 +44,13 @@ pub(crate) struct TriSetup {
 impl TriSetup {
     /// Sets up a triangle for a `width × height` picture; `None` when it has zero area,
     /// is not finite, or covers no row or column of the picture.
-    pub fn new(a: ScreenVert, b: ScreenVert, c: ScreenVert, width: u32, height: u32) -> Option<Self> {
+    pub fn new(
+        a: ScreenVert,
+        b: ScreenVert,
+        c: ScreenVert,
+        width: u32,
+        height: u32,
+    ) -> Option<Self> {
         let (mut p, mut q, r) = (a, b, c);
         let pt = |s: ScreenVert| Coord { x: s.x, y: s.y };
         let o = orient2d(pt(p), pt(q), pt(r));
@@ -55,7 +61,10 @@ impl TriSetup {
             std::mem::swap(&mut p, &mut q);
         }
         let vs = [p, q, r];
-        if vs.iter().any(|s| !(s.x.is_finite() && s.y.is_finite() && s.d.is_finite())) {
+        if vs
+            .iter()
+            .any(|s| !(s.x.is_finite() && s.y.is_finite() && s.d.is_finite()))
+        {
             return None;
         }
         let ymin = p.y.min(q.y).min(r.y);
@@ -177,14 +186,29 @@ impl TriSetup {
                 continue;
             }
             let xs = a.x + (b.x - a.x) * ((yc - a.y) / (b.y - a.y));
-            let pass = |k: u32| self.pass(i, Coord { x: k as f64 + 0.5, y: yc });
-            let guess = if xs.is_finite() { xs - 0.5 } else { lo as f64 };
+            let pass = |k: u32| {
+                self.pass(
+                    i,
+                    Coord {
+                        x: k as f64 + 0.5,
+                        y: yc,
+                    },
+                )
+            };
+            // Clamped first, so the integer conversions below are exact floors.
+            let guess = (xs - 0.5).clamp(lo as f64 - 1.0, hi as f64 + 1.0);
+            let g = if guess.is_nan() {
+                lo as f64
+            } else {
+                floor(guess)
+            };
             if b.y < a.y {
                 // The test passes to the right of the edge: first passing column.
-                lo = first_true(lo, hi, guess.ceil(), pass);
+                let g = if g < guess { g + 1.0 } else { g };
+                lo = first_true(lo, hi, g, pass);
             } else {
                 // Passes to the left: first failing column ends the span.
-                hi = first_true(lo, hi, guess.floor() + 1.0, |k| !pass(k));
+                hi = first_true(lo, hi, g + 1.0, |k| !pass(k));
             }
         }
         (lo < hi).then_some((lo, hi))
@@ -210,14 +234,28 @@ impl TriSetup {
     }
 }
 
+/// `x.floor()` for |x| < 2⁶², without a call into libm (the baseline x86-64 target has
+/// no rounding instruction).
+#[inline]
+fn floor(x: f64) -> f64 {
+    let t = x as i64 as f64;
+    if t > x {
+        t - 1.0
+    } else {
+        t
+    }
+}
+
 /// Indices `k` in `[0, n)` whose centre `k + ½` may lie in `[lo, hi]` (a superset by at
 /// most one on each side), or `None`.
 fn index_range(lo: f64, hi: f64, n: u32) -> Option<(u32, u32)> {
-    let a = (lo - 0.5).ceil() - 1.0;
-    let b = (hi - 0.5).floor() + 1.0;
+    // Clamp first so that the conversions are exact; floor(lo − ½) may be one below
+    // the ceiling, which the superset allows.
+    let a = floor((lo - 0.5).clamp(-1.0, n as f64)) - 1.0;
+    let b = floor((hi - 0.5).clamp(-2.0, n as f64)) + 1.0;
     let a = a.max(0.0);
     let b = b.min(n as f64 - 1.0);
-    (a <= b).then(|| (a as u32, b as u32))
+    (a <= b).then_some((a as u32, b as u32))
 }
 
 /// The first `k` in `[lo, hi)` with `pred(k)` (`pred` false then true), or `hi`; starts

@@ -167,7 +167,10 @@ mod tests {
         assert!((area2(&pts, &tris) - 6.0).abs() < 1e-12);
         for t in &tris {
             let (a, b, c) = (pts[t[0]], pts[t[1]], pts[t[2]]);
-            assert!((b - a).cross(c - a).z >= 0.0, "every triangle keeps the winding");
+            assert!(
+                (b - a).cross(c - a).z >= 0.0,
+                "every triangle keeps the winding"
+            );
         }
     }
 

@@ -96,7 +96,11 @@ impl Ctx<'_> {
             let class = match s.classify_corners(corners) {
                 Some(false) => continue,
                 Some(true) => Class::Surrounding,
-                None if bx0 >= x0 as f64 && bx1 <= x1 as f64 && by0 >= y0 as f64 && by1 <= y1 as f64 => {
+                None if bx0 >= x0 as f64
+                    && bx1 <= x1 as f64
+                    && by0 >= y0 as f64
+                    && by1 <= y1 as f64 =>
+                {
                     Class::Contained
                 }
                 None => Class::Intersecting,

@@ -55,7 +55,13 @@ fn run<D: Depth>(prep: &Prepared, width: u32, height: u32) -> Buffers {
     let depths = zb
         .iter()
         .zip(&ids)
-        .map(|(&z, &id)| if id == NO_FACE { f64::INFINITY } else { D::load(z) })
+        .map(|(&z, &id)| {
+            if id == NO_FACE {
+                f64::INFINITY
+            } else {
+                D::load(z)
+            }
+        })
         .collect();
     Buffers {
         ids,

@@ -25,13 +25,26 @@ fn wild_scene(rng: &mut Lcg, n: usize) -> Scene {
     let mut s = scene_with(&[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
     for k in 0..n {
         let pts: Vec<DVec3> = (0..3)
-            .map(|_| DVec3::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5), rng.range(-1.5, 1.5)))
+            .map(|_| {
+                DVec3::new(
+                    rng.range(-1.5, 1.5),
+                    rng.range(-1.5, 1.5),
+                    rng.range(-1.5, 1.5),
+                )
+            })
             .collect();
         poly(&mut s, &pts, (k % 3) as u32);
     }
     grid(&mut s, 4, 0.3, -0.5, rng, 1);
-    let l = [(0.0, 0.0), (1.0, 0.0), (1.0, 0.4), (0.4, 0.4), (0.4, 1.0), (0.0, 1.0)]
-        .map(|(x, y)| DVec3::new(x - 0.5, y - 0.5, 0.7));
+    let l = [
+        (0.0, 0.0),
+        (1.0, 0.0),
+        (1.0, 0.4),
+        (0.4, 0.4),
+        (0.4, 1.0),
+        (0.0, 1.0),
+    ]
+    .map(|(x, y)| DVec3::new(x - 0.5, y - 0.5, 0.7));
     poly(&mut s, &l, 2);
     s
 }

@@ -7,8 +7,8 @@ use common::{poly, scene_with};
 use glam::DVec3;
 use limn_scene::{Camera, Scene};
 use limn_zbuffer::{
-    compare, default_band_tolerance, edge_band, render, scene_edges, DepthFormat, IdImage,
-    Mask, Method, RenderOptions, NO_FACE,
+    compare, default_band_tolerance, edge_band, render, scene_edges, DepthFormat, IdImage, Mask,
+    Method, RenderOptions, NO_FACE,
 };
 
 const W: u32 = 64;
@@ -19,7 +19,12 @@ fn band(scene: &Scene, camera: &Camera, opts: &RenderOptions) -> Mask {
 }
 
 /// Mismatches outside the band for each depth format, and for ray casting.
-fn wrong_pixels(scene: &Scene, camera: &Camera, near_far: Option<(f64, f64)>, truth: &IdImage) -> (Vec<usize>, usize) {
+fn wrong_pixels(
+    scene: &Scene,
+    camera: &Camera,
+    near_far: Option<(f64, f64)>,
+    truth: &IdImage,
+) -> (Vec<usize>, usize) {
     let mut per_format = Vec::new();
     let base = RenderOptions {
         near_far,
@@ -37,7 +42,10 @@ fn wrong_pixels(scene: &Scene, camera: &Camera, near_far: Option<(f64, f64)>, tr
         }
     }
     let r = render(scene, camera, Method::RayCast, &base).unwrap();
-    (per_format, compare(truth, &r.ids, Some(&band)).mismatches_outside_band)
+    (
+        per_format,
+        compare(truth, &r.ids, Some(&band)).mismatches_outside_band,
+    )
 }
 
 /// Two unit squares crossing at 1e-7 rad along a line that falls between pixel
@@ -52,7 +60,8 @@ fn crossing_at_1e7_radians() {
     let half = 3.0 * (22.5f64).to_radians().tan();
     let xc = (40.25 / W as f64 * 2.0 - 1.0) * half;
     let t = (1e-7f64).tan();
-    let a = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(x, y)| DVec3::new(x, y, 0.0));
+    let a =
+        [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(x, y)| DVec3::new(x, y, 0.0));
     let b = a.map(|p| DVec3::new(p.x, p.y, (p.x - xc) * t));
     poly(&mut s, &a, 0);
     poly(&mut s, &b, 1);
@@ -71,7 +80,11 @@ fn crossing_at_1e7_radians() {
     assert_eq!(raycast, 0, "ray casting is exact");
     assert_eq!(formats[0], 0, "f64 resolves the crossing");
     for (k, &wrong) in formats.iter().enumerate().skip(1) {
-        assert!(wrong > 200, "{:?} should fight: {wrong}", DepthFormat::ALL[k]);
+        assert!(
+            wrong > 200,
+            "{:?} should fight: {wrong}",
+            DepthFormat::ALL[k]
+        );
     }
 }
 
@@ -83,7 +96,8 @@ fn crossing_at_1e7_radians() {
 fn scene_offset_by_1e7() {
     let mut s = scene_with(&[[1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
     let z = -1.0e7;
-    let sq = |r: f64, z: f64| [(-r, -r), (r, -r), (r, r), (-r, r)].map(|(x, y)| DVec3::new(x, y, z));
+    let sq =
+        |r: f64, z: f64| [(-r, -r), (r, -r), (r, r), (-r, r)].map(|(x, y)| DVec3::new(x, y, z));
     poly(&mut s, &sq(2.0e6, z), 0); // near, first
     poly(&mut s, &sq(3.5e6, z - 100.0), 1); // far, later, larger
     let camera = Camera::new(DVec3::ZERO, DVec3::new(0.0, 0.0, -1.0), W, W);
@@ -110,7 +124,11 @@ fn scene_offset_by_1e7() {
     assert_eq!(raycast, 0);
     assert_eq!(formats[0], 0);
     for (k, &wrong) in formats.iter().enumerate().skip(1) {
-        assert!(wrong > 500, "{:?} should fight: {wrong}", DepthFormat::ALL[k]);
+        assert!(
+            wrong > 500,
+            "{:?} should fight: {wrong}",
+            DepthFormat::ALL[k]
+        );
     }
     // Near and far chosen from the scene: every format is right.
     let (formats, raycast) = wrong_pixels(&s, &camera, None, &truth);

@@ -15,7 +15,9 @@ fn bres(a: (i64, i64), b: (i64, i64)) -> Vec<(i64, i64)> {
 fn dda_centres(a: (i64, i64), b: (i64, i64)) -> Vec<(i64, i64)> {
     let mut v = Vec::new();
     let c = |p: i64| p as f64 + 0.5;
-    dda(c(a.0), c(a.1), c(b.0), c(b.1), u64::MAX, |x, y| v.push((x, y)));
+    dda(c(a.0), c(a.1), c(b.0), c(b.1), u64::MAX, |x, y| {
+        v.push((x, y))
+    });
     v
 }
 
@@ -32,7 +34,10 @@ fn bresenham_hits_both_endpoints_and_is_connected() {
         assert_eq!(line.len() as i64, n + 1, "one pixel per major step");
         for w in line.windows(2) {
             let (dx, dy) = (w[1].0 - w[0].0, w[1].1 - w[0].1);
-            assert!(dx.abs() <= 1 && dy.abs() <= 1 && (dx, dy) != (0, 0), "8-connected");
+            assert!(
+                dx.abs() <= 1 && dy.abs() <= 1 && (dx, dy) != (0, 0),
+                "8-connected"
+            );
         }
         // The same pixels drawn in the other direction.
         let mut back = bres(b, a);
@@ -50,7 +55,10 @@ fn bresenham_hits_both_endpoints_and_is_connected() {
             }
         }
     }
-    assert_eq!(bres((3, 7), (9, 11)), vec![(3, 7), (4, 8), (5, 8), (6, 9), (7, 10), (8, 10), (9, 11)]);
+    assert_eq!(
+        bres((3, 7), (9, 11)),
+        vec![(3, 7), (4, 8), (5, 8), (6, 9), (7, 10), (8, 10), (9, 11)]
+    );
 }
 
 #[test]
@@ -68,7 +76,8 @@ fn dda_and_bresenham_agree() {
         } else {
             (b.1 - a.1, b.0 - a.0)
         };
-        let ties = da != 0 && (0..=da.abs()).any(|k| (2 * k * db).rem_euclid(2 * da.abs()) == da.abs());
+        let ties =
+            da != 0 && (0..=da.abs()).any(|k| (2 * k * db).rem_euclid(2 * da.abs()) == da.abs());
         if ties {
             with_ties += 1;
             for (p, q) in br.iter().zip(&dd) {
@@ -93,7 +102,14 @@ fn hidden_lines_of_a_cube_are_removed() {
             ))
         })
         .collect();
-    for q in [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]] {
+    for q in [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ] {
         s.add_face(&q.map(|k| v[k]), 0, 0).unwrap();
     }
     let camera = cam(DVec3::new(3.0, 2.5, 4.0), 120, 100);
@@ -107,12 +123,43 @@ fn hidden_lines_of_a_cube_are_removed() {
     let hidden_mid = px(DVec3::new(0.0, -1.0, -1.0));
     let visible_mid = px(DVec3::new(0.0, 1.0, 1.0));
     for algorithm in [LineAlgorithm::Bresenham, LineAlgorithm::Dda] {
-        let all = wireframe(&s, &camera, &opts, &LineOptions { algorithm, hidden_line: false, ..LineOptions::default() }).unwrap();
-        let vis = wireframe(&s, &camera, &opts, &LineOptions { algorithm, ..LineOptions::default() }).unwrap();
+        let all = wireframe(
+            &s,
+            &camera,
+            &opts,
+            &LineOptions {
+                algorithm,
+                hidden_line: false,
+                ..LineOptions::default()
+            },
+        )
+        .unwrap();
+        let vis = wireframe(
+            &s,
+            &camera,
+            &opts,
+            &LineOptions {
+                algorithm,
+                ..LineOptions::default()
+            },
+        )
+        .unwrap();
         assert!(vis.covered() < all.covered());
-        assert_ne!(all.get(hidden_mid.0, hidden_mid.1), Some(NO_FACE), "{algorithm:?}");
-        assert_eq!(vis.get(hidden_mid.0, hidden_mid.1), Some(NO_FACE), "{algorithm:?}");
-        assert_ne!(vis.get(visible_mid.0, visible_mid.1), Some(NO_FACE), "{algorithm:?}");
+        assert_ne!(
+            all.get(hidden_mid.0, hidden_mid.1),
+            Some(NO_FACE),
+            "{algorithm:?}"
+        );
+        assert_eq!(
+            vis.get(hidden_mid.0, hidden_mid.1),
+            Some(NO_FACE),
+            "{algorithm:?}"
+        );
+        assert_ne!(
+            vis.get(visible_mid.0, visible_mid.1),
+            Some(NO_FACE),
+            "{algorithm:?}"
+        );
         // Nine visible edges of a cube seen from a corner direction: long lines.
         assert!(vis.covered() > 9 * 20);
     }

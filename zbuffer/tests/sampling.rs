@@ -25,7 +25,7 @@ fn shared_edges_cover_each_centre_exactly_once_in_2d() {
         [[2.5, 2.5], [30.5, 30.5], [30.5, 2.5], [2.5, 30.5]], // diagonal through centres
         [[1.0, 10.5], [38.0, 10.5], [20.0, 1.0], [20.0, 30.0]], // horizontal through centres
         [[12.5, 0.3], [12.5, 35.0], [1.0, 17.0], [39.0, 17.0]], // vertical through centres
-        [[3.5, 4.5], [33.5, 28.5], [35.0, 2.0], [1.0, 33.0]],  // slope 4/5 through centres
+        [[3.5, 4.5], [33.5, 28.5], [35.0, 2.0], [1.0, 33.0]], // slope 4/5 through centres
     ];
     for (k, [a, b, c, d]) in cases.into_iter().enumerate() {
         for (p, q) in [(a, b), (b, a)] {
@@ -43,7 +43,10 @@ fn shared_edges_cover_each_centre_exactly_once_in_2d() {
                     on_edge += 1;
                 }
             }
-            assert!(on_edge >= 5, "case {k}: only {on_edge} centres on the shared edge");
+            assert!(
+                on_edge >= 5,
+                "case {k}: only {on_edge} centres on the shared edge"
+            );
         }
     }
 }
@@ -76,21 +79,39 @@ fn a_vertex_on_a_centre_goes_to_one_triangle() {
 #[test]
 fn shared_edges_in_3d_are_watertight() {
     let mut s = scene_with(&[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
-    let corners = [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0)].map(|(x, y)| DVec3::new(x, y, 0.0));
+    let corners =
+        [(1.0, -1.0), (1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0)].map(|(x, y)| DVec3::new(x, y, 0.0));
     for k in 0..4 {
-        poly(&mut s, &[DVec3::ZERO, corners[k], corners[(k + 1) % 4]], (k % 2) as u32);
+        poly(
+            &mut s,
+            &[DVec3::ZERO, corners[k], corners[(k + 1) % 4]],
+            (k % 2) as u32,
+        );
     }
     let camera = cam(DVec3::new(0.0, 0.0, 4.0), 65, 65);
     let opts = RenderOptions::default();
     let z = render(&s, &camera, Method::ZBuffer, &opts).unwrap();
     let a = render(&s, &camera, Method::ABuffer, &opts).unwrap();
-    assert_eq!(a.stats.fragments as usize, z.ids.covered(), "no centre covered twice");
+    assert_eq!(
+        a.stats.fragments as usize,
+        z.ids.covered(),
+        "no centre covered twice"
+    );
     assert_eq!(z.ids.get(32, 32).map(|id| id != NO_FACE), Some(true));
     // No hole: the covered pixels form the square's full set of centres.
-    let xs: Vec<u32> = (0..65).filter(|&x| z.ids.get(x, 32) != Some(NO_FACE)).collect();
-    let ys: Vec<u32> = (0..65).filter(|&y| z.ids.get(32, y) != Some(NO_FACE)).collect();
+    let xs: Vec<u32> = (0..65)
+        .filter(|&x| z.ids.get(x, 32) != Some(NO_FACE))
+        .collect();
+    let ys: Vec<u32> = (0..65)
+        .filter(|&y| z.ids.get(32, y) != Some(NO_FACE))
+        .collect();
     assert_eq!(z.ids.covered(), xs.len() * ys.len());
-    let band = edge_band(&scene_edges(&s, &camera, &opts).unwrap(), 65, 65, default_band_tolerance(65, 65));
+    let band = edge_band(
+        &scene_edges(&s, &camera, &opts).unwrap(),
+        65,
+        65,
+        default_band_tolerance(65, 65),
+    );
     for m in [Method::ScanLine, Method::Warnock, Method::RayCast] {
         let r = render(&s, &camera, m, &opts).unwrap();
         let c = compare(&z.ids, &r.ids, Some(&band));
@@ -104,8 +125,16 @@ fn shared_edges_in_3d_are_watertight() {
 /// same way (the one to the right of a vertical edge, below a horizontal one).
 #[test]
 fn top_left_ties_are_decided_alike_by_every_method() {
-    let mut s = scene_with(&[[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 1.0, 0.0]]);
-    for (k, (sx, sy)) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)].into_iter().enumerate() {
+    let mut s = scene_with(&[
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1.0, 1.0, 0.0],
+    ]);
+    for (k, (sx, sy)) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)]
+        .into_iter()
+        .enumerate()
+    {
         let q = [(0.0, 0.0), (sx, 0.0), (sx, sy), (0.0, sy)].map(|(x, y)| DVec3::new(x, y, 0.0));
         poly(&mut s, &q, k as u32);
     }
@@ -113,9 +142,17 @@ fn top_left_ties_are_decided_alike_by_every_method() {
     let opts = RenderOptions::default();
     let z = render(&s, &camera, Method::ZBuffer, &opts).unwrap();
     // Face 0 is the quad at x > 0, y > 0 (upper right on screen).
-    assert_eq!(z.ids.get(32, 32), Some(3), "the centre goes right and down: lower right");
+    assert_eq!(
+        z.ids.get(32, 32),
+        Some(3),
+        "the centre goes right and down: lower right"
+    );
     assert_eq!(z.ids.get(32, 20), Some(0), "vertical edge: the right side");
-    assert_eq!(z.ids.get(20, 32), Some(2), "horizontal edge: the lower side");
+    assert_eq!(
+        z.ids.get(20, 32),
+        Some(2),
+        "horizontal edge: the lower side"
+    );
     for m in Method::ALL {
         let r = render(&s, &camera, m, &opts).unwrap();
         let c = compare(&z.ids, &r.ids, None);
@@ -129,10 +166,20 @@ fn top_left_ties_are_decided_alike_by_every_method() {
 fn depth_is_perspective_correct() {
     let mut s = scene_with(&[[0.5, 0.5, 0.5]]);
     // A steep quad receding from the camera.
-    let q = [(-1.0, -1.0, 1.0), (1.0, -1.0, 1.0), (1.0, 1.0, -6.0), (-1.0, 1.0, -6.0)]
-        .map(|(x, y, z)| DVec3::new(x, y, z));
+    let q = [
+        (-1.0, -1.0, 1.0),
+        (1.0, -1.0, 1.0),
+        (1.0, 1.0, -6.0),
+        (-1.0, 1.0, -6.0),
+    ]
+    .map(|(x, y, z)| DVec3::new(x, y, z));
     poly(&mut s, &q, 0);
-    let camera = Camera::new(DVec3::new(0.0, 0.2, 3.0), DVec3::new(0.0, 0.0, -1.0), 48, 48);
+    let camera = Camera::new(
+        DVec3::new(0.0, 0.2, 3.0),
+        DVec3::new(0.0, 0.0, -1.0),
+        48,
+        48,
+    );
     let opts = RenderOptions {
         near_far: Some((0.5, 20.0)),
         ..RenderOptions::default()
@@ -141,7 +188,12 @@ fn depth_is_perspective_correct() {
     let inv = vp.inverse();
     let normal = (q[1] - q[0]).cross(q[3] - q[0]);
     let mut worst_naive: f64 = 0.0;
-    for m in [Method::ZBuffer, Method::ScanLine, Method::Warnock, Method::RayCast] {
+    for m in [
+        Method::ZBuffer,
+        Method::ScanLine,
+        Method::Warnock,
+        Method::RayCast,
+    ] {
         let r = render(&s, &camera, m, &opts).unwrap();
         assert!(r.ids.covered() > 500);
         for j in 0..48u32 {
@@ -166,7 +218,10 @@ fn depth_is_perspective_correct() {
             }
         }
     }
-    assert!(worst_naive > 0.05, "affine eye depth should be visibly wrong ({worst_naive})");
+    assert!(
+        worst_naive > 0.05,
+        "affine eye depth should be visibly wrong ({worst_naive})"
+    );
 }
 
 /// Eye depth `w` interpolated affinely in screen space over the quad's two triangles.
@@ -196,7 +251,11 @@ fn ground_running_behind_the_camera_is_clipped() {
     // A triangle entirely behind the eye, which must never show.
     poly(
         &mut s,
-        &[DVec3::new(-5.0, -5.0, 3.0), DVec3::new(5.0, -5.0, 3.0), DVec3::new(0.0, 5.0, 3.0)],
+        &[
+            DVec3::new(-5.0, -5.0, 3.0),
+            DVec3::new(5.0, -5.0, 3.0),
+            DVec3::new(0.0, 5.0, 3.0),
+        ],
         0,
     );
     let camera = Camera::new(DVec3::ZERO, DVec3::new(0.0, -0.3, -1.0), 64, 48);
@@ -208,12 +267,21 @@ fn ground_running_behind_the_camera_is_clipped() {
         let r = render(&s, &camera, Method::RayCast, &opts).unwrap();
         let edges = scene_edges(&s, &camera, &opts).unwrap();
         let band = edge_band(&edges, 64, 48, default_band_tolerance(64, 48));
-        for m in [Method::ZBuffer, Method::ScanLine, Method::ABuffer, Method::Warnock] {
+        for m in [
+            Method::ZBuffer,
+            Method::ScanLine,
+            Method::ABuffer,
+            Method::Warnock,
+        ] {
             let z = render(&s, &camera, m, &opts).unwrap();
             assert!(z.stats.clipped_triangles > 0);
             let c = compare(&r.ids, &z.ids, Some(&band));
             assert_eq!(c.mismatches_outside_band, 0, "{m} {near_far:?}: {c:?}");
-            assert!(z.depth.depths.iter().all(|&d| d.is_infinite() || (0.0..=1.0).contains(&d)));
+            assert!(z
+                .depth
+                .depths
+                .iter()
+                .all(|&d| d.is_infinite() || (0.0..=1.0).contains(&d)));
             // Only the ground shows, and never above the horizon.
             assert!(z.ids.ids.iter().all(|&id| id == 0 || id == NO_FACE));
             for y in 0..6 {
