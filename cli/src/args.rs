@@ -1,0 +1,263 @@
+//! Command-line arguments.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+/// Draw 3D polygon scenes as resolution-independent pictures with hidden surfaces
+/// removed exactly.
+#[derive(Debug, Parser)]
+#[command(name = "limn", version, about, long_about = None)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Render a scene file (OBJ, STL, PLY, glTF/GLB, or a TOML scene) to SVG, PDF, EPS or
+    /// PNG.
+    Render(RenderArgs),
+    /// Render the built-in demo scene (a cyclic overlap, two interpenetrating boxes and a
+    /// shaded sphere) to demo.svg or OUTPUT.
+    Demo(DemoArgs),
+    /// Compare the painter's result pixel by pixel with an image-space reference.
+    Check(CheckArgs),
+}
+
+/// Output formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FormatArg {
+    /// Scalable Vector Graphics.
+    Svg,
+    /// PDF, one page.
+    Pdf,
+    /// Encapsulated PostScript.
+    Eps,
+    /// PNG raster (anti-aliased).
+    Png,
+}
+
+/// Visibility orderings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum SortArg {
+    /// Exact pairwise order, splitting only cycles (default).
+    Adaptive,
+    /// Fuchs–Kedem–Naylor BSP tree.
+    Bsp,
+    /// Newell–Newell–Sancha depth sort.
+    Newell,
+    /// One depth per polygon (wrong on hard cases; a baseline).
+    Simple,
+}
+
+/// Kernels.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ArithArg {
+    /// Exact plane-based predicates (default).
+    Exact,
+    /// f64 with an epsilon (a baseline).
+    Float,
+}
+
+/// Back-face culling.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CullArg {
+    /// Cull back faces of closed, opaque objects (default).
+    Auto,
+    /// Cull every back face.
+    On,
+    /// Keep every back face.
+    Off,
+}
+
+/// Image-space methods.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    /// Painter's order (vector; the default).
+    Painter,
+    /// Z-buffer.
+    Zbuffer,
+    /// Scan-line z-buffer.
+    Scanline,
+    /// A-buffer (transparency).
+    Abuffer,
+    /// Warnock area subdivision.
+    Warnock,
+    /// Exact ray casting at pixel centres.
+    Raycast,
+}
+
+/// Camera and view flags shared by render and check.
+#[derive(Debug, Clone, Args)]
+pub struct ViewArgs {
+    /// Picture size in pixels, WIDTHxHEIGHT [default: 800x600, or the scene file's].
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Eye position X,Y,Z [default: frame the scene from the right, above and in front].
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
+    pub eye: Option<[f64; 3]>,
+    /// Point looked at [default: the centre of the scene's bounding box].
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
+    pub target: Option<[f64; 3]>,
+    /// Up direction [default: 0,1,0].
+    #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
+    pub up: Option<[f64; 3]>,
+    /// Vertical field of view in degrees [default: 45].
+    #[arg(long, value_name = "DEG")]
+    pub fov: Option<f64>,
+    /// Visibility ordering [default: adaptive, or the scene file's].
+    #[arg(long, value_enum)]
+    pub sort: Option<SortArg>,
+    /// Arithmetic of the geometric decisions [default: exact, or the scene file's].
+    #[arg(long, value_enum)]
+    pub arith: Option<ArithArg>,
+    /// Back-face culling [default: auto, or the scene file's].
+    #[arg(long, value_enum)]
+    pub cull: Option<CullArg>,
+    /// Follow references (MTL, buffers, meshes) that lead outside the input's folder.
+    #[arg(long)]
+    pub allow_outside: bool,
+    /// Write statistics as one JSON object to PATH (`-` = standard output).
+    #[arg(long, value_name = "PATH|-")]
+    pub stats: Option<PathBuf>,
+    /// Print nothing but errors.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+/// `limn render`.
+#[derive(Debug, Clone, Args)]
+pub struct RenderArgs {
+    /// The scene: .obj, .stl, .ply, .gltf, .glb or .toml.
+    pub input: PathBuf,
+    /// Output file (`-` = standard output) [default: INPUT with the format's extension].
+    #[arg(short, long, value_name = "OUTPUT")]
+    pub output: Option<PathBuf>,
+    /// Output format [default: from OUTPUT's extension, else svg].
+    #[arg(long, value_enum)]
+    pub format: Option<FormatArg>,
+    /// Stroke the original model edges (never the cuts).
+    #[arg(long)]
+    pub outline: bool,
+    /// How to render: painter's order (vector) or an image-space method (PNG only).
+    #[arg(long, value_enum, default_value_t = MethodArg::Painter)]
+    pub method: MethodArg,
+    /// Camera, ordering and reporting flags.
+    #[command(flatten)]
+    pub view: ViewArgs,
+}
+
+/// `limn demo`.
+#[derive(Debug, Clone, Args)]
+pub struct DemoArgs {
+    /// Output file [default: demo.svg]; the format follows the extension.
+    #[arg(short, long, value_name = "OUTPUT")]
+    pub output: Option<PathBuf>,
+    /// Stroke the original model edges.
+    #[arg(long)]
+    pub outline: bool,
+    /// Write statistics as JSON to PATH (`-` = standard output).
+    #[arg(long, value_name = "PATH|-")]
+    pub stats: Option<PathBuf>,
+    /// Print nothing but errors.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+/// References for `limn check`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AgainstArg {
+    /// Z-buffer with f64 depth.
+    Zbuffer,
+    /// Exact ray casting.
+    Raycast,
+    /// Warnock area subdivision.
+    Warnock,
+    /// Scan-line z-buffer.
+    Scanline,
+}
+
+/// `limn check`.
+#[derive(Debug, Clone, Args)]
+pub struct CheckArgs {
+    /// The scene: .obj, .stl, .ply, .gltf, .glb or .toml.
+    pub input: PathBuf,
+    /// The reference to compare with.
+    #[arg(long, value_enum, default_value_t = AgainstArg::Raycast)]
+    pub against: AgainstArg,
+    /// Write an image with mismatching pixels marked (PNG).
+    #[arg(long, value_name = "DIFF.png")]
+    pub diff: Option<PathBuf>,
+    /// Camera, ordering and reporting flags.
+    #[command(flatten)]
+    pub view: ViewArgs,
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("expected WIDTHxHEIGHT, got `{s}`"))?;
+    let w: u32 = w
+        .trim()
+        .parse()
+        .map_err(|_| format!("bad width in `{s}`"))?;
+    let h: u32 = h
+        .trim()
+        .parse()
+        .map_err(|_| format!("bad height in `{s}`"))?;
+    if w == 0 || h == 0 || w > 65536 || h > 65536 {
+        return Err(format!("size `{s}` out of range (1 to 65536 per side)"));
+    }
+    Ok((w, h))
+}
+
+fn parse_vec3(s: &str) -> Result<[f64; 3], String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.len() != 3 {
+        return Err(format!("expected X,Y,Z, got `{s}`"));
+    }
+    let mut v = [0.0; 3];
+    for (o, p) in v.iter_mut().zip(parts) {
+        let x: f64 = p
+            .trim()
+            .parse()
+            .map_err(|_| format!("`{p}` is not a number"))?;
+        if !x.is_finite() {
+            return Err(format!("`{p}` is not finite"));
+        }
+        *o = x;
+    }
+    Ok(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn vectors_and_sizes_parse() {
+        assert_eq!(parse_vec3("-1,2.5,3e2"), Ok([-1.0, 2.5, 300.0]));
+        assert!(parse_vec3("1,2").is_err());
+        assert!(parse_vec3("1,nan,2").is_err());
+        assert_eq!(parse_size("800x600"), Ok((800, 600)));
+        assert!(parse_size("0x600").is_err());
+        assert!(parse_size("800").is_err());
+    }
+
+    #[test]
+    fn leading_minus_is_a_value() {
+        let cli = Cli::try_parse_from(["limn", "render", "a.obj", "--eye", "-1,2,3"]).unwrap();
+        let Command::Render(r) = cli.command else {
+            panic!("render expected")
+        };
+        assert_eq!(r.view.eye, Some([-1.0, 2.0, 3.0]));
+        let cli = Cli::try_parse_from(["limn", "render", "a.obj", "--eye=-1,2,3"]).unwrap();
+        let Command::Render(r) = cli.command else {
+            panic!("render expected")
+        };
+        assert_eq!(r.view.eye, Some([-1.0, 2.0, 3.0]));
+    }
+}
