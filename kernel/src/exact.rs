@@ -143,7 +143,7 @@ impl Kernel for ExactKernel {
     }
 
     fn support(&self, poly: &ExactPolygon) -> Plane {
-        poly.support
+        poly.support()
     }
 
     fn side_of_point(&self, plane: &Plane, p: &GridPoint) -> Side {

@@ -87,7 +87,7 @@ pub(crate) fn convex_polygon(pts: &[GridPoint], support: Plane, original: &[bool
         };
         out.push(corner, edge);
     }
-    out.finish(support)
+    out.finish(support.coeffs())
 }
 
 /// Removes corners collinear with their neighbours (in projection along `k`), repeatedly.

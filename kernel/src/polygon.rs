@@ -50,7 +50,7 @@ impl Builder {
     }
 
     /// The polygon, computing the filter's per-polygon bounds.
-    pub(crate) fn finish(self, support: Plane) -> ExactPolygon {
+    pub(crate) fn finish(self, support: Coeffs) -> ExactPolygon {
         let mut max_abs: f32 = 0.0;
         let mut max_err: f32 = 0.0;
         for c in &self.corners {
@@ -88,13 +88,13 @@ pub struct ExactPolygon {
     /// Upper bound on the error bounds of all cached vertex positions.
     max_err: f32,
     pub(crate) edges: SmallVec<[Coeffs; INLINE]>,
-    pub(crate) support: Plane,
+    pub(crate) support: Coeffs,
 }
 
 impl ExactPolygon {
     /// The supporting plane (normal towards the front).
-    pub fn support(&self) -> &Plane {
-        &self.support
+    pub fn support(&self) -> Plane {
+        self.support.plane()
     }
 
     /// Number of vertices.
@@ -122,7 +122,7 @@ impl ExactPolygon {
     pub fn vertex_planes(&self, i: usize) -> [Plane; 3] {
         let n = self.corners.len();
         [
-            self.support,
+            self.support.plane(),
             self.edges[(i + n - 1) % n].plane(),
             self.edges[i].plane(),
         ]
@@ -157,6 +157,14 @@ impl ExactPolygon {
     #[inline]
     fn fine_side(&self, i: usize, h: &Plane, hf: &PlaneF, fallbacks: &mut u64) -> Side {
         let c = &self.corners[i];
+        if c.err == 0.0 {
+            // A grid point: the exact evaluation in i128 costs about as much as the
+            // per-vertex filter, and a vertex on the plane would defeat the filter anyway.
+            if let Some(g) = as_grid(&c.pos, 0.0) {
+                *fallbacks += 1;
+                return h.side_of(&g);
+            }
+        }
         match hf.side(&c.pos, c.err as f64) {
             Some(s) => s,
             None => {
@@ -243,15 +251,18 @@ impl ExactPolygon {
         let mut flags = 0u8;
         if filter {
             let coarse = self.coarse_bound(&hf);
-            let (mut front, mut back, mut unsure) = (false, false, false);
+            // The extreme filter values decide the common cases at once.
+            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
             for c in &self.corners {
-                let s = Self::coarse_sign(c, &hf, coarse);
-                front |= s > 0;
-                back |= s < 0;
-                unsure |= s == 0;
+                let v = hf.eval(&c.pos);
+                lo = if v < lo { v } else { lo };
+                hi = if v > hi { v } else { hi };
             }
-            flags = (front as u8 * FRONT) | (back as u8 * BACK);
-            if unsure && flags != FRONT | BACK {
+            flags = ((hi > coarse) as u8 * FRONT) | ((lo < -coarse) as u8 * BACK);
+            // Otherwise some vertex is undecided (all decided means all front, all back,
+            // or both present).
+            let decided = lo > coarse || hi < -coarse || flags == FRONT | BACK;
+            if !decided {
                 for (i, c) in self.corners.iter().enumerate() {
                     if Self::coarse_sign(c, &hf, coarse) == 0 {
                         flags |= bit(self.fine_side(i, h, &hf, fallbacks));
@@ -273,7 +284,7 @@ impl ExactPolygon {
             3 => PolygonSide::Spanning,
             FRONT => PolygonSide::Front,
             BACK => PolygonSide::Back,
-            _ if self.support.same_facing(h) => PolygonSide::Coplanar,
+            _ if self.support().same_facing(h) => PolygonSide::Coplanar,
             _ => PolygonSide::CoplanarOpposite,
         }
     }
@@ -293,7 +304,7 @@ impl ExactPolygon {
             (true, false) => return (Some(self.clone()), None),
             (false, true) => return (None, Some(self.clone())),
             (false, false) => {
-                return if self.support.same_facing(h) {
+                return if self.support().same_facing(h) {
                     (Some(self.clone()), None)
                 } else {
                     (None, Some(self.clone()))
@@ -304,7 +315,8 @@ impl ExactPolygon {
         let n = self.corners.len();
         let neg = h.coeffs().flipped();
         let hk = h.coeffs();
-        let sf = PlaneF::new(&self.support);
+        let support = self.support.plane();
+        let sf = PlaneF::new(&support);
         let mut fp = Builder::default();
         let mut bp = Builder::default();
         for i in 0..n {
@@ -335,7 +347,7 @@ impl ExactPolygon {
             if crossing {
                 let edge = e.plane();
                 let (pos, err) = predicates::approximate_f(&sf, &PlaneF::new(&edge), &hf)
-                    .or_else(|| predicates::approximate(&self.support, &edge, h))
+                    .or_else(|| predicates::approximate(&support, &edge, h))
                     .unwrap_or(([0.0; 3], f64::INFINITY));
                 let on_edge = Corner {
                     pos,

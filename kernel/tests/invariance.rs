@@ -20,7 +20,7 @@ const MAPS: [(Map, bool); 5] = [
 
 /// A plane through three grid points, as the face of the triangle they form.
 fn plane_of(k: &limn_kernel::ExactKernel, t: &[[i64; 3]; 3]) -> Option<Plane> {
-    face(k, t).first().map(|p| *p.support())
+    face(k, t).first().map(|p| p.support())
 }
 
 fn classify_all(polys: &[ExactPolygon], planes: &[Option<Plane>]) -> Vec<Option<PolygonSide>> {

@@ -4,7 +4,7 @@ mod common;
 
 use common::*;
 use limn_kernel::predicates::{side_of_intersection, ImplicitPoint};
-use limn_kernel::{GridPoint, Plane, Side};
+use limn_kernel::{GridPoint, Kernel, Plane, Side};
 use proptest::prelude::*;
 
 /// Adds two planes (the result passes through their common line), if within bounds.
@@ -122,5 +122,86 @@ fn extreme_coefficients_do_not_overflow() {
                 check_point([p1, p2, p3], &h);
             }
         }
+    }
+}
+
+/// A world coordinate in [-1, 1], biased toward grid cell boundaries (half steps, where
+/// snapping rounds ties) and nudged by a few ulps.
+fn world_coord() -> impl Strategy<Value = f64> {
+    let step = 2f64.powi(-25);
+    prop_oneof![
+        -1.0f64..1.0,
+        (-1000i64..1000, -3i64..=3).prop_map(move |(k, ulps)| {
+            let x = (k as f64 + 0.5) * step;
+            f64::from_bits((x.to_bits() as i64 + ulps) as u64)
+        }),
+        (-1000i64..1000, -3i64..=3).prop_map(move |(k, ulps)| {
+            let x = k as f64 * step * 1000.0;
+            f64::from_bits((x.to_bits() as i64 + ulps) as u64).clamp(-1.0, 1.0)
+        }),
+    ]
+}
+
+fn big(v: i64) -> num_bigint::BigInt {
+    num_bigint::BigInt::from(v)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// The side of an eye point (possibly far away) with respect to the plane of a
+    /// triangle given in world coordinates, against a bigint evaluation on the snapped
+    /// points.
+    #[test]
+    fn eye_against_world_triangle(
+        tri in [[world_coord(), world_coord(), world_coord()], [world_coord(), world_coord(), world_coord()], [world_coord(), world_coord(), world_coord()]],
+        dir in [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0],
+        scale in prop_oneof![Just(0.0), 0.0f64..2.0, 1.0f64..1e7],
+        on_plane in any::<bool>(),
+    ) {
+        use glam::DVec3;
+        let k = kernel();
+        let corners: Vec<DVec3> = tri.iter().map(|p| DVec3::from_array(*p)).collect();
+        let polys = k.face_polygons(&corners).unwrap();
+        let q = k.quantizer();
+        let g: Vec<[i64; 3]> = corners.iter().map(|c| q.snap(*c).unwrap().to_array()).collect();
+        let u: Vec<_> = (0..3).map(|i| big(g[1][i] - g[0][i])).collect();
+        let v: Vec<_> = (0..3).map(|i| big(g[2][i] - g[0][i])).collect();
+        let n = [
+            &u[1] * &v[2] - &u[2] * &v[1],
+            &u[2] * &v[0] - &u[0] * &v[2],
+            &u[0] * &v[1] - &u[1] * &v[0],
+        ];
+        let zero = num_bigint::BigInt::from(0);
+        if n.iter().all(|c| *c == zero) {
+            prop_assert!(polys.is_empty());
+            return Ok(());
+        }
+        prop_assert_eq!(polys.len(), 1);
+        // An eye on the triangle's plane (a snapped corner) or off it, possibly far away.
+        let eye_w = if on_plane { corners[1] } else { corners[0] + DVec3::from_array(dir) * scale };
+        let eye = k.point(eye_w).unwrap();
+        let e = eye.to_array();
+        let val: num_bigint::BigInt = (0..3).map(|i| &n[i] * big(e[i] - g[0][i])).sum();
+        let want = match val.sign() {
+            num_bigint::Sign::Plus => Side::Front,
+            num_bigint::Sign::Minus => Side::Back,
+            num_bigint::Sign::NoSign => Side::On,
+        };
+        let h = k.support(&polys[0]);
+        prop_assert_eq!(k.side_of_point(&h, &eye), want);
+        if on_plane {
+            prop_assert_eq!(want, Side::On);
+        }
+    }
+
+    /// Three planes through one line never meet in a single point: both the kernel and
+    /// the reference say so.
+    #[test]
+    fn collinear_planes(p1 in any_plane(), p2 in any_plane(), s in -2i64..=2, t in -2i64..=2, h in any_plane()) {
+        let Some(p3) = combine(&p1, &p2, s, t) else { return Ok(()) };
+        prop_assert!(intersect(&[p1, p2, p3]).is_none());
+        prop_assert_eq!(side_of_intersection(&p1, &p2, &p3, &h), None);
+        prop_assert!(ImplicitPoint::new(p1, p2, p3).is_none());
     }
 }

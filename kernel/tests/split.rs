@@ -79,12 +79,36 @@ fn make_cut(k: &ExactKernel, poly: &ExactPolygon, c: &Cut) -> Option<Plane> {
     }
 }
 
+/// The classification from the rational reference.
+fn reference_classify(poly: &ExactPolygon, h: &Plane) -> PolygonSide {
+    let sides: Vec<Side> = (0..poly.len()).map(|i| vertex_side(poly, i, h)).collect();
+    match (sides.contains(&Side::Front), sides.contains(&Side::Back)) {
+        (true, true) => PolygonSide::Spanning,
+        (true, false) => PolygonSide::Front,
+        (false, true) => PolygonSide::Back,
+        _ if poly.support().same_facing(h) => PolygonSide::Coplanar,
+        _ => PolygonSide::CoplanarOpposite,
+    }
+}
+
 /// All checks of one split; returns the pieces.
 fn checked_split(
     k: &ExactKernel,
     poly: &ExactPolygon,
     h: &Plane,
 ) -> (Option<ExactPolygon>, Option<ExactPolygon>) {
+    // Filtered, unfiltered and reference classifications agree.
+    let want = reference_classify(poly, h);
+    assert_eq!(
+        k.classify(poly, h),
+        want,
+        "filtered classify: {poly:?} vs {h:?}"
+    );
+    let unfiltered = kernel().without_filter();
+    assert_eq!(unfiltered.classify(poly, h), want);
+    for i in 0..poly.len() {
+        assert_eq!(k.side_of_vertex(poly, i, h), vertex_side(poly, i, h));
+    }
     let (f, b) = k.split(poly, h);
     check_split(poly, h, f.as_ref(), b.as_ref())
         .unwrap_or_else(|e| panic!("{e}: {poly:?} by {h:?}"));
@@ -154,7 +178,7 @@ proptest! {
     fn hundred_splits_in_a_row(pts in lattice_polygon(), cuts in prop::collection::vec(cut(), 100), keep in prop::collection::vec(any::<bool>(), 100)) {
         let k = kernel();
         for poly in face(&k, &pts) {
-            let mut inputs: Vec<Plane> = vec![*poly.support()];
+            let mut inputs: Vec<Plane> = vec![poly.support()];
             inputs.extend((0..poly.len()).map(|i| poly.edge_plane(i)));
             let mut p = poly;
             let mut splits = 0;
@@ -170,7 +194,7 @@ proptest! {
                 for i in 0..p.len() {
                     prop_assert!(inputs.contains(&p.edge_plane(i)));
                 }
-                prop_assert_eq!(p.support(), &inputs[0]);
+                prop_assert_eq!(p.support(), inputs[0]);
             }
             // The generators must actually exercise splitting.
             prop_assert!(splits >= 5, "only {} proper splits", splits);
@@ -197,7 +221,7 @@ fn split_through_vertices_keeps_both_pieces_proper() {
     let (f2, b2) = checked_split(&k, &sq[0], &touch);
     assert!(f2.is_some() && b2.is_none());
     // Coplanar: same facing goes to the front, opposite to the back.
-    let s = *sq[0].support();
+    let s = sq[0].support();
     assert!(matches!(k.split(&sq[0], &s), (Some(_), None)));
     assert!(matches!(k.split(&sq[0], &s.flipped()), (None, Some(_))));
     assert_eq!(k.classify(&sq[0], &s), PolygonSide::Coplanar);
