@@ -265,9 +265,8 @@ impl Painter for EpsPainter {
                 )),
             }
         };
-        let counts = walk(picture, &checked.guard, key, |run| {
+        let counts = walk(picture, &checked.guard, key, |run, &style| {
             let b = &mut sink.buf;
-            let style = key(&run[0]);
             match style {
                 Style::Flat(Some(q)) => w.flat_run(b, run, q),
                 Style::Flat(None) => {}

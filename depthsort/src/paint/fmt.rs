@@ -41,6 +41,17 @@ pub(crate) fn push_uint(buf: &mut Vec<u8>, mut v: u64) {
     buf.extend_from_slice(&digits[i..]);
 }
 
+/// `x` rounded half away from zero, for |x| < 2^53 (what `f64::round` does, without the
+/// library call that baseline x86-64 needs for it).
+#[inline]
+fn round_i64(x: f64) -> i64 {
+    let i = x as i64;
+    // Exact: x − trunc(x) has no rounding error below 2^53. Written without branches:
+    // colours and coordinates are random enough to defeat branch prediction.
+    let frac = x - i as f64;
+    i + i64::from(frac >= 0.5) - i64::from(frac <= -0.5)
+}
+
 /// Appends `v` rounded to at most `decimals` decimals (clamped to [`MAX_DECIMALS`]):
 /// trailing zeros and a bare decimal point are trimmed, a result that rounds to zero is
 /// `0` (never `-0`), and no exponent is ever used. Rounding is half away from zero on
@@ -48,49 +59,98 @@ pub(crate) fn push_uint(buf: &mut Vec<u8>, mut v: u64) {
 /// as `0`.
 pub(crate) fn push_num(buf: &mut Vec<u8>, v: f64, decimals: u8) {
     let decimals = decimals.min(MAX_DECIMALS);
-    let scale = POW10[usize::from(decimals)];
-    let scaled = (v * scale as f64).round();
-    if !scaled.is_finite() {
-        buf.push(b'0');
-        return;
-    }
-    if scaled.abs() >= EXACT_INT {
+    let scaled = v * POW10[usize::from(decimals)] as f64;
+    if scaled.is_nan() || scaled.abs() >= EXACT_INT {
         push_num_slow(buf, v, decimals);
         return;
     }
-    if scaled == 0.0 {
+    push_scaled(buf, round_i64(scaled), decimals);
+}
+
+/// "00" to "99".
+const PAIRS: &[u8; 200] = b"00010203040506070809\
+                            10111213141516171819\
+                            20212223242526272829\
+                            30313233343536373839\
+                            40414243444546474849\
+                            50515253545556575859\
+                            60616263646566676869\
+                            70717273747576777879\
+                            80818283848586878889\
+                            90919293949596979899";
+
+/// Writes the `width` lowest decimal digits of `v` so that they end at `tmp[end]`.
+#[inline]
+fn put_digits(tmp: &mut [u8], end: usize, mut v: u64, width: usize) {
+    let mut i = end;
+    let stop = end - width;
+    while i >= stop + 2 {
+        let pair = (v % 100) as usize * 2;
+        v /= 100;
+        tmp[i - 2] = PAIRS[pair];
+        tmp[i - 1] = PAIRS[pair + 1];
+        i -= 2;
+    }
+    if i > stop {
+        tmp[i - 1] = b'0' + (v % 10) as u8;
+    }
+}
+
+/// Appends `n / 10^decimals` (`decimals` at most [`MAX_DECIMALS`], |n| < 2^53) in the
+/// format of [`push_num`].
+pub(crate) fn push_scaled(buf: &mut Vec<u8>, n: i64, decimals: u8) {
+    if n == 0 {
         buf.push(b'0');
         return;
     }
-    if scaled < 0.0 {
-        buf.push(b'-');
+    let u = n.unsigned_abs();
+    // Constant divisors for the usual settings: a multiplication instead of a division.
+    let (int, mut frac) = match decimals {
+        0 => (u, 0),
+        2 => (u / 100, u % 100),
+        3 => (u / 1000, u % 1000),
+        4 => (u / 10_000, u % 10_000),
+        _ => {
+            let scale = POW10[usize::from(decimals.min(MAX_DECIMALS))];
+            (u / scale, u % scale)
+        }
+    };
+    let mut frac_width = 0;
+    if frac != 0 {
+        frac_width = usize::from(decimals);
+        while frac.is_multiple_of(10) {
+            frac /= 10;
+            frac_width -= 1;
+        }
     }
-    // Exact: |scaled| < 2^53 is an integer.
-    let n = scaled.abs() as u64;
-    push_uint(buf, n / scale);
-    let mut frac = n % scale;
-    if frac == 0 {
-        return;
+    let mut int_width = 1;
+    let mut t = int;
+    while t >= 10 {
+        t /= 10;
+        int_width += 1;
     }
-    let mut width = usize::from(decimals);
-    while frac.is_multiple_of(10) {
-        frac /= 10;
-        width -= 1;
+    // At most 16 digits (|n| < 2^53), a sign and a point.
+    let sign = usize::from(n < 0);
+    let len = sign + int_width + if frac_width > 0 { frac_width + 1 } else { 0 };
+    let mut tmp = [b'-'; 24];
+    if frac_width > 0 {
+        put_digits(&mut tmp, len, frac, frac_width);
+        tmp[len - frac_width - 1] = b'.';
     }
-    buf.push(b'.');
-    let mut digits = [b'0'; MAX_DECIMALS as usize];
-    let mut i = width;
-    while frac > 0 {
-        i -= 1;
-        digits[i] = b'0' + (frac % 10) as u8;
-        frac /= 10;
-    }
-    buf.extend_from_slice(&digits[..width]);
+    put_digits(&mut tmp, sign + int_width, int, int_width);
+    // A fixed-size copy compiles to a few moves, where a variable one calls memmove.
+    let old = buf.len();
+    buf.extend_from_slice(&tmp);
+    buf.truncate(old + len);
 }
 
 /// Large magnitudes: Rust's exact decimal expansion, trimmed the same way.
 #[cold]
 fn push_num_slow(buf: &mut Vec<u8>, v: f64, decimals: u8) {
+    if !v.is_finite() {
+        buf.push(b'0');
+        return;
+    }
     let start = buf.len();
     // Writing to a Vec cannot fail.
     let _ = write!(buf, "{:.*}", usize::from(decimals), v);
@@ -107,7 +167,7 @@ fn push_num_slow(buf: &mut Vec<u8>, v: f64, decimals: u8) {
 /// A colour channel as 8 bits: `round(clamp(c, 0, 1) · 255)`.
 pub(crate) fn channel_u8(c: f64) -> u8 {
     // NaN clamps to NaN, which `as` turns into 0.
-    (c.clamp(0.0, 1.0) * 255.0).round() as u8
+    round_i64(c.clamp(0.0, 1.0) * 255.0) as u8
 }
 
 /// Three channels as 8 bits each.
@@ -117,13 +177,13 @@ pub(crate) fn rgb_u8(c: [f64; 3]) -> [u8; 3] {
 
 /// An opacity in thousandths: `round(clamp(a, 0, 1) · 1000)`.
 pub(crate) fn alpha_milli(a: f64) -> u16 {
-    (a.clamp(0.0, 1.0) * 1000.0).round() as u16
+    round_i64(a.clamp(0.0, 1.0) * 1000.0) as u16
 }
 
 /// A colour channel quantised to `decimals` decimals, as the integer that is written.
 pub(crate) fn channel_fixed(c: f64, decimals: u8) -> u32 {
     let scale = POW10[usize::from(decimals.min(MAX_DECIMALS))] as f64;
-    (c.clamp(0.0, 1.0) * scale).round() as u32
+    round_i64(c.clamp(0.0, 1.0) * scale) as u32
 }
 
 /// Appends `#rrggbb` (lower-case hex).
@@ -249,6 +309,59 @@ mod tests {
         assert_eq!(num(7.0, 200), "7");
         assert_eq!(num(f64::NAN, 2), "0");
         assert_eq!(num(f64::INFINITY, 2), "0");
+    }
+
+    /// The plain way to write a number, as a reference for the fast one.
+    fn reference(v: f64, d: u8) -> String {
+        let scale = 10f64.powi(i32::from(d));
+        let n = (v * scale).round();
+        if n == 0.0 {
+            return "0".to_string();
+        }
+        let s = format!("{:.*}", usize::from(d), n / scale);
+        let s = if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            &s
+        };
+        s.to_string()
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn fast_rounding_matches_the_library(x in -9.0e15..9.0e15f64) {
+            proptest::prop_assert_eq!(round_i64(x), x.round() as i64);
+        }
+
+        #[test]
+        fn fast_numbers_match_the_reference(v in -1.0e6..1.0e6f64, d in 0u8..7) {
+            proptest::prop_assert_eq!(num(v, d), reference(v, d));
+        }
+
+        #[test]
+        fn numbers_round_trip_within_half_a_unit(v in -1.0e9..1.0e9f64, d in 0u8..10) {
+            let s = num(v, d);
+            let back: f64 = s.parse().unwrap();
+            let unit = 10f64.powi(-i32::from(d));
+            proptest::prop_assert!((back - v).abs() <= unit * 0.5 + v.abs() * 1e-15);
+            proptest::prop_assert!(s != "-0" && !s.ends_with('.'));
+            proptest::prop_assert!(!s.contains('.') || !s.ends_with('0'));
+        }
+    }
+
+    #[test]
+    fn ties_round_away_from_zero() {
+        for x in [
+            0.5,
+            1.5,
+            2.5,
+            -0.5,
+            -2.5,
+            0.49999999999999994,
+            4503599627370495.5,
+        ] {
+            assert_eq!(round_i64(x), x.round() as i64, "{x}");
+        }
     }
 
     #[test]

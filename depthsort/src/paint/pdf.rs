@@ -198,7 +198,15 @@ impl Painter for PdfPainter {
         let checked = check(picture)?;
         let (w, h) = (f64::from(picture.width), f64::from(picture.height));
         let mut c = Content {
-            buf: Vec::with_capacity(64 * picture.fragments.len() + 256),
+            // About 18 bytes per corner and 32 per fill: one allocation in the usual case.
+            buf: Vec::with_capacity(
+                picture
+                    .fragments
+                    .iter()
+                    .map(|f| 18 * f.points.len() + 32)
+                    .sum::<usize>()
+                    + 256,
+            ),
             d: self.options.decimals,
             cd: self.options.color_decimals,
             height: h,
@@ -243,8 +251,8 @@ impl Painter for PdfPainter {
                 None => Style::Flat(f.flat_rgb().map(|v| channel_fixed(v, cd)), a),
             }
         };
-        let counts = walk(picture, &checked.guard, key, |run| {
-            match key(&run[0]) {
+        let counts = walk(picture, &checked.guard, key, |run, style| {
+            match *style {
                 Style::Flat(rgb, a) => {
                     c.fill_alpha(a);
                     c.flat_run(run, rgb);

@@ -96,7 +96,7 @@ impl PngPainter {
 
         let mut stats = PaintStats::default();
         let mut builder = Some(PathBuilder::new());
-        let counts = walk(picture, &checked.guard, style_key, |run| {
+        let counts = walk(picture, &checked.guard, style_key, |run, style| {
             let mut pb = builder.take().unwrap_or_default();
             for (f, reverse) in run.iter().zip(reversals(run)) {
                 for (k, p) in f.oriented(reverse).enumerate() {
@@ -110,7 +110,7 @@ impl PngPainter {
             }
             stats.paths += 1;
             if let Some(path) = pb.finish() {
-                match style_key(&run[0]) {
+                match *style {
                     Style::Flat([r, g, b], a) => {
                         let mut paint = Paint::default();
                         paint.set_color_rgba8(r, g, b, a);

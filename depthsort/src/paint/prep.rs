@@ -303,12 +303,12 @@ pub(crate) struct Counts {
 }
 
 /// Validates and clips the fragments in order and hands each run — consecutive fragments
-/// with the same object, face and `key` — to `run`.
+/// with the same object, face and `key` — to `run`, with the run's key.
 pub(crate) fn walk<'a, K: PartialEq>(
     picture: &'a Picture,
     guard: &Guard,
     mut key: impl FnMut(&Frag<'a>) -> K,
-    mut run: impl FnMut(&[Frag<'a>]) -> Result<(), PaintError>,
+    mut run: impl FnMut(&[Frag<'a>], &K) -> Result<(), PaintError>,
 ) -> Result<Counts, PaintError> {
     let mut counts = Counts::default();
     let mut pending: Vec<Frag<'a>> = Vec::new();
@@ -336,16 +336,16 @@ pub(crate) fn walk<'a, K: PartialEq>(
         let k = key(&frag);
         let same = matches!(&current, Some((o, face, ck)) if *o == f.object && *face == f.face && *ck == k);
         if !same {
-            if !pending.is_empty() {
-                run(&pending)?;
+            if let Some((_, _, ck)) = &current {
+                run(&pending, ck)?;
                 pending.clear();
             }
             current = Some((f.object, f.face, k));
         }
         pending.push(frag);
     }
-    if !pending.is_empty() {
-        run(&pending)?;
+    if let Some((_, _, ck)) = &current {
+        run(&pending, ck)?;
     }
     Ok(counts)
 }
@@ -452,7 +452,7 @@ mod tests {
             &p,
             &guard(),
             |_| (),
-            |run| {
+            |run, _| {
                 sizes.push(run.len());
                 Ok(())
             },
@@ -474,7 +474,7 @@ mod tests {
             &p,
             &guard(),
             |_| (),
-            |run| {
+            |run, _| {
                 got.extend(reversals(run));
                 Ok(())
             },

@@ -99,7 +99,7 @@ impl Painter for SvgPainter {
         }
 
         let mut group: Option<u32> = None;
-        let counts = walk(picture, &checked.guard, style_key, |run| {
+        let counts = walk(picture, &checked.guard, style_key, |run, &(rgb, alpha)| {
             let b = &mut sink.buf;
             let object = run[0].src.object;
             if group != Some(object) {
@@ -109,14 +109,13 @@ impl Painter for SvgPainter {
                 open_group(b, picture.objects.get(object as usize));
                 group = Some(object);
             }
-            let (rgb, alpha) = style_key(&run[0]);
             b.extend_from_slice(b"<path d=\"");
             for (f, reverse) in run.iter().zip(reversals(run)) {
                 for (k, p) in f.oriented(reverse).enumerate() {
-                    b.extend_from_slice(match k {
-                        0 => b"M",
-                        1 => b"L",
-                        _ => b" ",
+                    b.push(match k {
+                        0 => b'M',
+                        1 => b'L',
+                        _ => b' ',
                     });
                     push_point(b, p, d);
                 }
@@ -190,10 +189,10 @@ fn push_outline(b: &mut Vec<u8>, f: &Frag<'_>, d: u8) {
     f.polylines(|start, edges, closed| {
         let last = if closed { edges - 1 } else { edges };
         for k in 0..=last {
-            b.extend_from_slice(match k {
-                0 => b"M",
-                1 => b"L",
-                _ => b" ",
+            b.push(match k {
+                0 => b'M',
+                1 => b'L',
+                _ => b' ',
             });
             push_point(b, f.points[(start + k) % n], d);
         }
