@@ -25,6 +25,16 @@ const PLANE_POINT_LIMIT: i64 = 1 << 56;
 /// [`Kernel::plane_through`]); coordinates are rounded only in
 /// [`Kernel::vertices_world`] and [`Kernel::point_world`].
 ///
+/// Input faces ([`Kernel::face_polygons`]): no corners is [`KernelError::Empty`]; a
+/// non-finite corner is [`KernelError::NonFinite`]; a corner outside the box is
+/// [`KernelError::OutsideGrid`]. Faces that collapse (fewer than three distinct snapped
+/// corners, zero area) and outlines that are not simple (self-intersecting) give an
+/// empty vector. A face whose snapped corners all lie within one grid step (along the
+/// dominant axis of its normal) of the plane of its best fan triangle, and which is
+/// strictly convex, becomes one polygon: its corners are moved onto that plane along
+/// that axis (input planarisation of snapping noise, done once, exactly). Any other face
+/// is triangulated (constrained Delaunay); diagonals are not original edges.
+///
 /// World conversion: a vertex's world coordinates are within `4` ulps (relative error
 /// `8·2^-53`) of its exact grid position times the step, plus one rounding of adding the
 /// grid origin.
@@ -74,6 +84,7 @@ impl ExactKernel {
     }
 
     /// The side of `plane` at vertex `i` of `poly` (filter first, counted fallback).
+    /// Panics if `i >= poly.len()`.
     pub fn side_of_vertex(&self, poly: &ExactPolygon, i: usize, plane: &Plane) -> Side {
         let mut fb = 0;
         let s = if self.filter {
@@ -86,6 +97,7 @@ impl ExactKernel {
     }
 
     /// Vertex `i` of `poly` in grid coordinates, rounded (relative error at most `8·2^-53`).
+    /// Panics if `i >= poly.len()`.
     pub fn vertex_grid(&self, poly: &ExactPolygon, i: usize) -> [f64; 3] {
         let (pos, err) = poly.vertex_approx(i);
         if as_grid(&pos, err).is_some() {

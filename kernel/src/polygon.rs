@@ -119,6 +119,7 @@ impl ExactPolygon {
     }
 
     /// The three planes whose intersection is vertex `i`: support, edge `i - 1`, edge `i`.
+    /// Panics if `i` is out of range.
     pub fn vertex_planes(&self, i: usize) -> [Plane; 3] {
         let n = self.corners.len();
         [
@@ -128,13 +129,14 @@ impl ExactPolygon {
         ]
     }
 
-    /// The cached approximate grid coordinates of vertex `i` and their error bound.
+    /// The cached approximate grid coordinates of vertex `i` and their error bound (0 for
+    /// a vertex that is exactly a grid point). Panics if `i` is out of range.
     pub fn vertex_approx(&self, i: usize) -> ([f64; 3], f64) {
         let c = &self.corners[i];
         (c.pos, c.err as f64)
     }
 
-    /// Exact side of `h` at vertex `i`, without the filter.
+    /// Exact side of `h` at vertex `i`, without the filter. Panics if `i` is out of range.
     pub fn side_exact(&self, i: usize, h: &Plane) -> Side {
         let c = &self.corners[i];
         if let Some(g) = as_grid(&c.pos, c.err as f64) {
