@@ -78,7 +78,7 @@ impl Builder {
 /// counter-clockwise seen from the front of `S`.
 ///
 /// Layout: the data the filter reads (cached positions, per-polygon bounds) comes first
-/// and is stored apart from the edge planes; up to [`INLINE`] vertices need no heap.
+/// and is stored apart from the edge planes; up to four vertices need no heap.
 #[derive(Debug, Clone)]
 #[repr(C)]
 pub struct ExactPolygon {

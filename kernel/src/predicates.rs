@@ -140,7 +140,9 @@ pub fn side_of_intersection(p1: &Plane, p2: &Plane, p3: &Plane, h: &Plane) -> Op
 /// An approximation of the intersection of three planes in grid coordinates, with a bound
 /// `err` on the error of every coordinate. `None` if the planes do not meet in one point.
 ///
-/// First Cramer's rule in f64 with a bound on every rounding (see [`approximate_f`]);
+/// First Cramer's rule in f64 with a bound on every rounding (each entry of a determinant
+/// suffers at most 10 roundings, bounded by `2^-48` times the same determinant on absolute
+/// values);
 /// when the denominator is too uncertain, the exact `I256` determinants are rounded
 /// instead (relative error at most `8u`).
 pub fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3], f64)> {
