@@ -2,7 +2,9 @@
 //! prints a Markdown table: `cargo run --release -p limn-zbuffer --example million`.
 //!
 //! Arguments (optional): grid size `n` (2·n² triangles, default 707), width, height,
-//! and the methods to run (default `zbuffer scanline raycast`).
+//! and the methods to run (default `zbuffer scanline raycast`). With
+//! `LIMN_MILLION_SCENE=soup` the scene is 2·n² random small triangles in a cube
+//! instead (heavy overdraw, many intersections).
 
 use std::time::Instant;
 
@@ -46,6 +48,29 @@ fn terrain(n: usize) -> Scene {
     s
 }
 
+/// `count` random small triangles in a cube (edges about `size`), unrelated to each
+/// other: much overdraw, many intersections.
+fn soup(count: usize, size: f64) -> Scene {
+    let mut s = Scene::default();
+    s.add_material(Material::diffuse("soup", [0.8, 0.5, 0.3]));
+    s.add_object("soup");
+    let mut seed = 0x2545_f491_4f6c_dd1du64;
+    let mut r = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    for _ in 0..count {
+        let c = DVec3::new(r(), r(), r());
+        let pts: Vec<DVec3> = (0..3)
+            .map(|_| c + DVec3::new(r(), r(), r()) * size)
+            .collect();
+        s.add_polygon(&pts, 0, 0).expect("face");
+    }
+    s
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let n: usize = args.first().and_then(|a| a.parse().ok()).unwrap_or(707);
@@ -57,7 +82,12 @@ fn main() {
         vec![Method::ZBuffer, Method::ScanLine, Method::RayCast]
     };
     let t = Instant::now();
-    let scene = terrain(n);
+    let is_soup = std::env::var("LIMN_MILLION_SCENE").is_ok_and(|v| v == "soup");
+    let scene = if is_soup {
+        soup(2 * n * n, 0.02)
+    } else {
+        terrain(n)
+    };
     eprintln!(
         "built {} triangles in {:.2?}",
         scene.faces.len(),

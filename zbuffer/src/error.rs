@@ -30,6 +30,12 @@ pub enum ZError {
         /// The offending value.
         value: f64,
     },
+    /// The A-buffer would need more than 2³² − 1 fragments.
+    #[error("the A-buffer needs more than 2^32 - 1 fragments")]
+    TooManyFragments,
+    /// The picture has more pixels than [`crate::MAX_PIXELS`].
+    #[error("picture of {0}x{1} pixels is larger than the references render")]
+    TooManyPixels(u32, u32),
     /// Two images that must have the same size do not.
     #[error("image sizes differ: {0}x{1} and {2}x{3}")]
     SizeMismatch(u32, u32, u32, u32),

@@ -84,6 +84,10 @@ pub use limn_scene::{Camera, Scene};
 /// the target; larger values are rejected with [`ZError::OutOfRange`].
 pub const MAX_COORD: f64 = 1.2676506002282294e30;
 
+/// The largest picture rendered, in pixels (2²⁸, e.g. 16384 × 16384): beyond it the
+/// buffers would need tens of gigabytes.
+pub const MAX_PIXELS: u64 = 1 << 28;
+
 /// The smallest non-zero coordinate magnitude ray casting accepts (2⁻¹⁰⁰ ≈ 7.9e-31), so
 /// that its exact arithmetic never underflows.
 pub const MIN_RAYCAST_COORD: f64 = 7.888609052210118e-31;

@@ -26,10 +26,10 @@ pub enum LineAlgorithm {
 }
 
 /// Calls `plot(x, y)` for every pixel of the line from pixel `(x0, y0)` to pixel
-/// `(x1, y1)`, both included, in order from the first. Coordinates must stay within
-/// ±2⁶⁰ (larger values are clamped there).
+/// `(x1, y1)`, both included, in order from the first: `max(|dx|, |dy|) + 1` pixels.
+/// Coordinates are clamped to ±2⁵⁹ (so the integer error term cannot overflow).
 pub fn bresenham(x0: i64, y0: i64, x1: i64, y1: i64, mut plot: impl FnMut(i64, i64)) {
-    const LIM: i64 = 1 << 60;
+    const LIM: i64 = 1 << 59;
     let (x0, y0, x1, y1) = (
         x0.clamp(-LIM, LIM),
         y0.clamp(-LIM, LIM),

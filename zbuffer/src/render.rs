@@ -169,24 +169,26 @@ pub fn render(
             let prep = prepared(scene, &frame, opts, &mut stats);
             let o = warnock::warnock(&prep, w, h, opts.depth);
             stats.fragments = o.areas;
+            stats.working_bytes = o.working_bytes;
             (o.ids, o.depths, None)
         }
         Method::ABuffer => {
             let prep = prepared(scene, &frame, opts, &mut stats);
             let eye = frame.camera.eye;
-            let look = |face: u32| {
+            let alpha = |face: u32| {
                 let m = &scene.materials[scene.faces[face as usize].material as usize];
-                let alpha = if m.opacity.is_nan() {
+                if m.opacity.is_nan() {
                     1.0
                 } else {
                     m.opacity.clamp(0.0, 1.0)
-                };
-                FaceLook {
-                    color: flat_color(scene, face, eye),
-                    alpha,
                 }
             };
-            let a = abuffer(&prep, w, h, opts.depth, opts.background, &look);
+            let color = |face: u32| flat_color(scene, face, eye);
+            let look = FaceLook {
+                color: &color,
+                alpha: &alpha,
+            };
+            let a = abuffer(&prep, w, h, opts.depth, opts.background, &look)?;
             stats.fragments = a.fragments;
             stats.working_bytes = a.working_bytes;
             (a.ids, a.depths, Some(a.colors))

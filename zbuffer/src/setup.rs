@@ -34,6 +34,9 @@ impl Frame {
     /// Validates the inputs and fixes the near and far planes.
     pub fn new(scene: &Scene, camera: &Camera, opts: &RenderOptions) -> Result<Frame, ZError> {
         camera.validate()?;
+        if camera.width as u64 * camera.height as u64 > crate::MAX_PIXELS {
+            return Err(ZError::TooManyPixels(camera.width, camera.height));
+        }
         scene.validate()?;
         for (what, p) in [("eye", camera.eye), ("target", camera.target)] {
             check_coord(what, p)?;

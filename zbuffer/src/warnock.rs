@@ -32,6 +32,8 @@ pub(crate) struct Output {
     pub depths: Vec<f64>,
     /// Number of areas examined.
     pub areas: u64,
+    /// Bytes of triangle setups and the top-level list.
+    pub working_bytes: usize,
 }
 
 struct Ctx<'a> {
@@ -70,9 +72,12 @@ pub(crate) fn warnock(prep: &Prepared, width: u32, height: u32, format: DepthFor
             ids: vec![NO_FACE; n],
             depths: vec![f64::INFINITY; n],
             areas: 0,
+            working_bytes: 0,
         },
     };
     let all: Vec<u32> = (0..ctx.tris.len() as u32).collect();
+    ctx.out.working_bytes =
+        ctx.tris.capacity() * std::mem::size_of::<(u32, TriSetup)>() + all.capacity() * 4;
     ctx.area(0, 0, width, height, &all);
     ctx.out
 }

@@ -70,6 +70,12 @@ fn invalid_input_is_an_error_not_a_panic() {
             Err(ZError::BadDepthRange { .. })
         ));
     }
+    let mut big = c;
+    (big.width, big.height) = (20000, 20000);
+    assert_eq!(
+        render(&s, &big, Method::ZBuffer, &o).unwrap_err(),
+        ZError::TooManyPixels(20000, 20000)
+    );
     let mut flat = c;
     flat.target = flat.eye;
     assert!(matches!(
