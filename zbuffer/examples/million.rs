@@ -126,6 +126,12 @@ fn main() {
                 r.stats.fragments,
                 r.stats.working_bytes as f64 / (1 << 20) as f64
             );
+            if m == Method::RayCast {
+                eprintln!(
+                    "raycast: {} exact depth comparisons",
+                    r.stats.exact_fallbacks
+                );
+            }
             if let Ok(path) = std::env::var("LIMN_MILLION_PNG") {
                 r.color
                     .save_png(std::path::Path::new(&format!("{path}-{m}.png")))
