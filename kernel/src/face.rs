@@ -3,11 +3,14 @@
 //! 1. Corners are snapped to the grid; consecutive duplicates are dropped.
 //! 2. The supporting plane is taken from the fan triangle `(p₀, pᵢ, pᵢ₊₁)` that agrees
 //!    best with the face's (exact, integer) Newell normal.
-//! 3. **Input planarisation.** If every snapped corner is within one grid step of that
-//!    plane, measured along the dominant axis `k` of its normal (exactly:
-//!    `|S(p)| <= |n_k|`), every corner is moved along `k` onto the plane. This is done
-//!    implicitly: edge planes contain the direction `e_k`, so vertex `S ∩ Eᵢ₋₁ ∩ Eᵢ` is the
-//!    corner projected along `k`. It only absorbs snapping noise, once, at input.
+//! 3. **Exact planarity.** Only a face whose snapped corners all lie exactly on that plane
+//!    goes in as one polygon. A face that snapping made non-planar (even by less than a
+//!    grid step) is triangulated instead: moving its corners onto one plane would open
+//!    cracks and overlaps of up to a grid step against its neighbours, and those would
+//!    turn into real (if tiny) interpenetrations that must be split. With triangles, faces
+//!    that share corners in the input share them exactly. (The polygon builder still
+//!    supports corners within one step along `k`: vertex `S ∩ Eᵢ₋₁ ∩ Eᵢ` is the corner
+//!    projected along `k`, since edge planes contain the direction `e_k`.)
 //! 4. Collinear corners are removed and strict convexity is checked exactly in the
 //!    projection along `k`; a convex face becomes one polygon with all edges original.
 //! 5. Otherwise the outline is triangulated (constrained Delaunay, projected along the
@@ -183,8 +186,7 @@ pub(crate) fn face_polygons(
 fn try_convex(g: &[GridPoint], support: Plane) -> Option<ExactPolygon> {
     let n_s = support.normal();
     let k = dominant_axis(n_s);
-    let reach = n_s[k].unsigned_abs() as u128;
-    if g.iter().any(|p| support.eval(p).unsigned_abs() > reach) {
+    if g.iter().any(|p| support.eval(p) != 0) {
         return None;
     }
     let mut pts = g.to_vec();

@@ -11,16 +11,14 @@ pub const NORMAL_BOUND: i64 = 1 << 55;
 /// Exclusive bound on `|d|` of every plane the exact kernel uses.
 pub const OFFSET_BOUND: i128 = 1 << 83;
 
-/// The integer coefficients of a plane, stored compactly (32 bytes, 8-byte aligned; `d`
-/// is split into two 64-bit halves because an `i128` field would force 48 bytes). This is
-/// how polygons store their edge planes; [`Plane`] adds the f64 roundings the filter uses.
+/// The integer coefficients of a plane, stored compactly in 32 bytes (8-byte aligned):
+/// `a`, `b`, `c` need 56 bits each and `d` 84 bits, 252 bits in all. Word 0 holds the low
+/// 64 bits of `d`; words 1 to 3 hold `a`, `b`, `c` in their low 56 bits and one byte each
+/// of the high 24 bits of `d` (sign-extended from word 3). This is how polygons store
+/// their edge and support planes; [`Plane`] adds the f64 roundings the filter uses.
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub(crate) struct Coeffs {
-    a: i64,
-    b: i64,
-    c: i64,
-    d_lo: u64,
-    d_hi: i64,
+    w: [u64; 4],
 }
 
 impl fmt::Debug for Coeffs {
@@ -29,29 +27,42 @@ impl fmt::Debug for Coeffs {
     }
 }
 
+const LOW56: u64 = (1 << 56) - 1;
+
 impl Coeffs {
     #[inline]
     pub(crate) fn new(a: i64, b: i64, c: i64, d: i128) -> Coeffs {
         debug_assert!(a.abs() < NORMAL_BOUND && b.abs() < NORMAL_BOUND && c.abs() < NORMAL_BOUND);
         debug_assert!(d.abs() < OFFSET_BOUND);
         debug_assert!(a != 0 || b != 0 || c != 0);
+        let hi = (d >> 64) as i64 as u64;
         Coeffs {
-            a,
-            b,
-            c,
-            d_lo: d as u64,
-            d_hi: (d >> 64) as i64,
+            w: [
+                d as u64,
+                (a as u64 & LOW56) | ((hi & 0xff) << 56),
+                (b as u64 & LOW56) | (((hi >> 8) & 0xff) << 56),
+                (c as u64 & LOW56) | (((hi >> 16) & 0xff) << 56),
+            ],
         }
     }
 
     #[inline]
     pub(crate) fn normal(&self) -> [i64; 3] {
-        [self.a, self.b, self.c]
+        let unpack = |w: u64| ((w << 8) as i64) >> 8;
+        [unpack(self.w[1]), unpack(self.w[2]), unpack(self.w[3])]
+    }
+
+    /// Bits 64 and up of `d`, sign-extended (magnitude below `2^19`).
+    #[inline]
+    fn d_hi(&self) -> i64 {
+        (((self.w[3] as i64) >> 56) << 16)
+            | (((self.w[2] >> 56) << 8) as i64)
+            | ((self.w[1] >> 56) as i64)
     }
 
     #[inline]
     pub(crate) fn d(&self) -> i128 {
-        ((self.d_hi as i128) << 64) | self.d_lo as i128
+        ((self.d_hi() as i128) << 64) | self.w[0] as i128
     }
 
     /// `d` rounded to f64 without a 128-bit conversion: one rounding when `|d| < 2^63`,
@@ -59,25 +70,28 @@ impl Coeffs {
     /// exactly; the low half and the sum round once each).
     #[inline]
     pub(crate) fn d_f64(&self) -> f64 {
-        let lo = self.d_lo as i64;
-        if (lo >> 63) == self.d_hi {
+        let lo = self.w[0] as i64;
+        let hi = self.d_hi();
+        if (lo >> 63) == hi {
             lo as f64
         } else {
-            self.d_hi as f64 * 18_446_744_073_709_551_616.0 + self.d_lo as f64
+            hi as f64 * 18_446_744_073_709_551_616.0 + self.w[0] as f64
         }
     }
 
     #[inline]
     pub(crate) fn flipped(&self) -> Coeffs {
-        Coeffs::new(-self.a, -self.b, -self.c, -self.d())
+        let [a, b, c] = self.normal();
+        Coeffs::new(-a, -b, -c, -self.d())
     }
 
     /// The full plane (with its f64 roundings).
     #[inline]
     pub(crate) fn plane(&self) -> Plane {
+        let [a, b, c] = self.normal();
         Plane {
             k: *self,
-            f: [self.a as f64, self.b as f64, self.c as f64, self.d_f64()],
+            f: [a as f64, b as f64, c as f64, self.d_f64()],
         }
     }
 }

@@ -132,14 +132,20 @@ fn world_coord() -> impl Strategy<Value = f64> {
     prop_oneof![
         -1.0f64..1.0,
         (-1000i64..1000, -3i64..=3).prop_map(move |(k, ulps)| {
-            let x = (k as f64 + 0.5) * step;
-            f64::from_bits((x.to_bits() as i64 + ulps) as u64)
+            nudge((k as f64 + 0.5) * step, ulps)
         }),
         (-1000i64..1000, -3i64..=3).prop_map(move |(k, ulps)| {
-            let x = k as f64 * step * 1000.0;
-            f64::from_bits((x.to_bits() as i64 + ulps) as u64).clamp(-1.0, 1.0)
+            nudge(k as f64 * step * 1000.0, ulps).clamp(-1.0, 1.0)
         }),
     ]
+}
+
+/// `x` moved by `ulps` representable values (through zero and subnormals as needed).
+fn nudge(mut x: f64, ulps: i64) -> f64 {
+    for _ in 0..ulps.abs() {
+        x = if ulps > 0 { x.next_up() } else { x.next_down() };
+    }
+    x
 }
 
 fn big(v: i64) -> num_bigint::BigInt {
