@@ -378,3 +378,25 @@ fn cut_corner(c: &Corner) -> Corner {
         original: false,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The depth orderings keep about a million polygons: guard the layout.
+    #[test]
+    fn layout_stays_compact() {
+        assert_eq!(std::mem::size_of::<Corner>(), 32);
+        assert_eq!(std::mem::size_of::<Coeffs>(), 32);
+        assert_eq!(std::mem::size_of::<Plane>(), 64);
+        assert!(std::mem::size_of::<ExactPolygon>() <= 312);
+    }
+
+    #[test]
+    fn err32_rounds_up() {
+        for e in [1e-300, 0.1, 1.0 / 3.0, 1e30, 123456.789] {
+            assert!(err32(e) as f64 >= e);
+        }
+        assert_eq!(err32(0.0), 0.0);
+    }
+}
