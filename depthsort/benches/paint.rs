@@ -14,14 +14,60 @@ use limn_depthsort::paint::{
 const FRAGMENTS: usize = 100_000;
 
 fn main() {
+    // LIMN_PAINT_SUMMARY=0 skips the table (for profiling one benchmark).
+    if std::env::var_os("LIMN_PAINT_SUMMARY").is_none_or(|v| v != "0") {
+        summary();
+    }
+    divan::main();
+}
+
+/// CPU time this thread has used, in seconds (Linux; 0 elsewhere).
+fn thread_cpu() -> f64 {
+    std::fs::read_to_string("/proc/thread-self/schedstat")
+        .ok()
+        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
+        .map_or(0.0, |ns| ns / 1e9)
+}
+
+/// Best wall and CPU times of `runs` calls of `f`, in milliseconds.
+fn best_of(runs: usize, mut f: impl FnMut()) -> (f64, f64) {
+    let (mut wall, mut cpu) = (f64::MAX, f64::MAX);
+    for _ in 0..runs {
+        let (t, c) = (std::time::Instant::now(), thread_cpu());
+        f();
+        cpu = cpu.min(thread_cpu() - c);
+        wall = wall.min(t.elapsed().as_secs_f64());
+    }
+    (wall * 1e3, cpu * 1e3)
+}
+
+/// One table with sizes and best times (wall and CPU: the machine may be shared).
+fn summary() {
     let p = picture();
+    eprintln!("| writer | bytes | paths | best wall ms | best CPU ms |");
+    eprintln!("|---|---:|---:|---:|---:|");
     for (name, painter) in painters() {
         let mut out = Vec::new();
         let stats = painter.paint(p, &mut out).unwrap_or_default();
-        eprintln!("{name}: {} bytes, {} paths", out.len(), stats.paths);
+        let runs = if name == "png" { 3 } else { 15 };
+        let (wall, cpu) = best_of(runs, || {
+            let mut out = Vec::with_capacity(out.len());
+            let _ = divan::black_box(painter.paint(p, &mut out));
+        });
+        eprintln!(
+            "| {name} | {} | {} | {wall:.1} | {cpu:.1} |",
+            out.len(),
+            stats.paths
+        );
     }
-    eprintln!("svg crate: {} bytes", svg_crate(p).len());
-    divan::main();
+    let bytes = svg_crate(p).len();
+    let (wall, cpu) = best_of(5, || {
+        divan::black_box(svg_crate(p));
+    });
+    eprintln!(
+        "| svg crate | {bytes} | {} | {wall:.1} | {cpu:.1} |",
+        p.fragments.len()
+    );
 }
 
 fn painters() -> [(&'static str, Box<dyn Painter>); 4] {

@@ -283,7 +283,16 @@ impl Painter for PdfPainter {
 impl Content {
     /// Wraps the content stream into a complete document.
     fn document(self, w: f64, h: f64) -> Vec<u8> {
-        let mut pdf = Pdf::with_capacity(self.buf.len() + 1024);
+        // One allocation for the whole file in the usual case.
+        let capacity = self.buf.len()
+            + self
+                .meshes
+                .iter()
+                .map(|m| m.data.len() + 400)
+                .sum::<usize>()
+            + 100 * (self.fill_alphas.len() + self.stroke_alphas.len())
+            + 2048;
+        let mut pdf = Pdf::with_capacity(capacity);
         let catalog = Ref::new(1);
         let pages = Ref::new(2);
         let page = Ref::new(3);
@@ -326,6 +335,9 @@ impl Content {
             }
         }
         pdf.stream(content, &self.buf);
+        // The copy is in the document now; give the memory back before the rest is written.
+        let Content { buf, meshes, .. } = self;
+        drop(buf);
         for (_, r, stroke, m) in &states {
             let a = f32::from(*m) / 1000.0;
             let mut gs = pdf.ext_graphics(*r);
@@ -335,7 +347,7 @@ impl Content {
                 gs.non_stroking_alpha(a);
             }
         }
-        for ((_, r), mesh) in shadings.iter().zip(&self.meshes) {
+        for ((_, r), mesh) in shadings.iter().zip(&meshes) {
             let mut s = pdf.stream_shading(*r, &mesh.data);
             // `StreamShadingType` is not exported by pdf-writer 0.14: write the number.
             s.pair(Name(b"ShadingType"), 4);
