@@ -2,7 +2,7 @@
 //! overlap, a topological sort of the occlusion graph, and BSP splitting only inside its
 //! strongly connected components (cycles and interpenetrations), recursively.
 
-use limn_kernel::Kernel;
+use crate::shared::ExactVertices;
 
 use crate::ctx::{Ctx, Pair};
 use crate::geom::{boxes_meet, convex_disjoint};
@@ -13,7 +13,11 @@ const MAX_CELLS_PER_ITEM: usize = 64;
 
 /// Calls `f(i, j)` (indices into `set`, i ≠ j, each unordered pair once) for every pair
 /// whose screen boxes meet, using a uniform grid over the set's extent.
-pub(crate) fn box_pairs<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32], mut f: impl FnMut(usize, usize)) {
+pub(crate) fn box_pairs<K: ExactVertices>(
+    ctx: &Ctx<'_, K>,
+    set: &[u32],
+    mut f: impl FnMut(usize, usize),
+) {
     let n = set.len();
     if n < 2 {
         return;
@@ -191,7 +195,7 @@ pub(crate) fn components(n: usize, start: &[u32], adj: &[u32]) -> Vec<Vec<u32>> 
 }
 
 /// Orders one set: constraints, components, and tasks for the stack.
-fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
+fn order_set<K: ExactVertices>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
     let n = set.len();
     let mut edges: Vec<(u32, u32)> = Vec::new();
     let mut pairs = Vec::new();
@@ -242,7 +246,7 @@ fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Tas
 }
 
 /// The adaptive order of `set`.
-pub(crate) fn adaptive<K: Kernel>(
+pub(crate) fn adaptive<K: ExactVertices>(
     ctx: &mut Ctx<'_, K>,
     set: Vec<u32>,
     candidates: usize,

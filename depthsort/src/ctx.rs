@@ -2,12 +2,16 @@
 //! fragment split from it, with its provenance), projections, and the exact pair
 //! relations.
 
+use crate::shared::ExactVertices;
 use glam::{DMat4, DVec3};
-use limn_kernel::{Kernel, PolygonSide, Side};
+use limn_kernel::{PolygonSide, Side};
 use limn_scene::Camera;
 
-use crate::geom::{bbox, Box2};
+use crate::geom::{bbox, convex_disjoint, Box2};
 use crate::options::Stats;
+
+/// A projected polygon.
+type Ring = Vec<[f64; 2]>;
 
 /// No piece.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -15,7 +19,7 @@ pub(crate) const NONE: u32 = u32::MAX;
 /// A convex polygon taking part in the ordering: an input polygon or a piece split from
 /// one. Pieces are never removed: a split piece stays as the parent of its two halves,
 /// so halves that end up next to each other can be joined again exactly.
-pub(crate) struct Piece<K: Kernel> {
+pub(crate) struct Piece<K: ExactVertices> {
     pub poly: K::Polygon,
     pub plane: K::Plane,
     pub face: u32,
@@ -58,7 +62,7 @@ pub(crate) enum Pair {
     Conflict,
 }
 
-pub(crate) struct Ctx<'a, K: Kernel> {
+pub(crate) struct Ctx<'a, K: ExactVertices> {
     pub k: &'a K,
     pub eye: K::Point,
     pub vp: DMat4,
@@ -73,7 +77,7 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     scratch: Vec<DVec3>,
 }
 
-impl<'a, K: Kernel> Ctx<'a, K> {
+impl<'a, K: ExactVertices> Ctx<'a, K> {
     pub fn new(k: &'a K, eye: K::Point, camera: Camera, vp: DMat4, far: f64, seed: u64) -> Self {
         let size = (camera.width + camera.height) as f64;
         Ctx {
@@ -177,11 +181,129 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         }
         let q_cannot_hide_p = q_rel_p == Rel::Far || p_rel_q == Rel::Eye;
         let p_cannot_hide_q = p_rel_q == Rel::Far || q_rel_p == Rel::Eye;
-        match (q_cannot_hide_p, p_cannot_hide_q) {
-            (true, true) => Pair::Free,
+        let pair = match (q_cannot_hide_p, p_cannot_hide_q) {
+            (true, true) => return Pair::Free,
             (true, false) => Pair::SecondBefore,
             (false, true) => Pair::FirstBefore,
+            (false, false) => self.resolve_spanning(p, q),
+        };
+        if pair != Pair::Free && self.only_touch(p, q) {
+            return Pair::Free;
+        }
+        pair
+    }
+
+    /// Whether `p` and `q` share a vertex at which their projections lie in disjoint
+    /// angular sectors: then (both being convex) their projections only touch. Decided
+    /// exactly; `false` when no shared vertex is exactly known.
+    pub fn only_touch(&self, p: u32, q: u32) -> bool {
+        let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
+        let (np, nq) = (self.k.vertex_count(&pp.poly), self.k.vertex_count(&qq.poly));
+        let qv: Vec<Option<K::Exact>> = (0..nq).map(|j| self.k.vertex_exact(&qq.poly, j)).collect();
+        let e = self.k.point_exact(&self.eye);
+        for i in 0..np {
+            let Some(v) = self.k.vertex_exact(&pp.poly, i) else {
+                continue;
+            };
+            let Some(j) = qv.iter().position(|w| *w == Some(v)) else {
+                continue;
+            };
+            let (Some(p1), Some(p2)) = (
+                self.k.vertex_exact(&pp.poly, (i + np - 1) % np),
+                self.k.vertex_exact(&pp.poly, (i + 1) % np),
+            ) else {
+                continue;
+            };
+            let (Some(q1), Some(q2)) = (qv[(j + nq - 1) % nq], qv[(j + 1) % nq]) else {
+                continue;
+            };
+            let o = |a: &K::Exact, b: &K::Exact| self.k.orient(&e, &v, a, b);
+            // Orient both sectors counter-clockwise (as seen from the eye).
+            let (p1, p2) = match o(&p1, &p2) {
+                1 => (p1, p2),
+                -1 => (p2, p1),
+                _ => continue,
+            };
+            let (q1, q2) = match o(&q1, &q2) {
+                1 => (q1, q2),
+                -1 => (q2, q1),
+                _ => continue,
+            };
+            // A boundary ray of one sector whose line leaves the other sector on its
+            // outer side separates them.
+            if (o(&p1, &q1) <= 0 && o(&p1, &q2) <= 0)
+                || (o(&p2, &q1) >= 0 && o(&p2, &q2) >= 0)
+                || (o(&q1, &p1) <= 0 && o(&q1, &p2) <= 0)
+                || (o(&q2, &p1) >= 0 && o(&q2, &p2) >= 0)
+            {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// `p` and `q` each span the other's plane. If they do not pierce each other, only
+    /// one half of `p` (cut by `q`'s plane) can overlap `q` on screen, and that half
+    /// decides the order. A half is ruled out only when the float separating-axis test
+    /// shows a gap wider than the margin, so a doubtful case stays a conflict (and gets
+    /// split); the order itself follows from exact plane sides.
+    fn resolve_spanning(&self, p: u32, q: u32) -> Pair {
+        let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
+        // Halves of p: the one on the eye's side of q's plane cannot be hidden by q; the
+        // far one cannot hide q.
+        let (p_eye, p_far) = self.halves(&pp.poly, qq);
+        let p_eye_clear = p_eye
+            .as_ref()
+            .is_none_or(|h| convex_disjoint(h, &qq.pts, self.margin));
+        let p_far_clear = p_far
+            .as_ref()
+            .is_none_or(|h| convex_disjoint(h, &qq.pts, self.margin));
+        match (p_eye_clear, p_far_clear) {
+            (true, true) => return Pair::Free,
+            (false, true) => return Pair::SecondBefore,
+            (true, false) => return Pair::FirstBefore,
+            (false, false) => {}
+        }
+        let (q_eye, q_far) = self.halves(&qq.poly, pp);
+        let q_eye_clear = q_eye
+            .as_ref()
+            .is_none_or(|h| convex_disjoint(h, &pp.pts, self.margin));
+        let q_far_clear = q_far
+            .as_ref()
+            .is_none_or(|h| convex_disjoint(h, &pp.pts, self.margin));
+        match (q_eye_clear, q_far_clear) {
+            (true, true) => Pair::Free,
+            (false, true) => Pair::FirstBefore,
+            (true, false) => Pair::SecondBefore,
             (false, false) => Pair::Conflict,
+        }
+    }
+
+    /// The projected halves of `poly` on the eye's side and on the far side of `by`'s
+    /// plane.
+    fn halves(
+        &self,
+        poly: &K::Polygon,
+        by: &Piece<K>,
+    ) -> (Option<Ring>, Option<Ring>) {
+        let (front, back) = self.k.split(poly, &by.plane);
+        let project = |h: Option<K::Polygon>| {
+            h.map(|h| {
+                let mut w = Vec::new();
+                self.k.vertices_world(&h, &mut w);
+                w.iter()
+                    .map(|&v| {
+                        let pr = self.camera.project_with(&self.vp, v);
+                        [pr.x, pr.y]
+                    })
+                    .collect::<Vec<_>>()
+            })
+        };
+        let (front, back) = (project(front), project(back));
+        if by.eye_front {
+            (front, back)
+        } else {
+            (back, front)
         }
     }
 

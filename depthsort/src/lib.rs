@@ -41,16 +41,18 @@ pub mod paint;
 mod partition;
 mod picture;
 mod prepare;
+mod shared;
 
 use std::time::Instant;
 
 use glam::DVec3;
-use limn_kernel::{ExactKernel, FloatKernel, Kernel};
+use limn_kernel::{ExactKernel, FloatKernel};
 use limn_scene::{Camera, Scene};
 
 use crate::ctx::Ctx;
 pub use crate::options::{Arith, CullMode, OrderError, OrderOptions, SortMode, Stats};
 pub use crate::picture::{picture, Style};
+pub use crate::shared::ExactVertices;
 
 /// One output fragment: a convex piece of one input face.
 #[derive(Debug, Clone, PartialEq)]
@@ -104,7 +106,7 @@ pub fn order(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Orde
 
 /// Orders `scene` with an explicit kernel (the scene's bounds must lie inside the
 /// kernel's domain).
-pub fn order_with<K: Kernel>(
+pub fn order_with<K: ExactVertices>(
     kernel: &K,
     scene: &Scene,
     camera: &Camera,
@@ -115,7 +117,7 @@ pub fn order_with<K: Kernel>(
 
 /// Like [`order_with`], and also returns the kernel polygon of every fragment (same
 /// positions as [`Ordered::fragments`]), for exact checks.
-pub fn order_polygons<K: Kernel>(
+pub fn order_polygons<K: ExactVertices>(
     kernel: &K,
     scene: &Scene,
     camera: &Camera,

@@ -5,7 +5,7 @@
 //! would be moved twice marks a cycle, broken by splitting. Plane tests are exact; the
 //! extent and projection tests are conservative float prefilters.
 
-use limn_kernel::Kernel;
+use crate::shared::ExactVertices;
 
 use crate::ctx::{Ctx, Rel};
 use crate::geom::convex_disjoint;
@@ -25,7 +25,7 @@ enum Verdict {
     Stuck,
 }
 
-fn test_pair<K: Kernel>(ctx: &Ctx<'_, K>, p: u32, q: u32, q_marked: bool) -> Verdict {
+fn test_pair<K: ExactVertices>(ctx: &Ctx<'_, K>, p: u32, q: u32, q_marked: bool) -> Verdict {
     let (pp, qq) = (&ctx.pieces[p as usize], &ctx.pieces[q as usize]);
     let m = ctx.margin;
     // Tests 1 and 2: screen extents disjoint.
@@ -75,7 +75,7 @@ fn test_pair<K: Kernel>(ctx: &Ctx<'_, K>, p: u32, q: u32, q_marked: bool) -> Ver
 }
 
 /// Inserts `id` into the sorted tail `list[front..]` (farthest first).
-fn insert_sorted<K: Kernel>(ctx: &Ctx<'_, K>, list: &mut Vec<u32>, front: usize, id: u32) {
+fn insert_sorted<K: ExactVertices>(ctx: &Ctx<'_, K>, list: &mut Vec<u32>, front: usize, id: u32) {
     let key = ctx.pieces[id as usize].dmax;
     let tail = &list[front..];
     let pos = tail.partition_point(|&x| ctx.pieces[x as usize].dmax >= key);
@@ -83,7 +83,7 @@ fn insert_sorted<K: Kernel>(ctx: &Ctx<'_, K>, list: &mut Vec<u32>, front: usize,
 }
 
 /// The Newell–Newell–Sancha order of `set`.
-pub(crate) fn newell<K: Kernel>(
+pub(crate) fn newell<K: ExactVertices>(
     ctx: &mut Ctx<'_, K>,
     mut list: Vec<u32>,
     candidates: usize,

@@ -1,7 +1,7 @@
 //! Splitting a set of pieces by the plane of one of them (the BSP step), shared by the
 //! BSP and adaptive orderings.
 
-use limn_kernel::Kernel;
+use crate::shared::ExactVertices;
 
 use crate::ctx::{Ctx, Rel};
 
@@ -11,7 +11,7 @@ const SCORE_SAMPLE: usize = 512;
 /// Picks a splitter among `candidates` random members of `set`: the one whose plane
 /// crosses the fewest other members (scored on a deterministic sample of at most
 /// [`SCORE_SAMPLE`] members).
-pub(crate) fn choose_splitter<K: Kernel>(
+pub(crate) fn choose_splitter<K: ExactVertices>(
     ctx: &mut Ctx<'_, K>,
     set: &[u32],
     candidates: usize,
@@ -53,7 +53,7 @@ pub(crate) fn choose_splitter<K: Kernel>(
 
 /// Splits every member of `set` by the plane of `splitter` and returns the parts on the
 /// far side, in the plane (sorted by face id: later faces win), and on the eye's side.
-pub(crate) fn partition<K: Kernel>(
+pub(crate) fn partition<K: ExactVertices>(
     ctx: &mut Ctx<'_, K>,
     set: &[u32],
     splitter: u32,
@@ -103,7 +103,11 @@ pub(crate) fn push_parts(stack: &mut Vec<Task>, far: Vec<u32>, cop: Vec<u32>, ne
 
 /// The Fuchs–Kedem–Naylor BSP order of `set`: split by a splitter, recurse on both
 /// sides, paint far side, splitter plane, near side.
-pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: usize) -> Vec<u32> {
+pub(crate) fn bsp<K: ExactVertices>(
+    ctx: &mut Ctx<'_, K>,
+    set: Vec<u32>,
+    candidates: usize,
+) -> Vec<u32> {
     let mut out = Vec::with_capacity(set.len());
     let mut stack = vec![Task::Order(set)];
     while let Some(t) = stack.pop() {

@@ -4,7 +4,8 @@
 
 use std::collections::HashMap;
 
-use limn_kernel::{Kernel, PolygonSide, Side};
+use crate::shared::ExactVertices;
+use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
 use crate::ctx::{Ctx, NONE};
@@ -53,7 +54,7 @@ pub(crate) fn closed_opaque_objects(scene: &Scene) -> Vec<bool> {
 }
 
 /// Converts, culls and clips every face; returns the ids of the pieces to order.
-pub(crate) fn prepare<K: Kernel>(
+pub(crate) fn prepare<K: ExactVertices>(
     ctx: &mut Ctx<'_, K>,
     scene: &Scene,
     cull: CullMode,

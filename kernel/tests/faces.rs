@@ -220,13 +220,18 @@ fn non_planar_quad_is_two_triangles() {
 }
 
 #[test]
-fn snap_noise_is_planarised() {
-    // A square whose corner is one grid step off the plane: still one polygon, all edges
-    // original, vertices exactly on the support plane (checked by check_polygon).
+fn snap_noise_is_triangulated_so_neighbours_share_corners_exactly() {
+    // A square whose corner is one grid step off the plane: two triangles whose corners
+    // are the input grid points; the diagonal is not an original edge.
     let k = kernel();
     let quad = [[0, 0, 0], [1000, 0, 0], [1000, 1000, 1], [0, 1000, 0]];
     let polys = face(&k, &quad);
     check_all(&polys);
+    assert_eq!(polys.len(), 2);
+    assert_eq!(originals(&polys), 4);
+    // The exactly planar square stays one polygon.
+    let flat = [[0, 0, 0], [1000, 0, 0], [1000, 1000, 0], [0, 1000, 0]];
+    let polys = face(&k, &flat);
     assert_eq!(polys.len(), 1);
     assert_eq!(originals(&polys), 4);
 }

@@ -52,14 +52,14 @@ fn cam(eye: DVec3, target: DVec3) -> Camera {
 pub fn cyclic_quads() -> Case {
     let (mut s, m, o) = scene_with_palette();
     let (r, len, h, w) = (1.0, 2.5, 0.5, 0.5);
-    for k in 0..3 {
+    for (k, &mat) in m.iter().take(3).enumerate() {
         let th = k as f64 * std::f64::consts::TAU / 3.0;
         let d = v(th.cos(), th.sin(), 0.0);
         let n = v(th.sin(), -th.cos(), 0.0);
         let c = n * r;
         let at = |t: f64, side: f64| c + d * t + n * (side * w / 2.0) + v(0.0, 0.0, -h * t / len);
         let quad = [at(-len, -1.0), at(len, -1.0), at(len, 1.0), at(-len, 1.0)];
-        s.add_polygon(&quad, m[k], o).expect("valid quad");
+        s.add_polygon(&quad, mat, o).expect("valid quad");
     }
     Case {
         name: "cyclic_quads",
@@ -102,7 +102,7 @@ pub fn woven_grid() -> Case {
     // Heights of a strip at its crossings, extended half a step beyond both ends.
     let profile = |i: usize, sign: f64| -> Vec<(f64, f64)> {
         let mut pts = Vec::new();
-        let z = |j: usize| sign * amp * if (i + j) % 2 == 0 { 1.0 } else { -1.0 };
+        let z = |j: usize| sign * amp * if (i + j).is_multiple_of(2) { 1.0 } else { -1.0 };
         pts.push((centre(0) - 0.5, 0.0));
         for j in 0..n {
             pts.push((centre(j), z(j)));
