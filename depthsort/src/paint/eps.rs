@@ -46,7 +46,7 @@ pub struct EpsOptions {
     /// Maximal decimals for colour components. Default 4; at most 9.
     pub color_decimals: u8,
     /// The colour translucent paint is blended with when the picture has no background.
-    /// Default white.
+    /// Default white; components are clamped to [0, 1] and non-finite ones read as 1.
     pub paper: [f64; 3],
 }
 
