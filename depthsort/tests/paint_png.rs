@@ -245,3 +245,27 @@ fn empty_picture_is_transparent() {
     let px = render(&Picture::new(3, 4));
     assert!(px.pixels().iter().all(|c| c.alpha() == 0));
 }
+
+#[test]
+fn gouraud_fragments_of_one_face_show_no_seam() {
+    // A square with an affine colour ramp, cut along its diagonal into two fragments.
+    let ramp = |p: [f64; 2]| [p[0] / 60.0, 0.5, 1.0 - p[0] / 60.0, 1.0];
+    let tri = |pts: Vec<[f64; 2]>| {
+        let mut f = PaintFragment::new(pts.clone(), BLUE);
+        f.vertex_colors = Some(pts.into_iter().map(ramp).collect());
+        f
+    };
+    let mut p = Picture::new(60, 60);
+    p.fragments
+        .push(tri(vec![[10.0, 10.0], [50.0, 10.0], [50.0, 50.0]]));
+    p.fragments
+        .push(tri(vec![[10.0, 10.0], [50.0, 50.0], [10.0, 50.0]]));
+    let px = render(&p);
+    for i in 11..49 {
+        let c = rgba(&px, i, i);
+        assert_eq!(c[3], 255, "diagonal pixel {i}");
+        let want = ramp([f64::from(i) + 0.5, 0.0]).map(|v| v * 255.0);
+        assert!((f64::from(c[0]) - want[0]).abs() <= 1.0, "{c:?} at {i}");
+        assert!((f64::from(c[2]) - want[2]).abs() <= 1.0, "{c:?} at {i}");
+    }
+}

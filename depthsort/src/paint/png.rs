@@ -242,30 +242,45 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
         }
     }
     let mean = mean.map(|v| v / count.max(1.0));
-    let mut color = vec![mean; bw * bh];
-    let mut best = vec![f64::NEG_INFINITY; bw * bh];
-    for t in &tris {
-        let lo = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
-        let hi = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
-        let clamp = |v: f64, a: u32, b: u32| (v.max(f64::from(a)).min(f64::from(b))) as u32;
-        let (tx0, tx1) = (
-            clamp(lo(0).floor() - 1.0, x0, x1),
-            clamp(hi(0).ceil() + 1.0, x0, x1),
-        );
-        let (ty0, ty1) = (
-            clamp(lo(1).floor() - 1.0, y0, y1),
-            clamp(hi(1).ceil() + 1.0, y0, y1),
-        );
-        let [a, b, c] = t.p;
-        for j in ty0..ty1 {
-            let py = f64::from(j) + 0.5;
+    // Pixel ranges each triangle can colour: its bounds grown by a pixel for the rim.
+    let ranges: Vec<[u32; 4]> = tris
+        .iter()
+        .map(|t| {
+            let lo = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
+            let hi = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
+            let clamp = |v: f64, a: u32, b: u32| v.max(f64::from(a)).min(f64::from(b)) as u32;
+            [
+                clamp(lo(0).floor() - 1.0, x0, x1),
+                clamp(hi(0).ceil() + 1.0, x0, x1),
+                clamp(lo(1).floor() - 1.0, y0, y1),
+                clamp(hi(1).ceil() + 1.0, y0, y1),
+            ]
+        })
+        .collect();
+
+    // One row at a time, so memory stays proportional to the run's width.
+    let alpha = f64::from(alpha) / 255.0;
+    let stride = w as usize * 4;
+    let coverage = mask.data();
+    let data = pixmap.data_mut();
+    let mut color = vec![mean; bw];
+    let mut best = vec![f64::NEG_INFINITY; bw];
+    for j in y0..y1 {
+        color.fill(mean);
+        best.fill(f64::NEG_INFINITY);
+        let py = f64::from(j) + 0.5;
+        for (t, &[tx0, tx1, ty0, ty1]) in tris.iter().zip(&ranges) {
+            if j < ty0 || j >= ty1 {
+                continue;
+            }
+            let [a, b, c] = t.p;
             for i in tx0..tx1 {
                 let px = f64::from(i) + 0.5;
                 let l1 = ((px - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (py - a[1])) * t.inv_det;
                 let l2 = ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) * t.inv_det;
                 let l0 = 1.0 - l1 - l2;
                 let score = l0.min(l1).min(l2);
-                let idx = (j - y0) as usize * bw + (i - x0) as usize;
+                let idx = (i - x0) as usize;
                 if score > best[idx] {
                     best[idx] = score;
                     let l = [l0.max(0.0), l1.max(0.0), l2.max(0.0)];
@@ -275,24 +290,17 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
                 }
             }
         }
-    }
-
-    let alpha = f64::from(alpha) / 255.0;
-    let stride = w as usize * 4;
-    let data = pixmap.data_mut();
-    let coverage = mask.data();
-    for j in 0..bh {
-        for i in 0..bw {
-            let m = coverage[j * bw + i];
+        let row = (j - y0) as usize * bw;
+        for (i, c) in color.iter().enumerate() {
+            let m = coverage[row + i];
             if m == 0 {
                 continue;
             }
             let a = alpha * f64::from(m) / 255.0;
-            let at = (y0 as usize + j) * stride + (x0 as usize + i) * 4;
+            let at = j as usize * stride + (x0 as usize + i) * 4;
             let px = &mut data[at..at + 4];
             let out_a = a * 255.0 + f64::from(px[3]) * (1.0 - a);
             let out_a8 = out_a.round().clamp(0.0, 255.0) as u8;
-            let c = color[j * bw + i];
             for k in 0..3 {
                 let v = c[k] * a * 255.0 + f64::from(px[k]) * (1.0 - a);
                 px[k] = (v.round().clamp(0.0, 255.0) as u8).min(out_a8);
