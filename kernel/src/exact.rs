@@ -29,11 +29,11 @@ const PLANE_POINT_LIMIT: i64 = 1 << 56;
 /// non-finite corner is [`KernelError::NonFinite`]; a corner outside the box is
 /// [`KernelError::OutsideGrid`]. Faces that collapse (fewer than three distinct snapped
 /// corners, zero area) and outlines that are not simple (self-intersecting) give an
-/// empty vector. A face whose snapped corners all lie within one grid step (along the
-/// dominant axis of its normal) of the plane of its best fan triangle, and which is
-/// strictly convex, becomes one polygon: its corners are moved onto that plane along
-/// that axis (input planarisation of snapping noise, done once, exactly). Any other face
-/// is triangulated (constrained Delaunay); diagonals are not original edges.
+/// empty vector. A face whose snapped corners all lie exactly on one plane and which is
+/// strictly convex becomes one polygon with all edges original. Any other face —
+/// non-convex, or made non-planar by snapping — is triangulated (constrained Delaunay)
+/// on its snapped corners, so faces that share corners in the input share them exactly;
+/// diagonals are not original edges.
 ///
 /// World conversion: a vertex's world coordinates are within `4` ulps (relative error
 /// `8·2^-53`) of its exact grid position times the step, plus one rounding of adding the

@@ -182,7 +182,7 @@ pub(crate) fn face_polygons(
     triangulated(&g, newell)
 }
 
-/// The single-polygon path: planarisation check, collinear removal, convexity check.
+/// The single-polygon path: exact planarity check, collinear removal, convexity check.
 fn try_convex(g: &[GridPoint], support: Plane) -> Option<ExactPolygon> {
     let n_s = support.normal();
     let k = dominant_axis(n_s);

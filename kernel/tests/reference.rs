@@ -128,15 +128,12 @@ fn extreme_coefficients_do_not_overflow() {
 /// A world coordinate in [-1, 1], biased toward grid cell boundaries (half steps, where
 /// snapping rounds ties) and nudged by a few ulps.
 fn world_coord() -> impl Strategy<Value = f64> {
-    let step = 2f64.powi(-25);
+    let half_step = |(k, ulps): (i64, i64)| nudge((k as f64 + 0.5) * 2f64.powi(-25), ulps);
+    let coarse = |(k, ulps): (i64, i64)| nudge(k as f64 * 2f64.powi(-15), ulps).clamp(-1.0, 1.0);
     prop_oneof![
         -1.0f64..1.0,
-        (-1000i64..1000, -3i64..=3).prop_map(move |(k, ulps)| {
-            nudge((k as f64 + 0.5) * step, ulps)
-        }),
-        (-1000i64..1000, -3i64..=3).prop_map(move |(k, ulps)| {
-            nudge(k as f64 * step * 1000.0, ulps).clamp(-1.0, 1.0)
-        }),
+        (-1000i64..1000, -3i64..=3).prop_map(half_step),
+        (-1000i64..1000, -3i64..=3).prop_map(coarse),
     ]
 }
 
