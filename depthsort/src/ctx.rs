@@ -281,11 +281,7 @@ impl<'a, K: ExactVertices> Ctx<'a, K> {
 
     /// The projected halves of `poly` on the eye's side and on the far side of `by`'s
     /// plane.
-    fn halves(
-        &self,
-        poly: &K::Polygon,
-        by: &Piece<K>,
-    ) -> (Option<Ring>, Option<Ring>) {
+    fn halves(&self, poly: &K::Polygon, by: &Piece<K>) -> (Option<Ring>, Option<Ring>) {
         let (front, back) = self.k.split(poly, &by.plane);
         let project = |h: Option<K::Polygon>| {
             h.map(|h| {

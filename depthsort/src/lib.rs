@@ -67,6 +67,22 @@ pub struct Fragment {
     pub original_edges: Vec<bool>,
     /// The eye sees the front of the face (its vertices run counter-clockwise).
     pub front_facing: bool,
+    /// Set on the first fragment painted of an input polygon that was split: the whole
+    /// polygon. Painting it instead of the fragment gives the same picture for an opaque
+    /// face (every later piece is painted again, on top, at its own place in the order,
+    /// and whatever comes in between and overlaps a later piece lies behind it), but the
+    /// cut edges of the later pieces then fall on the face's own colour: no seam.
+    pub cover: Option<Cover>,
+}
+
+/// A whole input polygon to paint in place of its first fragment (see
+/// [`Fragment::cover`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cover {
+    /// Vertices in pixel coordinates.
+    pub points: Vec<[f64; 2]>,
+    /// Per edge: does it lie on an edge of the input face?
+    pub original_edges: Vec<bool>,
 }
 
 /// The result of [`order`]: fragments back to front.
@@ -134,7 +150,7 @@ pub fn order_polygons<K: ExactVertices>(
     let (near, far) = cam.near_far(scene);
     let vp = cam.view_projection(near, far);
     let mut ctx = Ctx::new(kernel, eye, cam, vp, far, opts.seed);
-    let items = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
+    let (items, whole) = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
     let t1 = Instant::now();
     let cands = opts.candidates.max(1);
     let order = match opts.sort {
@@ -159,8 +175,29 @@ pub fn order_polygons<K: ExactVertices>(
     };
     let mut fragments = Vec::with_capacity(order.len());
     let mut polys = Vec::with_capacity(order.len());
+    let mut per_face = vec![0u32; scene.faces.len()];
+    for &id in &order {
+        per_face[ctx.pieces[id as usize].face as usize] += 1;
+    }
+    let mut covered = vec![false; scene.faces.len()];
     for id in order {
         let p = &ctx.pieces[id as usize];
+        let f = p.face as usize;
+        let cover = (whole[f] && per_face[f] > 1 && !std::mem::replace(&mut covered[f], true))
+            .then(|| {
+                let pts: Vec<[f64; 2]> = scene.faces[f]
+                    .vertices
+                    .iter()
+                    .map(|&v| {
+                        let pr = ctx.camera.project_with(&ctx.vp, scene.vertices[v as usize]);
+                        [pr.x, pr.y]
+                    })
+                    .collect();
+                Cover {
+                    original_edges: vec![true; pts.len()],
+                    points: pts,
+                }
+            });
         let mut world = Vec::with_capacity(p.pts.len());
         kernel.vertices_world(&p.poly, &mut world);
         let original_edges = (0..world.len())
@@ -172,6 +209,7 @@ pub fn order_polygons<K: ExactVertices>(
             world,
             original_edges,
             front_facing: p.eye_front,
+            cover,
         });
         polys.push(p.poly.clone());
     }

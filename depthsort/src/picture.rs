@@ -7,12 +7,27 @@ use crate::paint::{Outline, PaintFragment, Picture};
 use crate::Ordered;
 
 /// How to turn an order into a picture.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Style {
-    /// Page background (RGBA); `None` = transparent.
+    /// Page background (RGBA); `None` = transparent. Default: `None`.
     pub background: Option<[f64; 4]>,
-    /// Outline original model edges with this style; `None` = no outlines.
+    /// Outline original model edges with this style; `None` = no outlines. Default:
+    /// `None`.
     pub outline: Option<Outline>,
+    /// Paint the first piece of a split opaque polygon as the whole polygon, so that the
+    /// cuts leave no anti-aliasing seams (the picture is otherwise the same; see
+    /// [`crate::Fragment::cover`]). Default: `true`.
+    pub seamless: bool,
+}
+
+impl Default for Style {
+    fn default() -> Self {
+        Style {
+            background: None,
+            outline: None,
+            seamless: true,
+        }
+    }
 }
 
 /// Builds the picture of `ordered` (which must come from `scene`). Each face is shaded
@@ -29,13 +44,21 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
             let c = shade_face(scene, f.face, cam.eye);
             [c[0], c[1], c[2], m.opacity.clamp(0.0, 1.0)]
         });
+        // An opaque face's first piece is painted as the whole polygon (see
+        // `Fragment::cover`); translucent faces must not be painted twice.
+        let (points, original_edges) = match &f.cover {
+            Some(c) if fill[3] >= 1.0 && style.seamless => {
+                (c.points.clone(), c.original_edges.clone())
+            }
+            _ => (f.points.clone(), f.original_edges.clone()),
+        };
         fragments.push(PaintFragment {
-            points: f.points.clone(),
+            points,
             fill,
             vertex_colors: None,
             face: f.face,
             object: face.object,
-            original_edges: f.original_edges.clone(),
+            original_edges,
         });
     }
     Picture {

@@ -53,13 +53,16 @@ pub(crate) fn closed_opaque_objects(scene: &Scene) -> Vec<bool> {
     ok
 }
 
-/// Converts, culls and clips every face; returns the ids of the pieces to order.
+/// Converts, culls and clips every face; returns the ids of the pieces to order, and per
+/// face whether all of it takes part unclipped with one facing (so its projected outline
+/// is exactly the union of its fragments).
 pub(crate) fn prepare<K: ExactVertices>(
     ctx: &mut Ctx<'_, K>,
     scene: &Scene,
     cull: CullMode,
     near: f64,
-) -> Result<Vec<u32>, OrderError> {
+) -> Result<(Vec<u32>, Vec<bool>), OrderError> {
+    let mut whole = vec![false; scene.faces.len()];
     let closed = match cull {
         CullMode::Auto => closed_opaque_objects(scene),
         CullMode::On => vec![true; scene.objects.len()],
@@ -83,25 +86,40 @@ pub(crate) fn prepare<K: ExactVertices>(
         let cull_back = closed[face.object as usize];
         let mut kept_any = false;
         let mut culled_all = true;
+        let mut intact = true;
+        let mut facing = None;
         for poly in polys {
             let plane = ctx.k.support(&poly);
             let side = ctx.k.side_of_point(&plane, &ctx.eye);
+            if *facing.get_or_insert(side) != side {
+                intact = false;
+            }
             match side {
-                Side::On => continue,
-                Side::Back if cull_back => continue,
+                Side::On => {
+                    intact = false;
+                    continue;
+                }
+                Side::Back if cull_back => {
+                    intact = false;
+                    continue;
+                }
                 _ => {}
             }
             culled_all = false;
             let poly = match ctx.k.classify(&poly, &near_plane) {
                 PolygonSide::Front => poly,
                 PolygonSide::Spanning => {
+                    intact = false;
                     ctx.stats.splits += 1;
                     match ctx.k.split(&poly, &near_plane).0 {
                         Some(p) => p,
                         None => continue,
                     }
                 }
-                _ => continue,
+                _ => {
+                    intact = false;
+                    continue;
+                }
             };
             let id = ctx.add(poly, fi as u32, NONE, Some(side == Side::Front));
             let b = ctx.pieces[id as usize].bbox;
@@ -112,6 +130,7 @@ pub(crate) fn prepare<K: ExactVertices>(
             kept_any = true;
             items.push(id);
         }
+        whole[fi] = intact && kept_any;
         if culled_all {
             ctx.stats.faces_culled += 1;
         } else if !kept_any {
@@ -119,5 +138,5 @@ pub(crate) fn prepare<K: ExactVertices>(
         }
     }
     ctx.stats.polygons = items.len();
-    Ok(items)
+    Ok((items, whole))
 }
