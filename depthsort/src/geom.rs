@@ -41,12 +41,13 @@ fn separated_by_edges_of(a: &[[f64; 2]], b: &[[f64; 2]], margin: f64) -> bool {
     for i in 0..n {
         let p = a[i];
         let q = a[(i + 1) % n];
+        // Unnormalised edge normal; the margin is scaled by its length instead.
         let (nx, ny) = (q[1] - p[1], p[0] - q[0]);
-        let len = (nx * nx + ny * ny).sqrt();
+        let len = nx.abs() + ny.abs();
         if len.is_nan() || len <= 0.0 {
             continue;
         }
-        let (nx, ny) = (nx / len, ny / len);
+        let m = margin * len;
         let (mut amin, mut amax) = (f64::INFINITY, f64::NEG_INFINITY);
         for v in a {
             let d = v[0] * nx + v[1] * ny;
@@ -59,7 +60,7 @@ fn separated_by_edges_of(a: &[[f64; 2]], b: &[[f64; 2]], margin: f64) -> bool {
             bmin = bmin.min(d);
             bmax = bmax.max(d);
         }
-        if amax + margin < bmin || bmax + margin < amin {
+        if amax + m < bmin || bmax + m < amin {
             return true;
         }
     }

@@ -2,8 +2,6 @@
 //! edge-on (exactly), clip at the near plane (exactly), and drop what lies outside the
 //! picture (conservatively, in floats).
 
-use std::collections::HashMap;
-
 use crate::shared::ExactVertices;
 use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
@@ -11,20 +9,30 @@ use limn_scene::Scene;
 use crate::ctx::{Ctx, NONE};
 use crate::options::{CullMode, OrderError};
 
-/// Directed edges keyed by the bit patterns of their end points, with use counts.
-type EdgeCounts = HashMap<([u64; 3], [u64; 3]), i32>;
-
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
-/// (by vertex position) must be used exactly once in each direction within the object.
+/// (between vertex positions) must be used exactly once in each direction within the
+/// object.
 pub(crate) fn closed_opaque_objects(scene: &Scene) -> Vec<bool> {
     let n = scene.objects.len();
     let mut ok = vec![true; n];
     let mut has_faces = vec![false; n];
-    let mut edges: Vec<EdgeCounts> = vec![HashMap::new(); n];
-    let key = |v: u32| {
-        let p = scene.vertices[v as usize];
+    // Canonical vertex ids: vertices at the same position (bit for bit) share one.
+    let key = |v: usize| {
+        let p = scene.vertices[v];
         [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
     };
+    let mut by_pos: Vec<u32> = (0..scene.vertices.len() as u32).collect();
+    by_pos.sort_unstable_by_key(|&v| key(v as usize));
+    let mut canon = vec![0u32; scene.vertices.len()];
+    for (i, &v) in by_pos.iter().enumerate() {
+        canon[v as usize] = if i > 0 && key(by_pos[i - 1] as usize) == key(v as usize) {
+            canon[by_pos[i - 1] as usize]
+        } else {
+            v
+        };
+    }
+    // Directed edges (object, from, to).
+    let mut edges: Vec<(u32, u32, u32)> = Vec::new();
     for f in &scene.faces {
         let o = f.object as usize;
         has_faces[o] = true;
@@ -33,22 +41,27 @@ pub(crate) fn closed_opaque_objects(scene: &Scene) -> Vec<bool> {
         }
         let m = f.vertices.len();
         for i in 0..m {
-            let a = key(f.vertices[i]);
-            let b = key(f.vertices[(i + 1) % m]);
+            let a = canon[f.vertices[i] as usize];
+            let b = canon[f.vertices[(i + 1) % m] as usize];
             if a != b {
-                *edges[o].entry((a, b)).or_insert(0) += 1;
+                edges.push((f.object, a, b));
             }
         }
     }
-    for o in 0..n {
-        if !ok[o] || !has_faces[o] {
-            ok[o] = false;
+    edges.sort_unstable();
+    for (i, &(o, a, b)) in edges.iter().enumerate() {
+        let o = o as usize;
+        if !ok[o] {
             continue;
         }
-        let e = &edges[o];
-        ok[o] = e
-            .iter()
-            .all(|(&(a, b), &c)| c == 1 && e.get(&(b, a)) == Some(&1));
+        let dup = (i > 0 && edges[i - 1] == (o as u32, a, b))
+            || (i + 1 < edges.len() && edges[i + 1] == (o as u32, a, b));
+        if dup || edges.binary_search(&(o as u32, b, a)).is_err() {
+            ok[o] = false;
+        }
+    }
+    for o in 0..n {
+        ok[o] &= has_faces[o];
     }
     ok
 }
