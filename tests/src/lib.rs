@@ -4,8 +4,10 @@
 //! * [`checker`]: an exact (rational) checker of the painter's invariant.
 //! * [`exact`]: exact runs of the orderings, ready for the checker.
 //! * [`sample`]: which face the painter shows at sample points, for invariance tests.
+//! * [`reference`]: the painter's face ids against the image-space references.
 
 pub mod checker;
 pub mod corpus;
 pub mod exact;
+pub mod reference;
 pub mod sample;
