@@ -106,7 +106,7 @@ pub struct ViewArgs {
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
     pub up: Option<[f64; 3]>,
     /// Vertical field of view in degrees [default: 45].
-    #[arg(long, value_name = "DEG")]
+    #[arg(long, value_name = "DEG", value_parser = parse_fov)]
     pub fov: Option<f64>,
     /// Visibility ordering [default: adaptive, or the scene file's].
     #[arg(long, value_enum)]
@@ -214,6 +214,17 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
     Ok((w, h))
 }
 
+fn parse_fov(s: &str) -> Result<f64, String> {
+    let f: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if !(f > 0.0 && f < 180.0) {
+        return Err(format!("field of view `{s}` is outside (0, 180) degrees"));
+    }
+    Ok(f)
+}
+
 fn parse_vec3(s: &str) -> Result<[f64; 3], String> {
     let parts: Vec<&str> = s.split(',').collect();
     if parts.len() != 3 {
@@ -245,6 +256,10 @@ mod tests {
         assert_eq!(parse_size("800x600"), Ok((800, 600)));
         assert!(parse_size("0x600").is_err());
         assert!(parse_size("800").is_err());
+        assert_eq!(parse_fov("30"), Ok(30.0));
+        for bad in ["0", "180", "-5", "nan", "inf", "wide"] {
+            assert!(parse_fov(bad).is_err(), "{bad}");
+        }
     }
 
     #[test]

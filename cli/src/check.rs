@@ -61,7 +61,7 @@ pub fn raster(
 pub fn check(a: CheckArgs) -> Result<ExitCode> {
     let loaded = load(&a.input, &a.view)?;
     let scene = &loaded.scene;
-    let cam = camera(scene, &a.view, loaded.opts.size)?;
+    let cam = camera(scene, &a.view, loaded.opts.size, &a.input)?;
     let oo = order_options(&a.view, &loaded.opts)?;
     let ordered = order(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
     let c = &ordered.camera;

@@ -25,8 +25,43 @@ fn main() -> ExitCode {
     match render::run(cli) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("limn: error: {e:#}");
+            eprintln!("limn: error: {}", message(&e));
             ExitCode::from(1)
         }
+    }
+}
+
+/// The error and its causes on one line, `: `-separated, leaving out a cause whose text
+/// the message already contains (many errors repeat their source in their own text).
+fn message(e: &anyhow::Error) -> String {
+    let mut out = String::new();
+    for cause in e.chain() {
+        let s = cause.to_string();
+        if out.contains(&s) {
+            continue;
+        }
+        if !out.is_empty() {
+            out.push_str(": ");
+        }
+        out.push_str(&s);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use anyhow::Context;
+
+    #[test]
+    fn causes_repeated_in_the_message_are_left_out() {
+        let inner = std::io::Error::other("disk on fire");
+        let e = Err::<(), _>(inner)
+            .context("a.obj:3: disk on fire")
+            .unwrap_err();
+        assert_eq!(super::message(&e), "a.obj:3: disk on fire");
+        let e = Err::<(), _>(std::io::Error::other("disk on fire"))
+            .context("cannot write out.svg")
+            .unwrap_err();
+        assert_eq!(super::message(&e), "cannot write out.svg: disk on fire");
     }
 }

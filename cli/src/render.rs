@@ -8,7 +8,7 @@ use anyhow::{bail, Context, Result};
 use glam::DVec3;
 use limn_depthsort::paint::{painter_for, Format, Outline};
 use limn_depthsort::{order, picture, Arith, CullMode, OrderOptions, Ordered, SortMode, Style};
-use limn_scene::load::{load_scene_file, LoadOptions, SceneOptions};
+use limn_scene::load::{load_scene_file, LoadError, LoadOptions, SceneOptions};
 use limn_scene::{Camera, Effects, Scene};
 use serde_json::json;
 
@@ -44,10 +44,10 @@ pub fn load(path: &Path, view: &ViewArgs) -> Result<Loaded> {
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
     let loaded = if is_toml {
-        let (scene, opts) = load_scene_file(path, &opts)?;
+        let (scene, opts) = load_scene_file(path, &opts).map_err(explain)?;
         Loaded { scene, opts }
     } else {
-        let scene = limn_scene::load::load(path, &opts)?;
+        let scene = limn_scene::load::load(path, &opts).map_err(explain)?;
         Loaded {
             scene,
             opts: SceneOptions::default(),
@@ -64,24 +64,59 @@ pub fn load(path: &Path, view: &ViewArgs) -> Result<Loaded> {
     Ok(loaded)
 }
 
+/// A loading error, with the flag that lifts a refusal to follow a reference.
+fn explain(e: LoadError) -> anyhow::Error {
+    if matches!(e.innermost(), LoadError::OutsideFolder { .. }) {
+        let text = format!("{e} (with --allow-outside)");
+        anyhow::Error::new(e).context(text)
+    } else {
+        anyhow::Error::new(e)
+    }
+}
+
 /// The camera: flags first, then the scene file's camera, then framing the scene.
-pub fn camera(scene: &Scene, view: &ViewArgs, size: Option<(u32, u32)>) -> Result<Camera> {
+///
+/// With `--eye` and no camera in the scene file the camera looks at `--target` or the
+/// centre of the scene's bounds; nothing is framed, so a scene too large to frame can
+/// still be drawn from a chosen eye. Without `--eye` the framed camera keeps its
+/// direction when `--target` moves it. Errors name `input`.
+pub fn camera(
+    scene: &Scene,
+    view: &ViewArgs,
+    size: Option<(u32, u32)>,
+    input: &Path,
+) -> Result<Camera> {
     let (w, h) = view.size.or(size).unwrap_or((800, 600));
-    let mut cam = match (view.eye, scene.camera) {
-        (Some(_), _) | (None, None) => Camera::framing(scene, w, h)?,
-        (None, Some(c)) => c,
+    let at = || format!("{}", input.display());
+    let mut cam = match (scene.camera, view.eye) {
+        (Some(c), _) => c,
+        (None, Some(eye)) => {
+            let (lo, hi) = scene
+                .bounds()
+                .with_context(|| format!("{}: empty scene", at()))?;
+            let target = view.target.map_or(lo * 0.5 + hi * 0.5, DVec3::from);
+            Camera::new(DVec3::from(eye), target, w, h)
+        }
+        (None, None) => {
+            let frame_error = || format!("{}: cannot frame the scene (try --eye)", at());
+            let mut c = Camera::framing(scene, w, h).with_context(frame_error)?;
+            if let (Some(fov), Some((lo, hi))) = (view.fov, scene.bounds()) {
+                // Re-frame for the new field of view, from the same direction.
+                let dir = c.eye - c.target;
+                c = Camera::framing_bounds(lo, hi, dir, fov, w, h).with_context(frame_error)?;
+            }
+            if let Some(t) = view.target {
+                let t = DVec3::from(t);
+                c.eye = t + (c.eye - c.target);
+                c.target = t;
+            }
+            c
+        }
     };
     cam.width = w;
     cam.height = h;
     if let Some(fov) = view.fov {
         cam.fov_deg = fov;
-        if view.eye.is_none() && scene.camera.is_none() {
-            // Re-frame for the new field of view.
-            if let Some((lo, hi)) = scene.bounds() {
-                let dir = cam.eye - cam.target;
-                cam = Camera::framing_bounds(lo, hi, dir, fov, w, h)?;
-            }
-        }
     }
     if let Some(e) = view.eye {
         cam.eye = DVec3::from(e);
@@ -92,7 +127,8 @@ pub fn camera(scene: &Scene, view: &ViewArgs, size: Option<(u32, u32)>) -> Resul
     if let Some(u) = view.up {
         cam.up = DVec3::from(u);
     }
-    cam.validate().context("invalid camera")?;
+    cam.validate()
+        .with_context(|| format!("{}: invalid camera", at()))?;
     Ok(cam)
 }
 
@@ -222,7 +258,7 @@ fn render(a: RenderArgs) -> Result<ExitCode> {
     let t0 = Instant::now();
     let progress = Progress::start(a.view.quiet);
     let loaded = load(&a.input, &a.view)?;
-    let cam = camera(&loaded.scene, &a.view, loaded.opts.size)?;
+    let cam = camera(&loaded.scene, &a.view, loaded.opts.size, &a.input)?;
     let oo = order_options(&a.view, &loaded.opts)?;
     let output = a.output.clone().unwrap_or_else(|| {
         let ext = a.format.map_or("svg", |f| match f {
