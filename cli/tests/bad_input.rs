@@ -412,7 +412,7 @@ fn scene_file_naming_a_bad_mesh_names_both_once() {
         "s.toml",
         "# a figure\n[[mesh]]\npath = \"a.obj\"\n",
     );
-    let err = fails(d.path(), "s.toml", &["s.toml:2", "a.obj:3"]);
+    let err = fails(d.path(), "s.toml", &["s.toml:3", "a.obj:3"]);
     assert_eq!(err.matches("a.obj:3").count(), 1, "repeated: {err}");
 }
 
