@@ -2,7 +2,8 @@
 
 use std::path::PathBuf;
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::error::ErrorKind;
+use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 
 /// Draw 3D polygon scenes as resolution-independent pictures with hidden surfaces
 /// removed exactly.
@@ -12,6 +13,27 @@ pub struct Cli {
     /// What to do.
     #[command(subcommand)]
     pub command: Command,
+}
+
+impl Cli {
+    /// Checks combinations of flags that the parser cannot express: two outputs sent to
+    /// standard output at once would be mixed into one stream.
+    pub fn check_conflicts(&self) -> Result<(), clap::Error> {
+        let dash = |p: &Option<PathBuf>| p.as_deref().is_some_and(|p| p.as_os_str() == "-");
+        let clash = match &self.command {
+            Command::Render(r) => dash(&r.output) && dash(&r.view.stats),
+            Command::Demo(d) => dash(&d.output) && dash(&d.stats),
+            // Without --stats the report itself goes to standard output.
+            Command::Check(c) => dash(&c.diff) && (c.view.stats.is_none() || dash(&c.view.stats)),
+        };
+        if clash {
+            return Err(Cli::command().error(
+                ErrorKind::ArgumentConflict,
+                "only one of the outputs can be `-` (standard output)",
+            ));
+        }
+        Ok(())
+    }
 }
 
 /// The subcommands.
@@ -260,6 +282,16 @@ mod tests {
         for bad in ["0", "180", "-5", "nan", "inf", "wide"] {
             assert!(parse_fov(bad).is_err(), "{bad}");
         }
+    }
+
+    #[test]
+    fn two_outputs_on_standard_output_conflict() {
+        let parse = |a: &[&str]| Cli::try_parse_from(a).unwrap().check_conflicts();
+        assert!(parse(&["limn", "render", "a.obj", "-o", "-", "--stats", "-"]).is_err());
+        assert!(parse(&["limn", "render", "a.obj", "-o", "-", "--stats", "s.json"]).is_ok());
+        assert!(parse(&["limn", "demo", "-o", "-", "--stats", "-"]).is_err());
+        assert!(parse(&["limn", "check", "a.obj", "--diff", "-"]).is_err());
+        assert!(parse(&["limn", "check", "a.obj", "--diff", "-", "--stats", "s"]).is_ok());
     }
 
     #[test]

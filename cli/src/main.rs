@@ -22,6 +22,10 @@ fn main() -> ExitCode {
             return ExitCode::from(code);
         }
     };
+    if let Err(e) = cli.check_conflicts() {
+        let _ = e.print();
+        return ExitCode::from(2);
+    }
     match render::run(cli) {
         Ok(code) => code,
         Err(e) => {
