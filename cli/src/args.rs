@@ -32,6 +32,15 @@ impl Cli {
                 "only one of the outputs can be `-` (standard output)",
             ));
         }
+        if let Command::Render(r) = &self.command {
+            // The raster methods neither order fragments nor stroke model edges.
+            if r.method != MethodArg::Painter && (r.view.stats.is_some() || r.outline) {
+                return Err(Cli::command().error(
+                    ErrorKind::ArgumentConflict,
+                    "--stats and --outline apply to the painter only, not to --method",
+                ));
+            }
+        }
         Ok(())
     }
 }
@@ -292,6 +301,27 @@ mod tests {
         assert!(parse(&["limn", "demo", "-o", "-", "--stats", "-"]).is_err());
         assert!(parse(&["limn", "check", "a.obj", "--diff", "-"]).is_err());
         assert!(parse(&["limn", "check", "a.obj", "--diff", "-", "--stats", "s"]).is_ok());
+        assert!(parse(&[
+            "limn",
+            "render",
+            "a.obj",
+            "--method",
+            "zbuffer",
+            "--outline"
+        ])
+        .is_err());
+        assert!(
+            parse(&["limn", "render", "a.obj", "--method", "raycast", "--stats", "-"]).is_err()
+        );
+        assert!(parse(&[
+            "limn",
+            "render",
+            "a.obj",
+            "--method",
+            "painter",
+            "--outline"
+        ])
+        .is_ok());
     }
 
     #[test]

@@ -425,3 +425,20 @@ fn scene_file_settings_are_used_and_flags_win() {
     let svg = std::fs::read_to_string(d.path().join("t.svg")).unwrap();
     assert!(svg.contains("viewBox=\"0 0 320 200\""), "{svg}");
 }
+
+#[test]
+fn painter_only_flags_with_a_raster_method_are_usage_errors() {
+    // Silently ignoring them would leave the caller without the statistics asked for.
+    let d = tempdir();
+    put(d.path(), "a.obj", TRIANGLE_OBJ);
+    for extra in ["--outline", "--stats=s.json"] {
+        let run = limn(
+            d.path(),
+            &[
+                "render", "a.obj", "-o", "z.png", "--method", "zbuffer", extra,
+            ],
+        );
+        assert_failed_cleanly(&run, 2, d.path(), "z.png");
+        assert!(!d.path().join("s.json").exists());
+    }
+}
