@@ -8,6 +8,11 @@ use crate::ctx::{Ctx, Pair};
 use crate::geom::{boxes_meet, convex_disjoint};
 use crate::partition::{choose_splitter, partition, push_parts, Task};
 
+/// A component larger than this, holding more than four fifths of its set, is dense.
+const DENSE_MIN: usize = 256;
+/// BSP levels applied to a dense component before its parts are analysed again.
+const DENSE_LEVELS: u32 = 3;
+
 /// Pieces whose box covers more grid cells than this are tested against everything.
 const MAX_CELLS_PER_ITEM: usize = 64;
 
@@ -240,7 +245,12 @@ fn order_set<K: ExactVertices>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut 
         } else {
             ctx.stats.components += 1;
             ctx.stats.largest_component = ctx.stats.largest_component.max(members.len());
-            stack.push(Task::Split(members));
+            let m = members.len();
+            if m > DENSE_MIN && m * 5 > n * 4 {
+                stack.push(Task::Deep(members, DENSE_LEVELS));
+            } else {
+                stack.push(Task::Split(members));
+            }
         }
     }
 }
@@ -267,6 +277,21 @@ pub(crate) fn adaptive<K: ExactVertices>(
                 let sp = choose_splitter(ctx, &s, candidates);
                 let (far, cop, near) = partition(ctx, &s, sp);
                 push_parts(&mut stack, far, cop, near);
+            }
+            Task::Deep(s, levels) => {
+                if levels == 0 || s.len() <= DENSE_MIN / 4 {
+                    stack.push(Task::Order(s));
+                    continue;
+                }
+                let sp = choose_splitter(ctx, &s, candidates);
+                let (far, cop, near) = partition(ctx, &s, sp);
+                if !near.is_empty() {
+                    stack.push(Task::Deep(near, levels - 1));
+                }
+                stack.push(Task::Emit(cop));
+                if !far.is_empty() {
+                    stack.push(Task::Deep(far, levels - 1));
+                }
             }
         }
     }

@@ -285,8 +285,14 @@ impl<'a, K: ExactVertices> Ctx<'a, K> {
         let (front, back) = self.k.split(poly, &by.plane);
         let project = |h: Option<K::Polygon>| {
             h.map(|h| {
-                let mut w = Vec::new();
-                self.k.vertices_world(&h, &mut w);
+                let n = self.k.vertex_count(&h);
+                let fast: Option<Vec<glam::DVec3>> =
+                    (0..n).map(|i| self.k.vertex_world_fast(&h, i)).collect();
+                let w = fast.unwrap_or_else(|| {
+                    let mut w = Vec::new();
+                    self.k.vertices_world(&h, &mut w);
+                    w
+                });
                 w.iter()
                     .map(|&v| {
                         let pr = self.camera.project_with(&self.vp, v);

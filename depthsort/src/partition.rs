@@ -88,6 +88,9 @@ pub(crate) enum Task {
     Split(Vec<u32>),
     /// Output these pieces in this order.
     Emit(Vec<u32>),
+    /// A dense component: split it by this many BSP levels before analysing the parts
+    /// again (each analysis of a set that is nearly all one cycle is wasted work).
+    Deep(Vec<u32>, u32),
 }
 
 /// Pushes the three parts of a partition so that they are processed far, plane, near.
@@ -113,7 +116,7 @@ pub(crate) fn bsp<K: ExactVertices>(
     while let Some(t) = stack.pop() {
         match t {
             Task::Emit(v) => out.extend(v),
-            Task::Order(s) | Task::Split(s) => {
+            Task::Order(s) | Task::Split(s) | Task::Deep(s, _) => {
                 if s.len() <= 1 {
                     out.extend(s);
                     continue;

@@ -15,6 +15,9 @@ pub trait ExactVertices: Kernel {
     fn point_exact(&self, p: &Self::Point) -> Self::Exact;
     /// The sign (−1, 0, 1) of the orientation of `a`, `b`, `c` as seen from `e`.
     fn orient(&self, e: &Self::Exact, a: &Self::Exact, b: &Self::Exact, c: &Self::Exact) -> i32;
+    /// A cheap world position of vertex `i`, within a millionth of a grid step of the
+    /// true one, when the kernel has it at hand (for the float prefilters only).
+    fn vertex_world_fast(&self, poly: &Self::Polygon, i: usize) -> Option<glam::DVec3>;
 }
 
 impl ExactVertices for ExactKernel {
@@ -36,6 +39,11 @@ impl ExactVertices for ExactKernel {
         let det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
             + a[2] * (b[0] * c[1] - b[1] * c[0]);
         det.signum().as_i32()
+    }
+
+    fn vertex_world_fast(&self, poly: &ExactPolygon, i: usize) -> Option<glam::DVec3> {
+        let (c, err) = poly.vertex_approx(i);
+        (err <= 1e-6).then(|| self.quantizer().world_f(c))
     }
 }
 
@@ -64,5 +72,9 @@ impl ExactVertices for FloatKernel {
         } else {
             0
         }
+    }
+
+    fn vertex_world_fast(&self, poly: &FloatPolygon, i: usize) -> Option<glam::DVec3> {
+        poly.vertices().nth(i)
     }
 }
