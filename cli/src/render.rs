@@ -295,6 +295,7 @@ fn render(a: RenderArgs) -> Result<ExitCode> {
     let fo = &loaded.opts;
     let style = Style {
         seamless: true,
+        smooth: true,
         background: fo.background.map(|c| [c[0], c[1], c[2], 1.0]),
         outline: (a.outline || fo.outline == Some(true)).then(|| {
             let c = fo.outline_color.unwrap_or([0.1, 0.1, 0.1]);
@@ -353,6 +354,7 @@ fn demo(a: DemoArgs) -> Result<ExitCode> {
     let t2 = Instant::now();
     let style = Style {
         seamless: true,
+        smooth: true,
         background: Some([1.0, 1.0, 1.0, 1.0]),
         outline: a.outline.then_some(Outline {
             color: [0.1, 0.1, 0.1, 1.0],

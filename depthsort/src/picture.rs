@@ -1,7 +1,8 @@
 //! From ordered fragments to a paintable [`Picture`]: flat shading per face (only the
 //! effects the scene asks for), opacity, object names, outlines.
 
-use limn_scene::{shade_face, Scene};
+use glam::DVec3;
+use limn_scene::{interpolated_normal, shade_face, shade_point, Scene};
 
 use crate::paint::{Outline, PaintFragment, Picture};
 use crate::Ordered;
@@ -18,6 +19,10 @@ pub struct Style {
     /// cuts leave no anti-aliasing seams (the picture is otherwise the same; see
     /// [`crate::Fragment::cover`]). Default: `true`.
     pub seamless: bool,
+    /// Gouraud shading for lit faces with vertex normals: colours are computed at the
+    /// fragment's vertices (normals interpolated over the input face) and interpolated
+    /// by the painter. Faces without normals stay flat. Default: `true`.
+    pub smooth: bool,
 }
 
 impl Default for Style {
@@ -26,6 +31,7 @@ impl Default for Style {
             background: None,
             outline: None,
             seamless: true,
+            smooth: true,
         }
     }
 }
@@ -46,16 +52,35 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         });
         // An opaque face's first piece is painted as the whole polygon (see
         // `Fragment::cover`); translucent faces must not be painted twice.
+        let use_cover = fill[3] >= 1.0 && style.seamless && f.cover.is_some();
         let (points, original_edges) = match &f.cover {
-            Some(c) if fill[3] >= 1.0 && style.seamless => {
-                (c.points.clone(), c.original_edges.clone())
-            }
+            Some(c) if use_cover => (c.points.clone(), c.original_edges.clone()),
             _ => (f.points.clone(), f.original_edges.clone()),
         };
+        let m = &scene.materials[face.material as usize];
+        let vertex_colors = (style.smooth && m.illum >= 1 && face.normals.is_some()).then(|| {
+            let world: Vec<DVec3> = if use_cover {
+                face.vertices
+                    .iter()
+                    .map(|&v| scene.vertices[v as usize])
+                    .collect()
+            } else {
+                f.world.clone()
+            };
+            world
+                .iter()
+                .map(|&p| {
+                    let n = interpolated_normal(scene, f.face, p)
+                        .unwrap_or_else(|| limn_scene::polygon_normal(&scene.face_points(f.face)));
+                    let c = shade_point(m, p, n, cam.eye, &scene.lights);
+                    [c[0], c[1], c[2], fill[3]]
+                })
+                .collect()
+        });
         fragments.push(PaintFragment {
             points,
             fill,
-            vertex_colors: None,
+            vertex_colors,
             face: f.face,
             object: face.object,
             original_edges,

@@ -29,4 +29,4 @@ pub mod shapes;
 
 pub use camera::{Camera, CameraError, Projected};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
-pub use shade::{polygon_normal, shade_face, shade_point, Effects, Rgb};
+pub use shade::{interpolated_normal, polygon_normal, shade_face, shade_point, Effects, Rgb};

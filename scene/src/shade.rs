@@ -22,6 +22,9 @@ pub struct Effects {
     pub specular: bool,
     /// Some material is translucent (opacity < 1): blending in painter's order.
     pub transparency: bool,
+    /// Some lit face has vertex normals: Gouraud shading (colours computed at the
+    /// vertices and interpolated).
+    pub smooth: bool,
 }
 
 impl Effects {
@@ -31,7 +34,13 @@ impl Effects {
         for f in &scene.faces {
             used[f.material as usize] = true;
         }
-        let mut e = Effects::default();
+        let mut e = Effects {
+            smooth: scene
+                .faces
+                .iter()
+                .any(|f| f.normals.is_some() && scene.materials[f.material as usize].illum >= 1),
+            ..Effects::default()
+        };
         for (m, _) in scene.materials.iter().zip(&used).filter(|(_, &u)| u) {
             if m.illum >= 1 {
                 e.lighting = true;
@@ -57,6 +66,9 @@ impl Effects {
         }
         if self.transparency {
             v.push("transparency");
+        }
+        if self.smooth {
+            v.push("gouraud");
         }
         v
     }
@@ -136,6 +148,42 @@ pub fn shade_point(m: &Material, p: DVec3, n: DVec3, eye: DVec3, lights: &[Light
     out.map(|c| c.clamp(0.0, 1.0))
 }
 
+/// The normal of face `face` at world point `p` (which lies in or on the face),
+/// interpolated from the face's vertex normals; `None` when the face has none. Triangles
+/// interpolate barycentrically; larger faces use the fan triangle from the first corner
+/// that contains `p` (the nearest one when rounding puts `p` just outside all of them).
+pub fn interpolated_normal(scene: &Scene, face: u32, p: DVec3) -> Option<DVec3> {
+    let f = &scene.faces[face as usize];
+    let ns = f.normals.as_ref()?;
+    let c: Vec<DVec3> = f
+        .vertices
+        .iter()
+        .map(|&v| scene.vertices[v as usize])
+        .collect();
+    let n: Vec<DVec3> = ns.iter().map(|&i| scene.normals[i as usize]).collect();
+    let mut best: Option<(f64, DVec3)> = None;
+    for i in 1..c.len() - 1 {
+        let (a, b, d) = (c[0], c[i], c[i + 1]);
+        let nrm = (b - a).cross(d - a);
+        let den = nrm.length_squared();
+        if den <= 0.0 || !den.is_finite() {
+            continue;
+        }
+        let wa = (d - b).cross(p - b).dot(nrm) / den;
+        let wb = (a - d).cross(p - d).dot(nrm) / den;
+        let wd = 1.0 - wa - wb;
+        let worst = wa.min(wb).min(wd);
+        let interp = n[0] * wa + n[i] * wb + n[i + 1] * wd;
+        if best.is_none_or(|(w, _)| worst > w) {
+            best = Some((worst, interp));
+        }
+        if worst >= 0.0 {
+            break;
+        }
+    }
+    best.map(|(_, v)| v).filter(|v| v.length_squared() > 0.0)
+}
+
 /// The flat colour of face `face` seen from `eye`: lit at its centroid with its geometric
 /// normal. Returns `Kd` exactly for `illum 0` materials.
 pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
@@ -159,6 +207,51 @@ mod tests {
         let m = Material::unlit("x", [0.25, 0.5, 0.75]);
         let c = shade_point(&m, DVec3::ZERO, DVec3::Z, DVec3::new(0.0, 0.0, -3.0), &[]);
         assert_eq!(c, [0.25, 0.5, 0.75]);
+    }
+
+    #[test]
+    fn normals_interpolate_barycentrically_and_over_fans() {
+        let mut s = Scene::default();
+        let m = s.add_material(Material::diffuse("m", [1.0; 3]));
+        let o = s.add_object("o");
+        for p in [
+            [0.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [2.0, 2.0, 0.0],
+            [0.0, 2.0, 0.0],
+        ] {
+            s.add_vertex(DVec3::from(p));
+        }
+        s.normals = vec![DVec3::X, DVec3::Y, DVec3::Z, DVec3::NEG_X];
+        let f = s.add_face(&[0, 1, 2, 3], m, o).unwrap();
+        assert_eq!(interpolated_normal(&s, f, DVec3::ZERO), None);
+        s.faces[0].normals = Some(vec![0, 1, 2, 3]);
+        // At a corner: that corner's normal.
+        let n = interpolated_normal(&s, f, DVec3::new(2.0, 2.0, 0.0)).unwrap();
+        assert!((n - DVec3::Z).length() < 1e-12);
+        // Inside the second fan triangle (0, 2, 3): a mix of X, Z and -X only.
+        let n = interpolated_normal(&s, f, DVec3::new(0.5, 1.5, 0.0)).unwrap();
+        assert!(n.y.abs() < 1e-12 && n.z > 0.0);
+        // Inside the first fan triangle (0, 1, 2): no -X component.
+        let n = interpolated_normal(&s, f, DVec3::new(1.5, 0.5, 0.0)).unwrap();
+        assert!(n.y > 0.0 && n.x > 0.0);
+    }
+
+    #[test]
+    fn effects_name_gouraud_only_for_lit_faces_with_normals() {
+        let mut s = Scene::default();
+        let lit = s.add_material(Material::diffuse("lit", [1.0; 3]));
+        let flat = s.add_material(Material::unlit("flat", [1.0; 3]));
+        let o = s.add_object("o");
+        let f = s
+            .add_polygon(&[DVec3::ZERO, DVec3::X, DVec3::Y], flat, o)
+            .unwrap();
+        s.normals = vec![DVec3::Z];
+        s.faces[f as usize].normals = Some(vec![0, 0, 0]);
+        assert!(!Effects::of(&s).smooth);
+        s.faces[f as usize].material = lit;
+        assert!(Effects::of(&s).smooth);
+        assert!(Effects::of(&s).names().contains(&"gouraud"));
     }
 
     #[test]

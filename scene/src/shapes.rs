@@ -7,7 +7,8 @@ use std::collections::HashMap;
 use crate::{Scene, SceneError};
 
 /// Appends a closed icosphere (an icosahedron subdivided `level` times: 20·4^level
-/// triangles) of the given centre and radius. Returns the number of faces added.
+/// triangles) of the given centre and radius, with the sphere's normals as vertex normals
+/// (so lit materials are Gouraud-shaded). Returns the number of faces added.
 pub fn icosphere(
     scene: &mut Scene,
     centre: DVec3,
@@ -76,11 +77,14 @@ pub fn icosphere(
         tris = next;
     }
     let base = scene.vertices.len() as u32;
+    let nbase = scene.normals.len() as u32;
     scene
         .vertices
         .extend(verts.iter().map(|&p| centre + p * radius));
+    scene.normals.extend(verts.iter().copied());
     for [a, b, c] in &tris {
-        scene.add_face(&[base + a, base + b, base + c], material, object)?;
+        let id = scene.add_face(&[base + a, base + b, base + c], material, object)?;
+        scene.faces[id as usize].normals = Some(vec![nbase + a, nbase + b, nbase + c]);
     }
     Ok(tris.len())
 }
