@@ -11,7 +11,7 @@ use crate::partition::{choose_splitter, partition, push_parts, Task};
 /// A component larger than this, holding more than four fifths of its set, is dense.
 const DENSE_MIN: usize = 256;
 /// BSP levels applied to a dense component before its parts are analysed again.
-const DENSE_LEVELS: u32 = 3;
+const DENSE_LEVELS: u32 = 5;
 
 /// Pieces whose box covers more grid cells than this are tested against everything.
 const MAX_CELLS_PER_ITEM: usize = 64;

@@ -35,6 +35,10 @@ pub enum CameraError {
     /// The scene has no faces to frame.
     #[error("the scene has no faces to frame")]
     EmptyScene,
+    /// The eye is so far from the target (or the scene so large) that distances
+    /// overflow f64.
+    #[error("camera distances overflow: the scene or the eye is too far out (|coordinates| must stay well below 1e150)")]
+    OutOfRange,
 }
 
 /// A perspective camera.
@@ -132,6 +136,9 @@ impl Camera {
         } else {
             DVec3::Y
         };
+        if !(centre + dir * dist).is_finite() || !radius.is_finite() {
+            return Err(CameraError::OutOfRange);
+        }
         let cam = Camera {
             eye: centre + dir * dist,
             target: centre,
@@ -159,7 +166,10 @@ impl Camera {
             return Err(CameraError::NonFinite("up"));
         }
         let f = self.target - self.eye;
-        if f.length_squared() == 0.0 || !f.length_squared().is_finite() {
+        if !f.length_squared().is_finite() {
+            return Err(CameraError::OutOfRange);
+        }
+        if f.length_squared() == 0.0 {
             return Err(CameraError::EyeIsTarget);
         }
         let s = f.normalize().cross(self.up);
