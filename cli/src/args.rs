@@ -173,6 +173,10 @@ pub struct RenderArgs {
     /// Stroke the original model edges (never the cuts).
     #[arg(long)]
     pub outline: bool,
+    /// Width in pixels of a stroke in each opaque face's own colour that closes the
+    /// hairline seams viewers leave between adjacent faces (SVG, PDF, EPS; 0 = none).
+    #[arg(long, value_name = "PX", default_value_t = 0.35, value_parser = parse_seams)]
+    pub seams: f64,
     /// How to render: painter's order (vector) or an image-space method (PNG only).
     #[arg(long, value_enum, default_value_t = MethodArg::Painter)]
     pub method: MethodArg,
@@ -254,6 +258,17 @@ fn parse_fov(s: &str) -> Result<f64, String> {
         return Err(format!("field of view `{s}` is outside (0, 180) degrees"));
     }
     Ok(f)
+}
+
+fn parse_seams(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if !(0.0..=10.0).contains(&v) {
+        return Err(format!("seam width `{s}` must be between 0 and 10 pixels"));
+    }
+    Ok(v)
 }
 
 fn parse_vec3(s: &str) -> Result<[f64; 3], String> {

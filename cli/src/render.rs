@@ -296,6 +296,7 @@ fn render(a: RenderArgs) -> Result<ExitCode> {
     let style = Style {
         seamless: true,
         smooth: true,
+        seams: a.seams,
         background: fo.background.map(|c| [c[0], c[1], c[2], 1.0]),
         outline: (a.outline || fo.outline == Some(true)).then(|| {
             let c = fo.outline_color.unwrap_or([0.1, 0.1, 0.1]);
@@ -355,6 +356,7 @@ fn demo(a: DemoArgs) -> Result<ExitCode> {
     let style = Style {
         seamless: true,
         smooth: true,
+        seams: Style::default().seams,
         background: Some([1.0, 1.0, 1.0, 1.0]),
         outline: a.outline.then_some(Outline {
             color: [0.1, 0.1, 0.1, 1.0],

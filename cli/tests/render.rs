@@ -130,7 +130,17 @@ fn svg_has_exact_unlit_colour() {
     assert!(svg.contains("<svg"), "{svg}");
     assert!(svg.contains("viewBox=\"0 0 800 600\""), "{svg}");
     assert!(svg.contains("#336699"), "{svg}");
-    assert!(!svg.contains("stroke"), "{svg}");
+    // The default seam stroke is in the fill's own colour; with --seams 0 there is none.
+    assert!(
+        svg.contains(r##"fill="#336699" stroke="#336699""##),
+        "{svg}"
+    );
+    ok(
+        d.path(),
+        &["render", "a.obj", "-o", "bare.svg", "--seams", "0"],
+    );
+    let bare = std::fs::read_to_string(d.path().join("bare.svg")).unwrap();
+    assert!(!bare.contains("stroke"), "{bare}");
 }
 
 #[test]
@@ -222,10 +232,21 @@ fn dash_with_format_writes_png_to_standard_output() {
 fn outline_adds_strokes() {
     let d = tempdir();
     coloured(d.path());
-    ok(d.path(), &["render", "a.obj", "-o", "plain.svg"]);
     ok(
         d.path(),
-        &["render", "a.obj", "-o", "lines.svg", "--outline"],
+        &["render", "a.obj", "-o", "plain.svg", "--seams", "0"],
+    );
+    ok(
+        d.path(),
+        &[
+            "render",
+            "a.obj",
+            "-o",
+            "lines.svg",
+            "--outline",
+            "--seams",
+            "0",
+        ],
     );
     let plain = std::fs::read_to_string(d.path().join("plain.svg")).unwrap();
     let lines = std::fs::read_to_string(d.path().join("lines.svg")).unwrap();

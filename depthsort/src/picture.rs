@@ -23,6 +23,9 @@ pub struct Style {
     /// fragment's vertices (normals interpolated over the input face) and interpolated
     /// by the painter. Faces without normals stay flat. Default: `true`.
     pub smooth: bool,
+    /// Seam-closing stroke width for the vector formats ([`Picture::seams`]). Default:
+    /// 0.35 px.
+    pub seams: f64,
 }
 
 impl Default for Style {
@@ -32,6 +35,7 @@ impl Default for Style {
             outline: None,
             seamless: true,
             smooth: true,
+            seams: 0.35,
         }
     }
 }
@@ -93,5 +97,6 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         objects: scene.objects.iter().map(|o| o.name.clone()).collect(),
         fragments,
         outline: style.outline,
+        seams: style.seams,
     }
 }

@@ -71,6 +71,7 @@ fn picture() -> impl Strategy<Value = Picture> {
                 color: [0.0, 0.0, 0.0, 0.7],
                 width,
             }),
+            seams: if background { 0.5 } else { 0.0 },
         })
 }
 

@@ -92,6 +92,8 @@ struct Writer {
     height: f64,
     backdrop: [f64; 3],
     rgb: Option<[u32; 3]>,
+    /// Flat fills are also stroked in their own colour (`Picture::seams`).
+    seams: bool,
 }
 
 /// `a · c + (1 − a) · backdrop`.
@@ -137,7 +139,7 @@ impl Writer {
             b.extend_from_slice(b"h\n");
             points += f.points.len();
         }
-        b.extend_from_slice(b"f\n");
+        b.extend_from_slice(if self.seams { b"F\n" } else { b"f\n" });
     }
 
     fn gouraud_run(&mut self, b: &mut Vec<u8>, run: &[Frag<'_>], alpha: f64) {
@@ -207,6 +209,7 @@ impl Painter for EpsPainter {
             height: f64::from(picture.height),
             backdrop,
             rgb: None,
+            seams: picture.seams.is_finite() && picture.seams > 0.0,
         };
         let gouraud = picture.fragments.iter().any(|f| f.vertex_colors.is_some());
 
@@ -227,6 +230,12 @@ impl Painter for EpsPainter {
             b.extend_from_slice(
                 b"/g{<< exch /DataSource exch /ShadingType 4 /ColorSpace /DeviceRGB >> shfill}def\n",
             );
+        }
+        if w.seams {
+            // Fill, then stroke the same path in the fill colour (closing seams).
+            b.extend_from_slice(b"/F{gsave f grestore gsave 1 setlinejoin ");
+            push_num(b, picture.seams, w.d);
+            b.extend_from_slice(b" setlinewidth s grestore newpath}def\n");
         }
         let outline = checked.outline.map(|ol| {
             let c = flatten(

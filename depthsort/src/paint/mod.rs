@@ -126,6 +126,13 @@ pub struct Picture {
     pub fragments: Vec<PaintFragment>,
     /// Outline style; `None` = no outlines.
     pub outline: Option<Outline>,
+    /// Width in pixels of a stroke in its own colour around every opaque flat fill in
+    /// the vector formats (SVG, PDF, EPS); 0 = none. Viewers anti-alias each path on
+    /// its own, so where two polygons meet both edge pixels are only partly covered and
+    /// the background shows through as a hairline; a stroke of half a pixel or less
+    /// closes it, at the price of growing every fill by half the width. PNG does not need
+    /// it (it is supersampled). Default 0.
+    pub seams: f64,
 }
 
 impl Picture {

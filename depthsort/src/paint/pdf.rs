@@ -83,6 +83,11 @@ struct Content {
     meshes: Vec<Mesh>,
     alpha: u16,
     rgb: Option<[u32; 3]>,
+    /// Seam stroke width (0 = none).
+    seams: f64,
+    /// Current stroke colour and line width, and the outline's, to restore.
+    stroke: Option<([u32; 3], u64)>,
+    outline_stroke: Option<([u32; 3], u64)>,
 }
 
 impl Content {
@@ -127,7 +132,25 @@ impl Content {
             }
             self.buf.extend_from_slice(b"h\n");
         }
-        self.buf.extend_from_slice(b"f\n");
+        if self.seams > 0.0 && self.alpha >= 1000 {
+            self.set_stroke(rgb, self.seams);
+            self.buf.extend_from_slice(b"B\n");
+        } else {
+            self.buf.extend_from_slice(b"f\n");
+        }
+    }
+
+    /// Sets the stroke colour and line width, writing only what changes.
+    fn set_stroke(&mut self, rgb: [u32; 3], width: f64) {
+        let (old_rgb, old_w) = self.stroke.unzip();
+        if old_w != Some(width.to_bits()) {
+            push_num(&mut self.buf, width, self.d);
+            self.buf.extend_from_slice(b" w\n");
+        }
+        if old_rgb != Some(rgb) {
+            self.color(rgb, b"RG\n");
+        }
+        self.stroke = Some((rgb, width.to_bits()));
     }
 
     fn gouraud_run(&mut self, run: &[Frag<'_>]) {
@@ -175,6 +198,9 @@ impl Content {
     }
 
     fn outline(&mut self, run: &[Frag<'_>]) {
+        if let Some((rgb, w)) = self.outline_stroke {
+            self.set_stroke(rgb, f64::from_bits(w));
+        }
         for f in run {
             let n = f.points.len();
             f.polylines(|start, edges, closed| {
@@ -215,14 +241,27 @@ impl Painter for PdfPainter {
             meshes: Vec::new(),
             alpha: 1000,
             rgb: None,
+            // Seam strokes must be opaque: not with a translucent outline's stroke state.
+            seams: match checked.outline {
+                Some(o) if alpha_milli(o.color[3]) < 1000 => 0.0,
+                _ if picture.seams.is_finite() && picture.seams > 0.0 => picture.seams,
+                _ => 0.0,
+            },
+            stroke: None,
+            outline_stroke: None,
         };
         let mut stats = PaintStats::default();
+        if c.seams > 0.0 && checked.outline.is_none() {
+            c.buf.extend_from_slice(b"1 j\n");
+        }
 
         if let Some(o) = checked.outline {
             push_num(&mut c.buf, o.width, c.d);
             c.buf.extend_from_slice(b" w 1 J 1 j\n");
             let rgb = c.quantise([o.color[0], o.color[1], o.color[2]]);
             c.color(rgb, b"RG\n");
+            c.stroke = Some((rgb, o.width.to_bits()));
+            c.outline_stroke = c.stroke;
             let milli = alpha_milli(o.color[3]);
             if milli < 1000 {
                 c.buf.extend_from_slice(b"/s");

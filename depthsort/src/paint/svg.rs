@@ -79,7 +79,19 @@ impl Painter for SvgPainter {
         b.push(b' ');
         push_uint(b, picture.height.into());
         b.push(b'"');
-        if let Some(o) = checked.outline {
+        let seams = if picture.seams.is_finite() && picture.seams > 0.0 {
+            picture.seams
+        } else {
+            0.0
+        };
+        // The root carries the stroke style of whichever strokes are most frequent: the
+        // seam strokes when there are any (outline paths then say their own width and
+        // opacity), else the outlines.
+        if seams > 0.0 {
+            b.extend_from_slice(b" stroke-width=\"");
+            push_num(b, seams, d);
+            b.extend_from_slice(b"\" stroke-linecap=\"round\" stroke-linejoin=\"round\"");
+        } else if let Some(o) = checked.outline {
             b.extend_from_slice(b" stroke-width=\"");
             push_num(b, o.width, d);
             b.extend_from_slice(b"\" stroke-linecap=\"round\" stroke-linejoin=\"round\"");
@@ -125,6 +137,11 @@ impl Painter for SvgPainter {
             push_hex_color(b, rgb);
             b.push(b'"');
             opacity_attr(b, b"fill-opacity", alpha);
+            if seams > 0.0 && alpha >= 1000 {
+                b.extend_from_slice(b" stroke=\"");
+                push_hex_color(b, rgb);
+                b.push(b'"');
+            }
             b.extend_from_slice(b"/>\n");
             stats.paths += 1;
             stats.approximated += run.iter().filter(|f| f.colors.is_some()).count();
@@ -137,7 +154,14 @@ impl Painter for SvgPainter {
                     }
                     b.extend_from_slice(b"\" fill=\"none\" stroke=\"");
                     push_hex_color(b, rgb_u8([o.color[0], o.color[1], o.color[2]]));
-                    b.extend_from_slice(b"\"/>\n");
+                    b.push(b'"');
+                    if seams > 0.0 {
+                        b.extend_from_slice(b" stroke-width=\"");
+                        push_num(b, o.width, d);
+                        b.push(b'"');
+                        opacity_attr(b, b"stroke-opacity", alpha_milli(o.color[3]));
+                    }
+                    b.extend_from_slice(b"/>\n");
                     stats.strokes += 1;
                 }
             }
