@@ -6,7 +6,7 @@ use crate::shared::ExactVertices;
 
 use crate::ctx::{Ctx, Pair};
 use crate::geom::{boxes_meet, convex_disjoint};
-use crate::partition::{choose_splitter, partition, push_parts, Task};
+use crate::partition::{choose_splitter, partition, push_parts, push_parts_as, Task};
 
 /// A component larger than this, holding more than four fifths of its set, is dense.
 const DENSE_MIN: usize = 256;
@@ -285,13 +285,7 @@ pub(crate) fn adaptive<K: ExactVertices>(
                 }
                 let sp = choose_splitter(ctx, &s, candidates);
                 let (far, cop, near) = partition(ctx, &s, sp);
-                if !near.is_empty() {
-                    stack.push(Task::Deep(near, levels - 1));
-                }
-                stack.push(Task::Emit(cop));
-                if !far.is_empty() {
-                    stack.push(Task::Deep(far, levels - 1));
-                }
+                push_parts_as(&mut stack, far, cop, near, |v| Task::Deep(v, levels - 1));
             }
         }
     }

@@ -95,12 +95,23 @@ pub(crate) enum Task {
 
 /// Pushes the three parts of a partition so that they are processed far, plane, near.
 pub(crate) fn push_parts(stack: &mut Vec<Task>, far: Vec<u32>, cop: Vec<u32>, near: Vec<u32>) {
+    push_parts_as(stack, far, cop, near, Task::Order);
+}
+
+/// Like [`push_parts`], with `side` making the task for each non-empty side.
+pub(crate) fn push_parts_as(
+    stack: &mut Vec<Task>,
+    far: Vec<u32>,
+    cop: Vec<u32>,
+    near: Vec<u32>,
+    side: impl Fn(Vec<u32>) -> Task,
+) {
     if !near.is_empty() {
-        stack.push(Task::Order(near));
+        stack.push(side(near));
     }
     stack.push(Task::Emit(cop));
     if !far.is_empty() {
-        stack.push(Task::Order(far));
+        stack.push(side(far));
     }
 }
 
