@@ -14,22 +14,7 @@ fn soup(n: usize, size: f64, seed: u64) -> Scene {
     let mut s = Scene::default();
     let m = s.add_material(Material::diffuse("soup", [0.7, 0.7, 0.7]));
     let o = s.add_object("soup");
-    let mut rng = seed;
-    let mut next = move || {
-        rng = rng
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((rng >> 11) as f64) / ((1u64 << 53) as f64)
-    };
-    while s.faces.len() < n {
-        let c = DVec3::new(next(), next(), next()) * 2.0 - 1.0;
-        let pts: Vec<DVec3> = (0..3)
-            .map(|_| c + (DVec3::new(next(), next(), next()) - 0.5) * size)
-            .collect();
-        if (pts[1] - pts[0]).cross(pts[2] - pts[0]).length() > 1e-9 {
-            s.add_polygon(&pts, m, o).expect("valid");
-        }
-    }
+    shapes::random_soup(&mut s, n, size, seed, m, o).expect("valid");
     s
 }
 

@@ -1,9 +1,8 @@
 //! Orders a random triangle soup (`N SIZE [MODE]`) once and prints the statistics: a
 //! profiling target.
 
-use glam::DVec3;
 use limn_depthsort::{order, OrderOptions, SortMode};
-use limn_scene::{Camera, Material, Scene};
+use limn_scene::{shapes, Camera, Material, Scene};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -16,22 +15,7 @@ fn main() {
     let mut s = Scene::default();
     let m = s.add_material(Material::diffuse("soup", [0.7, 0.7, 0.7]));
     let o = s.add_object("soup");
-    let mut rng = 2u64;
-    let mut next = move || {
-        rng = rng
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        ((rng >> 11) as f64) / ((1u64 << 53) as f64)
-    };
-    while s.faces.len() < n {
-        let c = DVec3::new(next(), next(), next()) * 2.0 - 1.0;
-        let pts: Vec<DVec3> = (0..3)
-            .map(|_| c + (DVec3::new(next(), next(), next()) - 0.5) * size)
-            .collect();
-        if (pts[1] - pts[0]).cross(pts[2] - pts[0]).length() > 1e-9 {
-            s.add_polygon(&pts, m, o).expect("valid triangle");
-        }
-    }
+    shapes::random_soup(&mut s, n, size, 2, m, o).expect("valid soup");
     let cam = Camera::framing(&s, 1920, 1080).expect("camera");
     let t = std::time::Instant::now();
     let r = order(

@@ -213,6 +213,38 @@ pub fn torus(
     Ok((rings * sides) as usize)
 }
 
+/// Appends `n` random triangles to `scene`: centres uniform in the cube [-1, 1]³, corners
+/// within `size`/2 of the centre on each axis (a deterministic LCG seeded by `seed`;
+/// slivers are redrawn). A soup for benchmarks and stress tests. Returns the faces added.
+pub fn random_soup(
+    scene: &mut Scene,
+    n: usize,
+    size: f64,
+    seed: u64,
+    material: u32,
+    object: u32,
+) -> Result<usize, SceneError> {
+    let mut rng = seed;
+    let mut next = move || {
+        rng = rng
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((rng >> 11) as f64) / ((1u64 << 53) as f64)
+    };
+    let mut added = 0;
+    while added < n {
+        let c = DVec3::new(next(), next(), next()) * 2.0 - 1.0;
+        let pts: Vec<DVec3> = (0..3)
+            .map(|_| c + (DVec3::new(next(), next(), next()) - 0.5) * size)
+            .collect();
+        if (pts[1] - pts[0]).cross(pts[2] - pts[0]).length() > 1e-9 {
+            scene.add_polygon(&pts, material, object)?;
+            added += 1;
+        }
+    }
+    Ok(added)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -231,6 +263,18 @@ mod tests {
             let c = p.iter().copied().sum::<DVec3>() / p.len() as f64;
             crate::polygon_normal(&p).dot(c - centre) > 0.0
         })
+    }
+
+    #[test]
+    fn soups_are_deterministic_and_open() {
+        let (mut a, m, o) = fresh();
+        assert_eq!(random_soup(&mut a, 50, 0.3, 7, m, o).unwrap(), 50);
+        let (mut b, m, o) = fresh();
+        random_soup(&mut b, 50, 0.3, 7, m, o).unwrap();
+        assert_eq!(a, b);
+        assert!(!a.is_closed());
+        let (lo, hi) = a.bounds().unwrap();
+        assert!(lo.min_element() >= -1.15 && hi.max_element() <= 1.15);
     }
 
     #[test]
