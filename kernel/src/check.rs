@@ -4,7 +4,7 @@
 use crate::plane::Plane;
 use crate::polygon::ExactPolygon;
 use crate::predicates::homogeneous;
-use crate::traits::{PolygonSide, Side};
+use crate::side::{PolygonSide, Side};
 
 /// Checks the invariants of one exact polygon with exact predicates only (no filter):
 /// at least three vertices; every vertex is the intersection of three independent
@@ -19,7 +19,7 @@ pub fn check_polygon(poly: &ExactPolygon) -> Result<(), String> {
     for i in 0..n {
         let [s, a, b] = poly.vertex_planes(i);
         let (_, d) = homogeneous(&s, &a, &b);
-        if d == ethnum::I256::ZERO {
+        if d.is_zero() {
             return Err(format!("vertex {i}: planes do not meet in a point"));
         }
         if poly.side_exact(i, &s) != Side::On {
@@ -44,24 +44,31 @@ pub fn check_polygon(poly: &ExactPolygon) -> Result<(), String> {
 }
 
 /// The cached approximation of vertex `i` must be consistent with the exact vertex: the
-/// exact vertex lies inside the box `pos ± err`, checked with six axis planes through
-/// integer-rounded bounds (only when the bounds are representable as plane offsets).
+/// exact vertex lies inside the box `pos ± err`, checked exactly with six axis planes
+/// through the (outward-rounded) bounds.
 fn check_approx(poly: &ExactPolygon, i: usize) -> Result<(), String> {
     let (pos, err) = poly.vertex_approx(i);
-    if !err.is_finite() {
-        return Err(format!("vertex {i}: no finite error bound"));
+    if err.is_nan() {
+        return Err(format!("vertex {i}: error bound is NaN"));
+    }
+    if err.is_infinite() {
+        return Ok(());
     }
     let [s, a, b] = poly.vertex_planes(i);
     for (axis, &x) in pos.iter().enumerate() {
-        let lo = (x - err).floor();
-        let hi = (x + err).ceil();
-        if lo.abs() > 1e24 || hi.abs() > 1e24 {
+        let lo = (x - err).next_down();
+        let hi = (x + err).next_up();
+        if !lo.is_finite() || !hi.is_finite() {
             continue;
         }
-        let mut n = [0i64; 3];
-        n[axis] = 1;
-        let below = Plane::new(n[0], n[1], n[2], -(lo as i128)).ok_or("bad bound plane")?;
-        let above = Plane::new(n[0], n[1], n[2], -(hi as i128)).ok_or("bad bound plane")?;
+        let mut n = [0.0; 3];
+        n[axis] = 1.0;
+        let mut p_lo = [0.0; 3];
+        p_lo[axis] = lo;
+        let mut p_hi = [0.0; 3];
+        p_hi[axis] = hi;
+        let below = Plane::point_normal(p_lo, n).map_err(|e| e.to_string())?;
+        let above = Plane::point_normal(p_hi, n).map_err(|e| e.to_string())?;
         let s_lo = crate::predicates::side_of_intersection(&s, &a, &b, &below);
         let s_hi = crate::predicates::side_of_intersection(&s, &a, &b, &above);
         if s_lo == Some(Side::Back) || s_hi == Some(Side::Front) {

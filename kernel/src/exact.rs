@@ -1,64 +1,61 @@
-//! The exact kernel: integer grid, integer planes, implicit vertices, filtered predicates.
+//! The exact kernel: planes defined by input values, implicit vertices, filtered exact
+//! predicates.
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use glam::DVec3;
 
-use crate::grid::{GridPoint, Quantizer, DEFAULT_BITS, FAR_LIMIT};
+use crate::error::KernelError;
 use crate::plane::Plane;
 use crate::polygon::ExactPolygon;
-use crate::predicates::{as_grid, rounded_intersection};
-use crate::traits::{Kernel, KernelError, PolygonSide, Side};
+use crate::predicates::rounded_intersection;
+use crate::side::{PolygonSide, Side};
+use crate::traits::Kernel;
 
-/// Largest component of a normal given to [`Kernel::plane_through`] after rounding to
-/// integers.
-const PLANE_NORMAL_SCALE: f64 = 16_777_216.0; // 2^24
-
-/// Largest grid coordinate of the point given to [`Kernel::plane_through`]: with normal
-/// components up to `2^24` the offset stays below `3 · 2^80 < 2^83`.
-const PLANE_POINT_LIMIT: i64 = 1 << 56;
+/// Largest relative error bound (against the largest coordinate) at which the cached
+/// approximation of a vertex is returned as its world position; beyond it the exact
+/// intersection is rounded instead.
+const WORLD_REL: f64 = 1e-12;
 
 /// The exact plane-based kernel.
 ///
-/// Every sign it returns is exact; splitting never computes a coordinate and never grows
-/// a number (all planes of all polygons are input planes or planes given to
-/// [`Kernel::plane_through`]); coordinates are rounded only in
-/// [`Kernel::vertices_world`] and [`Kernel::point_world`].
+/// Every sign it returns equals the sign computed with exact rational arithmetic on the
+/// f64 values it was given (face corners, the eye, plane points and normals), for every
+/// finite value: there is no grid, no snap and no epsilon. Splitting never computes a
+/// coordinate and never grows a number (all planes of all polygons are input planes or
+/// planes given to [`Kernel::plane_through`]); coordinates are rounded only in
+/// [`Kernel::vertices_world`].
 ///
 /// Input faces ([`Kernel::face_polygons`]): no corners is [`KernelError::Empty`]; a
-/// non-finite corner is [`KernelError::NonFinite`]; a corner outside the box is
-/// [`KernelError::OutsideGrid`]. Faces that collapse (fewer than three distinct snapped
-/// corners, zero area) and outlines that are not simple (self-intersecting) give an
-/// empty vector. A face whose snapped corners all lie exactly on one plane and which is
-/// strictly convex becomes one polygon with all edges original. Any other face —
-/// non-convex, or made non-planar by snapping — is triangulated (constrained Delaunay)
-/// on its snapped corners, so faces that share corners in the input share them exactly;
+/// non-finite corner is [`KernelError::NonFinite`]. Faces of zero area and outlines that
+/// are not simple (self-intersecting) give an empty vector. A face whose corners all lie
+/// exactly on one plane and which is strictly convex becomes one polygon with all edges
+/// original; any other face is triangulated (constrained Delaunay) on its own corners;
 /// diagonals are not original edges.
 ///
-/// World conversion: a vertex's world coordinates are within `4` ulps (relative error
-/// `8·2^-53`) of its exact grid position times the step, plus one rounding of adding the
-/// grid origin.
+/// World conversion: input corners are returned exactly; a vertex made by splitting is
+/// returned within a relative error of about `1e-12` of its largest coordinate (its
+/// cached approximation when that is proven so close, the rounded exact intersection
+/// otherwise).
 #[derive(Debug)]
 pub struct ExactKernel {
-    quantizer: Quantizer,
     filter: bool,
     fallbacks: AtomicU64,
 }
 
-impl ExactKernel {
-    /// A kernel for a scene inside the box `[lo, hi]` with the default
-    /// [`DEFAULT_BITS`] bits per axis.
-    pub fn new(lo: DVec3, hi: DVec3) -> Result<ExactKernel, KernelError> {
-        ExactKernel::with_bits(lo, hi, DEFAULT_BITS)
+impl Default for ExactKernel {
+    fn default() -> Self {
+        ExactKernel::new()
     }
+}
 
-    /// A kernel with `bits` bits per axis (2 to 26).
-    pub fn with_bits(lo: DVec3, hi: DVec3, bits: u32) -> Result<ExactKernel, KernelError> {
-        Ok(ExactKernel {
-            quantizer: Quantizer::new(lo, hi, bits)?,
+impl ExactKernel {
+    /// The exact kernel (no set-up: it works on the input's own coordinates).
+    pub fn new() -> ExactKernel {
+        ExactKernel {
             filter: true,
             fallbacks: AtomicU64::new(0),
-        })
+        }
     }
 
     /// The same kernel with the floating-point filter switched off: every predicate runs
@@ -66,21 +63,6 @@ impl ExactKernel {
     pub fn without_filter(mut self) -> ExactKernel {
         self.filter = false;
         self
-    }
-
-    /// The quantisation grid.
-    pub fn quantizer(&self) -> &Quantizer {
-        &self.quantizer
-    }
-
-    /// The grid step in scene units.
-    pub fn step(&self) -> f64 {
-        self.quantizer.step()
-    }
-
-    /// The largest snap distance in scene units (half a cell diagonal).
-    pub fn max_snap_error(&self) -> f64 {
-        self.quantizer.max_snap_error()
     }
 
     /// The side of `plane` at vertex `i` of `poly` (filter first, counted fallback).
@@ -96,11 +78,12 @@ impl ExactKernel {
         s
     }
 
-    /// Vertex `i` of `poly` in grid coordinates, rounded (relative error at most `8·2^-53`).
-    /// Panics if `i >= poly.len()`.
-    pub fn vertex_grid(&self, poly: &ExactPolygon, i: usize) -> [f64; 3] {
+    /// Vertex `i` of `poly` rounded to f64 (see the type's docs for the accuracy). Panics
+    /// if `i >= poly.len()`.
+    pub fn vertex_rounded(&self, poly: &ExactPolygon, i: usize) -> [f64; 3] {
         let (pos, err) = poly.vertex_approx(i);
-        if as_grid(&pos, err).is_some() {
+        let scale = pos[0].abs().max(pos[1].abs()).max(pos[2].abs());
+        if err == 0.0 || err <= WORLD_REL * scale {
             return pos;
         }
         let [s, a, b] = poly.vertex_planes(i);
@@ -118,48 +101,44 @@ impl ExactKernel {
 impl Kernel for ExactKernel {
     type Plane = Plane;
     type Polygon = ExactPolygon;
-    type Point = GridPoint;
+    type Point = DVec3;
 
     fn name(&self) -> &'static str {
         "exact"
     }
 
     fn face_polygons(&self, corners: &[DVec3]) -> Result<Vec<ExactPolygon>, KernelError> {
-        crate::face::face_polygons(&self.quantizer, corners)
+        crate::face::face_polygons(corners)
     }
 
-    fn point(&self, p: DVec3) -> Result<GridPoint, KernelError> {
-        self.quantizer.snap_far(p, FAR_LIMIT)
+    fn point(&self, p: DVec3) -> Result<DVec3, KernelError> {
+        if !p.is_finite() {
+            return Err(KernelError::NonFinite(p.x, p.y, p.z));
+        }
+        Ok(p)
     }
 
-    fn point_world(&self, p: &GridPoint) -> DVec3 {
-        self.quantizer.world(*p)
+    fn point_world(&self, p: &DVec3) -> DVec3 {
+        *p
     }
 
     fn plane_through(&self, point: DVec3, normal: DVec3) -> Result<Plane, KernelError> {
-        if !normal.is_finite() {
-            return Err(KernelError::NonFinite(normal.x, normal.y, normal.z));
-        }
-        let m = normal.abs().max_element();
-        if m == 0.0 {
-            return Err(KernelError::ZeroNormal);
-        }
-        // Scale in two steps so that tiny or huge normals neither underflow nor overflow.
-        let unit = normal / m;
-        let n = (unit * PLANE_NORMAL_SCALE).round();
-        let n = [n.x as i64, n.y as i64, n.z as i64];
-        let g = self.quantizer.snap_far(point, PLANE_POINT_LIMIT)?;
-        let d =
-            -(n[0] as i128 * g.x as i128 + n[1] as i128 * g.y as i128 + n[2] as i128 * g.z as i128);
-        Plane::new(n[0], n[1], n[2], d).ok_or(KernelError::PlaneOutOfRange)
+        Plane::point_normal(point.to_array(), normal.to_array())
     }
 
     fn support(&self, poly: &ExactPolygon) -> Plane {
         poly.support()
     }
 
-    fn side_of_point(&self, plane: &Plane, p: &GridPoint) -> Side {
-        plane.side_of(p)
+    fn side_of_point(&self, plane: &Plane, p: &DVec3) -> Side {
+        let mut fb = 0;
+        let s = if self.filter {
+            plane.side_of_counted(p.to_array(), &mut fb)
+        } else {
+            plane.side_exact(p.to_array())
+        };
+        self.count(fb);
+        s
     }
 
     fn classify(&self, poly: &ExactPolygon, plane: &Plane) -> PolygonSide {
@@ -185,7 +164,7 @@ impl Kernel for ExactKernel {
     }
 
     fn vertices_world(&self, poly: &ExactPolygon, out: &mut Vec<DVec3>) {
-        out.extend((0..poly.len()).map(|i| self.quantizer.world_f(self.vertex_grid(poly, i))));
+        out.extend((0..poly.len()).map(|i| DVec3::from_array(self.vertex_rounded(poly, i))));
     }
 
     fn edge_is_original(&self, poly: &ExactPolygon, i: usize) -> bool {

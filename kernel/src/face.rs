@@ -1,106 +1,89 @@
-//! Conversion of input faces into exact convex polygons.
+//! Conversion of input faces into exact convex polygons, on the corners as given.
 //!
-//! 1. Corners are snapped to the grid; consecutive duplicates are dropped.
-//! 2. The supporting plane is taken from the fan triangle `(p₀, pᵢ, pᵢ₊₁)` that agrees
-//!    best with the face's (exact, integer) Newell normal.
-//! 3. **Exact planarity.** Only a face whose snapped corners all lie exactly on that plane
-//!    goes in as one polygon. A face that snapping made non-planar (even by less than a
-//!    grid step) is triangulated instead: moving its corners onto one plane would open
-//!    cracks and overlaps of up to a grid step against its neighbours, and those would
-//!    turn into real (if tiny) interpenetrations that must be split. With triangles, faces
-//!    that share corners in the input share them exactly. (The polygon builder still
-//!    supports corners within one step along `k`: vertex `S ∩ Eᵢ₋₁ ∩ Eᵢ` is the corner
-//!    projected along `k`, since edge planes contain the direction `e_k`.)
+//! 1. Non-finite corners are refused; consecutive duplicates (and a closing corner equal
+//!    to the first) are dropped.
+//! 2. The supporting plane is the plane through the fan triangle `(p₀, pᵢ, pᵢ₊₁)` that
+//!    agrees best with the face's (approximate) Newell normal, among those that are not
+//!    exactly degenerate.
+//! 3. **Exact planarity.** Only a face whose corners all lie exactly on that plane goes in
+//!    as one polygon; any other face is triangulated, so faces that share corners share
+//!    them exactly and no corner is ever moved.
 //! 4. Collinear corners are removed and strict convexity is checked exactly in the
-//!    projection along `k`; a convex face becomes one polygon with all edges original.
+//!    projection along the dominant axis `k` of the support normal (a projection along a
+//!    coordinate axis drops a coordinate, so it is exact); a convex face becomes one
+//!    polygon with all edges original. Its edge planes contain the edge and the direction
+//!    `e_k`, so vertex `i` is exactly corner `i`.
 //! 5. Otherwise the outline is triangulated (constrained Delaunay, projected along the
-//!    dominant axis of the Newell normal, where grid coordinates as f64 are exact);
-//!    diagonals are non-original and every triangle gets its own exact supporting plane.
-//!    Outlines that are not simple (self-intersecting) are dropped, like zero-area faces.
+//!    dominant axis of the Newell normal); diagonals are non-original and every triangle
+//!    gets its own exact supporting plane. Outlines that are not simple
+//!    (self-intersecting) are dropped, like zero-area faces.
+
+use std::cmp::Ordering;
 
 use glam::DVec3;
 
-use crate::grid::{GridPoint, Quantizer};
-use crate::plane::{dominant_axis, Coeffs, Plane};
-use crate::polygon::{err32, Builder, Corner, ExactPolygon};
+use crate::plane::{check_finite, plane_axes, robust_safe, Plane};
+use crate::polygon::{Builder, Corner, ExactPolygon};
 use crate::triangulate::triangulate;
 use crate::KernelError;
 
-type I3 = [i64; 3];
+type P3 = [f64; 3];
 
-fn sub(a: GridPoint, b: GridPoint) -> I3 {
-    [a.x - b.x, a.y - b.y, a.z - b.z]
-}
-
-fn cross128(u: I3, v: I3) -> [i128; 3] {
-    let w = |a: i64, b: i64| a as i128 * b as i128;
-    [
-        w(u[1], v[2]) - w(u[2], v[1]),
-        w(u[2], v[0]) - w(u[0], v[2]),
-        w(u[0], v[1]) - w(u[1], v[0]),
-    ]
-}
-
-/// The two axes spanning the projection along `k`, so that `(u, v, k)` is right-handed.
-fn plane_axes(k: usize) -> (usize, usize) {
-    ((k + 1) % 3, (k + 2) % 3)
-}
-
-/// Orientation of `a, b, c` projected along axis `k` (positive: counter-clockwise seen
-/// from `+e_k`).
-fn orient_k(a: GridPoint, b: GridPoint, c: GridPoint, k: usize) -> i32 {
+/// Exact orientation of `a, b, c` projected along axis `k` (`Greater`:
+/// counter-clockwise seen from `+e_k`).
+pub(crate) fn orient_k(a: P3, b: P3, c: P3, k: usize) -> Ordering {
     let (u, v) = plane_axes(k);
-    let (a, b, c) = (a.to_array(), b.to_array(), c.to_array());
-    let det = (b[u] - a[u]) as i128 * (c[v] - a[v]) as i128
-        - (b[v] - a[v]) as i128 * (c[u] - a[u]) as i128;
-    det.signum() as i32
+    if robust_safe(&[a, b, c]) {
+        let c2 = |p: P3| robust::Coord { x: p[u], y: p[v] };
+        let o = robust::orient2d(c2(a), c2(b), c2(c));
+        return o.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
+    }
+    use crate::dyadic::Dyadic;
+    let d = |x: f64| Dyadic::from_f64(x);
+    let (bu, bv) = (&d(b[u]) - &d(a[u]), &d(b[v]) - &d(a[v]));
+    let (cu, cv) = (&d(c[u]) - &d(a[u]), &d(c[v]) - &d(a[v]));
+    (&(&bu * &cv) - &(&bv * &cu)).signum()
 }
 
-/// Builds the polygon of a strictly convex outline (in projection along the dominant axis
-/// of `support`), whose corners lie within one step of `support` along that axis.
-pub(crate) fn convex_polygon(pts: &[GridPoint], support: Plane, original: &[bool]) -> ExactPolygon {
-    let n_s = support.normal();
-    let k = dominant_axis(n_s);
-    let (u, v) = plane_axes(k);
-    let sgn: i64 = if n_s[k] > 0 { 1 } else { -1 };
+/// Builds the polygon of an outline that is strictly convex in projection along the
+/// dominant axis of `support`, whose corners lie exactly on `support`.
+pub(crate) fn convex_polygon(pts: &[P3], support: Plane, original: &[bool]) -> ExactPolygon {
+    let k = dominant_exact_axis(&support);
+    let flip = support.normal_sign(k) == Ordering::Less;
     let n = pts.len();
     let mut out = Builder::default();
     for i in 0..n {
-        let p = pts[i].to_array();
-        let q = pts[(i + 1) % n].to_array();
-        let (du, dv) = (q[u] - p[u], q[v] - p[v]);
-        let mut m = [0i64; 3];
-        m[u] = sgn * dv;
-        m[v] = -sgn * du;
-        let d = -(sgn as i128) * (dv as i128 * p[u] as i128 - du as i128 * p[v] as i128);
-        let edge = Coeffs::new(m[0], m[1], m[2], d);
-        let mut pos = p.map(|c| c as f64);
-        let s = support.eval(&pts[i]);
-        let mut err = 0.0;
-        if s != 0 {
-            // The corner moved along k onto the support plane.
-            let t = -(n_s[u] as i128 * p[u] as i128 + n_s[v] as i128 * p[v] as i128 + support.d());
-            pos[k] = t as f64 / n_s[k] as f64;
-            err = crate::predicates::finish_err(pos[k].abs() * (1.0 / 1_125_899_906_842_624.0));
-        }
+        let (p, q) = (pts[i], pts[(i + 1) % n]);
         let corner = Corner {
-            pos,
-            err: err32(err),
+            pos: p,
+            err: 0.0,
             original: original[i],
         };
-        out.push(corner, edge);
+        out.push(corner, Plane::edge(p, q, k, flip));
     }
-    out.finish(support.coeffs())
+    out.finish(support)
+}
+
+/// The dominant axis of a plane's normal, with an exactly non-zero component there.
+fn dominant_exact_axis(p: &Plane) -> usize {
+    let k = p.dominant_axis();
+    if p.normal_sign(k) != Ordering::Equal {
+        return k;
+    }
+    // The approximation was too coarse to choose: any exactly non-zero component works.
+    (0..3)
+        .find(|&j| p.normal_sign(j) != Ordering::Equal)
+        .unwrap_or(k)
 }
 
 /// Removes corners collinear with their neighbours (in projection along `k`), repeatedly.
-fn drop_collinear(pts: &mut Vec<GridPoint>, k: usize) {
+fn drop_collinear(pts: &mut Vec<P3>, k: usize) {
     let mut i = 0;
     let mut stable = 0;
     while pts.len() >= 3 && stable < pts.len() {
         let n = pts.len();
         let (a, b, c) = (pts[(i + n - 1) % n], pts[i % n], pts[(i + 1) % n]);
-        if orient_k(a, b, c, k) == 0 {
+        if orient_k(a, b, c, k) == Ordering::Equal {
             pts.remove(i % n);
             stable = 0;
         } else {
@@ -120,7 +103,7 @@ fn drop_collinear(pts: &mut Vec<GridPoint>, k: usize) {
 /// once. With the fan `(p₀, pᵢ, pᵢ₊₁)` also turning the same way, the rays from `p₀` are
 /// sorted by angle, each step below 180°; requiring every `pᵢ` strictly on the same side
 /// of the line `p₀p₁` keeps the whole sweep below 180°, so the outline winds once.
-fn strictly_convex(pts: &[GridPoint], k: usize, sgn: i32) -> bool {
+fn strictly_convex(pts: &[P3], k: usize, sgn: Ordering) -> bool {
     let n = pts.len();
     if n < 3 {
         return false;
@@ -131,17 +114,27 @@ fn strictly_convex(pts: &[GridPoint], k: usize, sgn: i32) -> bool {
     turns && fan && half
 }
 
+fn cross(u: P3, v: P3) -> P3 {
+    [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ]
+}
+
+fn sub(a: P3, b: P3) -> P3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
 /// Converts one input face (see the module docs).
-pub(crate) fn face_polygons(
-    q: &Quantizer,
-    corners: &[DVec3],
-) -> Result<Vec<ExactPolygon>, KernelError> {
+pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, KernelError> {
     if corners.is_empty() {
         return Err(KernelError::Empty);
     }
-    let mut g: Vec<GridPoint> = Vec::with_capacity(corners.len());
+    let mut g: Vec<P3> = Vec::with_capacity(corners.len());
     for c in corners {
-        let p = q.snap(*c)?;
+        let p = c.to_array();
+        check_finite(p)?;
         if g.last() != Some(&p) {
             g.push(p);
         }
@@ -154,68 +147,66 @@ pub(crate) fn face_polygons(
     }
     let n = g.len();
     let p0 = g[0];
-    let fan: Vec<[i128; 3]> = (1..n - 1)
-        .map(|i| cross128(sub(g[i], p0), sub(g[i + 1], p0)))
+    // Approximate Newell normal (a choice of fan triangle and projection only; every
+    // decision below is exact). Coordinates are centred on p₀ so that far-away faces
+    // keep their precision.
+    let fan: Vec<P3> = (1..n - 1)
+        .map(|i| cross(sub(g[i], p0), sub(g[i + 1], p0)))
         .collect();
-    let mut newell = [0i128; 3];
+    let mut newell = [0.0f64; 3];
     for c in &fan {
         for j in 0..3 {
             newell[j] += c[j];
         }
     }
-    if newell == [0; 3] {
-        return Ok(Vec::new());
-    }
-    let nf = newell.map(|v| v as f64);
-    let best = (0..fan.len())
-        .max_by(|&a, &b| {
-            let da: f64 = (0..3).map(|j| fan[a][j] as f64 * nf[j]).sum();
-            let db: f64 = (0..3).map(|j| fan[b][j] as f64 * nf[j]).sum();
-            da.total_cmp(&db)
-        })
-        .unwrap_or(0);
-    if let Some(support) = Plane::through(p0, g[best + 1], g[best + 2]) {
-        if let Some(poly) = try_convex(&g, support) {
-            return Ok(vec![poly]);
+    let mut order: Vec<usize> = (0..fan.len()).collect();
+    let score = |i: usize| -> f64 { (0..3).map(|j| fan[i][j] * newell[j]).sum() };
+    order.sort_by(|&a, &b| score(b).total_cmp(&score(a)));
+    for &best in order.iter().take(3) {
+        if let Ok(support) = Plane::through(p0, g[best + 1], g[best + 2]) {
+            if let Some(poly) = try_convex(&g, &support) {
+                return Ok(vec![poly]);
+            }
+            break;
         }
     }
     triangulated(&g, newell)
 }
 
 /// The single-polygon path: exact planarity check, collinear removal, convexity check.
-fn try_convex(g: &[GridPoint], support: Plane) -> Option<ExactPolygon> {
-    let n_s = support.normal();
-    let k = dominant_axis(n_s);
-    if g.iter().any(|p| support.eval(p) != 0) {
+fn try_convex(g: &[P3], support: &Plane) -> Option<ExactPolygon> {
+    if g.iter().any(|&p| support.side_of(p) != crate::Side::On) {
         return None;
     }
+    let k = dominant_exact_axis(support);
     let mut pts = g.to_vec();
     drop_collinear(&mut pts, k);
-    let sgn = if n_s[k] > 0 { 1 } else { -1 };
+    let sgn = support.normal_sign(k);
     if !strictly_convex(&pts, k, sgn) {
         return None;
     }
     let original = vec![true; pts.len()];
-    Some(convex_polygon(&pts, support, &original))
+    Some(convex_polygon(&pts, support.clone(), &original))
 }
 
 /// The triangulated path for non-convex or non-planar faces.
-fn triangulated(g: &[GridPoint], newell: [i128; 3]) -> Result<Vec<ExactPolygon>, KernelError> {
-    let k = dominant_axis(newell);
+fn triangulated(g: &[P3], newell: P3) -> Result<Vec<ExactPolygon>, KernelError> {
+    let m = newell.map(f64::abs);
+    let k = if m[0] >= m[1] && m[0] >= m[2] {
+        0
+    } else if m[1] >= m[2] {
+        1
+    } else {
+        2
+    };
     let (u, v) = plane_axes(k);
-    let pts2: Vec<[f64; 2]> = g
-        .iter()
-        .map(|p| {
-            let a = p.to_array();
-            [a[u] as f64, a[v] as f64]
-        })
-        .collect();
+    let pts2: Vec<[f64; 2]> = g.iter().map(|p| [p[u], p[v]]).collect();
     let Some(tris) = triangulate(&pts2) else {
         return Ok(Vec::new());
     };
     let mut out = Vec::with_capacity(tris.len());
     for t in tris {
-        let (idx, orig) = if newell[k] > 0 {
+        let (idx, orig) = if newell[k] > 0.0 {
             (t.idx, t.original)
         } else {
             (
@@ -224,7 +215,7 @@ fn triangulated(g: &[GridPoint], newell: [i128; 3]) -> Result<Vec<ExactPolygon>,
             )
         };
         let pts = idx.map(|i| g[i]);
-        if let Some(support) = Plane::through(pts[0], pts[1], pts[2]) {
+        if let Ok(support) = Plane::through(pts[0], pts[1], pts[2]) {
             out.push(convex_polygon(&pts, support, &orig));
         }
     }

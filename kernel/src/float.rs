@@ -3,7 +3,9 @@
 
 use glam::DVec3;
 
-use crate::traits::{Kernel, KernelError, PolygonSide, Side};
+use crate::error::KernelError;
+use crate::side::{PolygonSide, Side};
+use crate::traits::Kernel;
 use crate::triangulate::triangulate;
 
 /// Default epsilon relative to the scene extent.

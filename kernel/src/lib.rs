@@ -2,13 +2,17 @@
 //!
 //! Two implementations of one [`Kernel`] trait:
 //!
-//! - [`ExactKernel`]: input positions are snapped to a uniform integer grid
-//!   ([`Quantizer`], 26 bits per axis by default); a convex polygon is its supporting
-//!   [`Plane`] plus one bounding plane per edge, with integer coefficients; vertices are
-//!   intersections of three planes, never rounded coordinates. The side of a plane at a
-//!   vertex is decided by an f64 filter with a proven error bound and, when the filter
-//!   cannot decide, by exact 256-bit integer arithmetic. Splitting adds the splitting plane
-//!   as a bounding plane, so numbers never grow.
+//! - [`ExactKernel`]: exact on the input as given. A convex polygon is its supporting
+//!   [`Plane`] plus one bounding plane per edge; every plane is *defined* by input values
+//!   (three corners of an input face, an edge and a coordinate axis, or a point and a
+//!   normal), never by rounded coefficients. A vertex is an input point or the
+//!   intersection of three such planes, kept symbolically. The side of a plane at a
+//!   vertex is decided by an f64 filter with a proven error bound, a combinatorial
+//!   shortcut (a point that defines the plane lies on it), Shewchuk's adaptive
+//!   predicates for input points, and exact dyadic (big-integer) arithmetic otherwise,
+//!   so every sign equals the sign computed with exact rationals on the f64 input, for
+//!   every finite coordinate. Splitting adds the splitting plane as a bounding plane:
+//!   numbers never grow and no coordinate is computed for a decision.
 //! - [`FloatKernel`]: f64 coordinates with an epsilon and interpolated split points, the
 //!   measured baseline.
 //!
@@ -16,7 +20,7 @@
 //! use glam::DVec3;
 //! use limn_kernel::{ExactKernel, Kernel, PolygonSide};
 //!
-//! let k = ExactKernel::new(DVec3::splat(-1.0), DVec3::splat(1.0)).unwrap();
+//! let k = ExactKernel::new();
 //! let square = [
 //!     DVec3::new(-1.0, -1.0, 0.0),
 //!     DVec3::new(1.0, -1.0, 0.0),
@@ -35,20 +39,23 @@
 
 #[cfg(any(test, feature = "check-invariants"))]
 pub mod check;
+mod dyadic;
+mod error;
 mod exact;
 mod face;
 mod float;
-pub mod grid;
+mod interval;
 pub mod plane;
 mod polygon;
-pub mod predicates;
+mod predicates;
+mod side;
 mod traits;
 mod triangulate;
 
+pub use error::KernelError;
 pub use exact::ExactKernel;
 pub use float::{FloatKernel, FloatPlane, FloatPolygon, DEFAULT_RELATIVE_EPSILON};
-pub use grid::{GridPoint, Quantizer};
 pub use plane::Plane;
 pub use polygon::ExactPolygon;
-pub use predicates::ImplicitPoint;
-pub use traits::{Kernel, KernelError, PolygonSide, Side};
+pub use side::{PolygonSide, Side};
+pub use traits::Kernel;

@@ -1,274 +1,448 @@
-//! Integer planes `a·x + b·y + c·z + d = 0` over grid coordinates.
+//! Planes defined by input points: exact coefficients on demand, rigorous f64
+//! approximations for the filters.
+//!
+//! A plane is never stored as rounded coefficients. It is *defined* by values the
+//! caller gave exactly (f64 input points, a normal, an axis), and its coefficients are
+//! polynomials in those values:
+//!
+//! | definition | normal `n` | offset `d` |
+//! |---|---|---|
+//! | [`Plane::through`]`(p, q, r)` | `(q − p) × (r − p)` | `−n·p` |
+//! | edge plane `(p, q, k)` | `±(q − p) × e_k` | `−n·p` |
+//! | [`Plane::point_normal`]`(p, n)` | `n` | `−n·p` |
+//!
+//! The front of the plane is where `n·x + d > 0`. Each plane carries its coefficients as
+//! f64 midpoints with proven error radii (computed once, in interval arithmetic), which
+//! the filters read; the exact coefficients are recomputed as dyadic numbers only when a
+//! filter cannot decide. Planes are shared (`Arc`) between the pieces a split makes, so
+//! cloning a polygon copies no coefficients.
 
+use std::cmp::Ordering;
 use std::fmt;
+use std::sync::Arc;
 
-use crate::grid::GridPoint;
-use crate::traits::Side;
+use crate::dyadic::{self, Dyadic};
+use crate::interval::{self, Interval};
+use crate::side::Side;
+use crate::KernelError;
 
-/// Exclusive bound on `|a|`, `|b|`, `|c|` of every plane the exact kernel uses.
-pub const NORMAL_BOUND: i64 = 1 << 55;
-
-/// Exclusive bound on `|d|` of every plane the exact kernel uses.
-pub const OFFSET_BOUND: i128 = 1 << 83;
-
-/// The integer coefficients of a plane, stored compactly in 32 bytes (8-byte aligned):
-/// `a`, `b`, `c` need 56 bits each and `d` 84 bits, 252 bits in all. Word 0 holds the low
-/// 64 bits of `d`; words 1 to 3 hold `a`, `b`, `c` in their low 56 bits and one byte each
-/// of the high 24 bits of `d` (sign-extended from word 3). This is how polygons store
-/// their edge and support planes; [`Plane`] adds the f64 roundings the filter uses.
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub(crate) struct Coeffs {
-    w: [u64; 4],
+/// How a plane was defined (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum PlaneDef {
+    /// Through three points, counter-clockwise seen from the front.
+    Through([[f64; 3]; 3]),
+    /// Through `p` and `q`, containing the direction of axis `k`; normal
+    /// `(q − p) × e_k`, negated when `flip`.
+    Edge {
+        p: [f64; 3],
+        q: [f64; 3],
+        k: u8,
+        flip: bool,
+    },
+    /// Through `p` with normal `n`.
+    PointNormal { p: [f64; 3], n: [f64; 3] },
 }
 
-impl fmt::Debug for Coeffs {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.plane().fmt(f)
-    }
+/// A plane's definition with its approximate coefficients.
+#[derive(Debug)]
+pub(crate) struct PlaneData {
+    def: PlaneDef,
+    /// Midpoints of `[a, b, c, d]`.
+    approx: [f64; 4],
+    /// Bound on `|a − ã|`, `|b − b̃|`, `|c − c̃|`.
+    err_n: f64,
+    /// Bound on `|d − d̃|`.
+    err_d: f64,
 }
 
-const LOW56: u64 = (1 << 56) - 1;
-
-impl Coeffs {
-    #[inline]
-    pub(crate) fn new(a: i64, b: i64, c: i64, d: i128) -> Coeffs {
-        debug_assert!(a.abs() < NORMAL_BOUND && b.abs() < NORMAL_BOUND && c.abs() < NORMAL_BOUND);
-        debug_assert!(d.abs() < OFFSET_BOUND);
-        debug_assert!(a != 0 || b != 0 || c != 0);
-        let hi = (d >> 64) as i64 as u64;
-        Coeffs {
-            w: [
-                d as u64,
-                (a as u64 & LOW56) | ((hi & 0xff) << 56),
-                (b as u64 & LOW56) | (((hi >> 8) & 0xff) << 56),
-                (c as u64 & LOW56) | (((hi >> 16) & 0xff) << 56),
-            ],
-        }
-    }
-
-    #[inline]
-    pub(crate) fn normal(&self) -> [i64; 3] {
-        let unpack = |w: u64| ((w << 8) as i64) >> 8;
-        [unpack(self.w[1]), unpack(self.w[2]), unpack(self.w[3])]
-    }
-
-    /// Bits 64 and up of `d`, sign-extended (magnitude below `2^19`).
-    #[inline]
-    fn d_hi(&self) -> i64 {
-        (((self.w[3] as i64) >> 56) << 16)
-            | (((self.w[2] >> 56) << 8) as i64)
-            | ((self.w[1] >> 56) as i64)
-    }
-
-    #[inline]
-    pub(crate) fn d(&self) -> i128 {
-        ((self.d_hi() as i128) << 64) | self.w[0] as i128
-    }
-
-    /// `d` rounded to f64 without a 128-bit conversion: one rounding when `|d| < 2^63`,
-    /// otherwise relative error at most `3·2^-53` (the high half, below `2^19`, converts
-    /// exactly; the low half and the sum round once each).
-    #[inline]
-    pub(crate) fn d_f64(&self) -> f64 {
-        let lo = self.w[0] as i64;
-        let hi = self.d_hi();
-        if (lo >> 63) == hi {
-            lo as f64
-        } else {
-            hi as f64 * 18_446_744_073_709_551_616.0 + self.w[0] as f64
-        }
-    }
-
-    #[inline]
-    pub(crate) fn flipped(&self) -> Coeffs {
-        let [a, b, c] = self.normal();
-        Coeffs::new(-a, -b, -c, -self.d())
-    }
-
-    /// The full plane (with its f64 roundings).
-    #[inline]
-    pub(crate) fn plane(&self) -> Plane {
-        let [a, b, c] = self.normal();
-        Plane {
-            k: *self,
-            f: [a as f64, b as f64, c as f64, self.d_f64()],
-        }
-    }
-}
-
-/// An oriented plane with integer coefficients: the points `x` (in grid coordinates) with
-/// `a·x + b·y + c·z + d = 0`. Its front is where the left side is positive.
+/// An oriented plane defined exactly by input values (see the module docs).
 ///
-/// Guarantees (checked by every constructor): the normal is not zero,
-/// `|a|, |b|, |c| <` [`NORMAL_BOUND`] `= 2^55` and `|d| <` [`OFFSET_BOUND`] `= 2^83`.
-/// These bounds make every predicate of the kernel fit 256-bit integers.
-///
-/// The plane also carries its coefficients rounded to f64 (`a`, `b`, `c` with one
-/// rounding, `d` with relative error at most `3·2^-53`) for the floating-point filter, so
-/// classifying many polygons against one plane converts nothing. Equality and hashing
-/// look at the integer coefficients only.
-#[derive(Clone, Copy)]
+/// Equality is identity of definition and orientation: two planes built separately
+/// through the same points are different values (use [`Plane::coincides`] for the
+/// geometric question).
+#[derive(Clone)]
 pub struct Plane {
-    k: Coeffs,
-    f: [f64; 4],
+    data: Arc<PlaneData>,
+    neg: bool,
 }
 
 impl PartialEq for Plane {
     fn eq(&self, other: &Plane) -> bool {
-        self.k == other.k
-    }
-}
-
-impl Eq for Plane {}
-
-impl std::hash::Hash for Plane {
-    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        self.k.hash(state);
+        Arc::ptr_eq(&self.data, &other.data) && self.neg == other.neg
     }
 }
 
 impl fmt::Debug for Plane {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let [a, b, c] = self.normal();
-        write!(f, "Plane::new({a}, {b}, {c}, {}).unwrap()", self.d())
+        let [a, b, c, d] = self.approx();
+        write!(
+            f,
+            "Plane {{ {:?}{}, ≈ [{a:e}, {b:e}, {c:e}, {d:e}] }}",
+            self.data.def,
+            if self.neg { ", flipped" } else { "" }
+        )
+    }
+}
+
+/// Radius of `[lo, hi]` around its midpoint, for a vector of intervals.
+fn mid_rad3(v: [Interval; 3]) -> ([f64; 3], f64) {
+    let mut mid = [0.0; 3];
+    let mut rad: f64 = 0.0;
+    for i in 0..3 {
+        let (m, r) = v[i].mid_rad();
+        mid[i] = m;
+        rad = rad.max(r);
+    }
+    (mid, rad)
+}
+
+fn ipoint(p: [f64; 3]) -> [Interval; 3] {
+    p.map(Interval::point)
+}
+
+fn isub(a: [Interval; 3], b: [Interval; 3]) -> [Interval; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+/// `w × e_k` for interval or exact vectors, written once through a closure-free match.
+fn cross_axis_iv(w: [Interval; 3], k: u8) -> [Interval; 3] {
+    let z = Interval::point(0.0);
+    match k {
+        0 => [z, w[2], -w[1]],
+        1 => [-w[2], z, w[0]],
+        _ => [w[1], -w[0], z],
+    }
+}
+
+fn cross_axis_exact(w: &[Dyadic; 3], k: u8) -> [Dyadic; 3] {
+    match k {
+        0 => [Dyadic::zero(), w[2].clone(), -&w[1]],
+        1 => [-&w[2], Dyadic::zero(), w[0].clone()],
+        _ => [w[1].clone(), -&w[0], Dyadic::zero()],
+    }
+}
+
+fn dsub(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+}
+
+impl PlaneDef {
+    /// The normal and offset as intervals.
+    fn intervals(&self) -> ([Interval; 3], Interval) {
+        let (n, p) = match *self {
+            PlaneDef::Through([p, q, r]) => {
+                let pi = ipoint(p);
+                let u = isub(ipoint(q), pi);
+                let v = isub(ipoint(r), pi);
+                (interval::cross(u, v), pi)
+            }
+            PlaneDef::Edge { p, q, k, flip } => {
+                let pi = ipoint(p);
+                let n = cross_axis_iv(isub(ipoint(q), pi), k);
+                (if flip { n.map(|x| -x) } else { n }, pi)
+            }
+            PlaneDef::PointNormal { p, n } => (ipoint(n), ipoint(p)),
+        };
+        let d = -interval::dot(n, p);
+        (n, d)
+    }
+
+    /// The exact normal and offset.
+    fn exact(&self) -> ([Dyadic; 3], Dyadic) {
+        let (n, p) = match *self {
+            PlaneDef::Through([p, q, r]) => {
+                let pe = dyadic::point3(p);
+                let u = dsub(&dyadic::point3(q), &pe);
+                let v = dsub(&dyadic::point3(r), &pe);
+                (dyadic::cross3(&u, &v), pe)
+            }
+            PlaneDef::Edge { p, q, k, flip } => {
+                let pe = dyadic::point3(p);
+                let n = cross_axis_exact(&dsub(&dyadic::point3(q), &pe), k);
+                (if flip { n.map(|x| -&x) } else { n }, pe)
+            }
+            PlaneDef::PointNormal { p, n } => (dyadic::point3(n), dyadic::point3(p)),
+        };
+        let d = -&dyadic::dot3(&n, &p);
+        (n, d)
+    }
+
+    /// Whether `x` is one of the points that define the plane (then it lies on it).
+    fn defined_by(&self, x: &[f64; 3]) -> bool {
+        match self {
+            PlaneDef::Through(pts) => pts.iter().any(|p| p == x),
+            PlaneDef::Edge { p, q, .. } => p == x || q == x,
+            PlaneDef::PointNormal { p, .. } => p == x,
+        }
+    }
+}
+
+/// Exponent range (of non-zero magnitudes) in which Shewchuk's adaptive `orient2d` and
+/// `orient3d` (the `robust` crate) are exact: no intermediate overflows or underflows.
+const ROBUST_MIN: f64 = 7.888_609_052_210_118e-31; // 2^-100
+const ROBUST_MAX: f64 = 1.267_650_600_228_229_4e30; // 2^100
+
+/// Whether every coordinate is zero or of a magnitude where `robust` is exact.
+#[inline]
+pub(crate) fn robust_safe(pts: &[[f64; 3]]) -> bool {
+    pts.iter().flatten().all(|&x| {
+        let a = x.abs();
+        a == 0.0 || (ROBUST_MIN..=ROBUST_MAX).contains(&a)
+    })
+}
+
+#[inline]
+fn c3(p: [f64; 3]) -> robust::Coord3D<f64> {
+    robust::Coord3D {
+        x: p[0],
+        y: p[1],
+        z: p[2],
     }
 }
 
 impl Plane {
-    /// A plane from its coefficients, or `None` if the normal is zero or a coefficient is
-    /// out of bounds.
-    pub fn new(a: i64, b: i64, c: i64, d: i128) -> Option<Plane> {
-        let ok_n = |v: i64| v > -NORMAL_BOUND && v < NORMAL_BOUND;
-        if !(ok_n(a) && ok_n(b) && ok_n(c)) || (a == 0 && b == 0 && c == 0) {
-            return None;
+    fn from_def(def: PlaneDef) -> Plane {
+        let (n, d) = def.intervals();
+        let (mid_n, err_n) = mid_rad3(n);
+        let (mid_d, err_d) = d.mid_rad();
+        Plane {
+            data: Arc::new(PlaneData {
+                def,
+                approx: [mid_n[0], mid_n[1], mid_n[2], mid_d],
+                err_n,
+                err_d,
+            }),
+            neg: false,
         }
-        if !(d > -OFFSET_BOUND && d < OFFSET_BOUND) {
-            return None;
-        }
-        Some(Plane::raw(a, b, c, d))
     }
 
-    /// Builds a plane whose bounds the caller has established (checked in debug builds).
-    #[inline]
-    pub(crate) fn raw(a: i64, b: i64, c: i64, d: i128) -> Plane {
-        Coeffs::new(a, b, c, d).plane()
-    }
-
-    /// The compact integer coefficients.
-    #[inline]
-    pub(crate) fn coeffs(&self) -> Coeffs {
-        self.k
-    }
-
-    /// The coefficients rounded to f64 `[a, b, c, d]`.
-    #[inline]
-    pub fn approx(&self) -> [f64; 4] {
-        self.f
-    }
-
-    /// The plane through three grid points, oriented so that `p`, `q`, `r` run
-    /// counter-clockwise seen from its front: normal `(q - p) × (r - p)`.
+    /// The plane through three points, oriented so that `p`, `q`, `r` run
+    /// counter-clockwise seen from its front (normal `(q − p) × (r − p)`).
     ///
-    /// `None` if the points are collinear or their coordinates exceed the grid bounds
-    /// (magnitude above `2^25 + 1` for the default 26 bits).
-    pub fn through(p: GridPoint, q: GridPoint, r: GridPoint) -> Option<Plane> {
-        let lim = (1i64 << 25) + 1;
-        for g in [p, q, r] {
-            if g.to_array().iter().any(|v| v.abs() > lim) {
-                return None;
-            }
+    /// Errors: [`KernelError::NonFinite`] for a NaN or infinite coordinate,
+    /// [`KernelError::ZeroNormal`] when the points are exactly collinear.
+    pub fn through(p: [f64; 3], q: [f64; 3], r: [f64; 3]) -> Result<Plane, KernelError> {
+        for x in [p, q, r] {
+            check_finite(x)?;
         }
-        let u = [q.x - p.x, q.y - p.y, q.z - p.z];
-        let v = [r.x - p.x, r.y - p.y, r.z - p.z];
-        let n = [
-            u[1] * v[2] - u[2] * v[1],
-            u[2] * v[0] - u[0] * v[2],
-            u[0] * v[1] - u[1] * v[0],
-        ];
-        if n == [0, 0, 0] {
-            return None;
+        let plane = Plane::from_def(PlaneDef::Through([p, q, r]));
+        if plane.normal_is_zero() {
+            return Err(KernelError::ZeroNormal);
         }
-        let d =
-            -(n[0] as i128 * p.x as i128 + n[1] as i128 * p.y as i128 + n[2] as i128 * p.z as i128);
-        Plane::new(n[0], n[1], n[2], d)
+        Ok(plane)
     }
 
-    /// The normal `(a, b, c)`.
-    #[inline]
-    pub fn normal(&self) -> [i64; 3] {
-        self.k.normal()
+    /// The plane through `p` with normal `n` (front where `n` points).
+    ///
+    /// Errors: [`KernelError::NonFinite`], or [`KernelError::ZeroNormal`] for `n = 0`.
+    pub fn point_normal(p: [f64; 3], n: [f64; 3]) -> Result<Plane, KernelError> {
+        check_finite(p)?;
+        check_finite(n)?;
+        if n == [0.0; 3] {
+            return Err(KernelError::ZeroNormal);
+        }
+        Ok(Plane::from_def(PlaneDef::PointNormal { p, n }))
     }
 
-    /// The offset `d`.
-    #[inline]
-    pub fn d(&self) -> i128 {
-        self.k.d()
+    /// The edge plane through `p` and `q` containing the direction of axis `k`, normal
+    /// `(q − p) × e_k` (negated when `flip`). The caller guarantees that `p` and `q`
+    /// differ in projection along `k`.
+    pub(crate) fn edge(p: [f64; 3], q: [f64; 3], k: usize, flip: bool) -> Plane {
+        Plane::from_def(PlaneDef::Edge {
+            p,
+            q,
+            k: k as u8,
+            flip,
+        })
     }
 
-    /// All four coefficients.
-    pub fn coefficients(&self) -> (i64, i64, i64, i128) {
-        let [a, b, c] = self.normal();
-        (a, b, c, self.d())
+    /// Whether the exact normal is zero.
+    fn normal_is_zero(&self) -> bool {
+        let [a, b, c, _] = self.approx();
+        let e = self.data.err_n;
+        if a.abs() > e || b.abs() > e || c.abs() > e {
+            return false;
+        }
+        let (n, _) = self.data.def.exact();
+        n.iter().all(Dyadic::is_zero)
     }
 
     /// The same plane facing the other way.
     #[inline]
     pub fn flipped(&self) -> Plane {
         Plane {
-            k: self.k.flipped(),
-            f: self.f.map(|v| -v),
+            data: Arc::clone(&self.data),
+            neg: !self.neg,
         }
     }
 
-    /// `a·x + b·y + c·z + d` at a grid point, exactly. Valid for coordinates of magnitude
-    /// up to [`crate::grid::FAR_LIMIT`] (the value then stays below `2^119`).
+    /// The approximate coefficients `[a, b, c, d]` (midpoints of proven intervals; see
+    /// [`Plane::error_bounds`]).
     #[inline]
-    pub fn eval(&self, p: &GridPoint) -> i128 {
-        let [a, b, c] = self.normal();
-        a as i128 * p.x as i128 + b as i128 * p.y as i128 + c as i128 * p.z as i128 + self.d()
+    pub fn approx(&self) -> [f64; 4] {
+        let a = self.data.approx;
+        if self.neg {
+            a.map(|v| -v)
+        } else {
+            a
+        }
     }
 
-    /// The exact side of a grid point (coordinates up to [`crate::grid::FAR_LIMIT`]).
+    /// Bounds on the errors of [`Plane::approx`]: of every normal component, and of the
+    /// offset.
     #[inline]
-    pub fn side_of(&self, p: &GridPoint) -> Side {
-        side_of_sign(self.eval(p).signum() as i32)
+    pub fn error_bounds(&self) -> (f64, f64) {
+        (self.data.err_n, self.data.err_d)
     }
 
-    /// The axis (0 = x, 1 = y, 2 = z) of the normal's largest component (lowest index on
-    /// ties).
-    pub fn dominant_axis(&self) -> usize {
-        dominant_axis(self.normal())
+    /// The exact coefficients, with this plane's orientation.
+    pub(crate) fn exact(&self) -> ([Dyadic; 3], Dyadic) {
+        let (n, d) = self.data.def.exact();
+        if self.neg {
+            (n.map(|x| -&x), -&d)
+        } else {
+            (n, d)
+        }
     }
 
-    /// Whether the normals of two planes point into the same half-space (their dot product
-    /// is positive), exactly.
+    /// Whether `self` and `other` share a definition (they are the same plane, possibly
+    /// flipped): the combinatorial shortcut of the predicates.
+    #[inline]
+    pub(crate) fn same_definition(&self, other: &Plane) -> bool {
+        Arc::ptr_eq(&self.data, &other.data)
+    }
+
+    /// Whether `x` is one of the points defining the plane (so exactly on it).
+    #[inline]
+    pub(crate) fn defined_by(&self, x: &[f64; 3]) -> bool {
+        self.data.def.defined_by(x)
+    }
+
+    /// The exact side of a point given by its f64 coordinates.
+    pub fn side_of(&self, x: [f64; 3]) -> Side {
+        self.side_of_counted(x, &mut 0)
+    }
+
+    /// [`Plane::side_of`], counting in `fallbacks` when the filter could not decide.
+    pub(crate) fn side_of_counted(&self, x: [f64; 3], fallbacks: &mut u64) -> Side {
+        if let Some(s) = crate::predicates::PlaneF::new(self).side(&x, 0.0) {
+            return s;
+        }
+        if self.defined_by(&x) {
+            return Side::On;
+        }
+        *fallbacks += 1;
+        self.side_exact(x)
+    }
+
+    /// The exact side of a point, without filter.
+    pub(crate) fn side_exact(&self, x: [f64; 3]) -> Side {
+        if self.defined_by(&x) {
+            return Side::On;
+        }
+        let s = match self.data.def {
+            PlaneDef::Through([p, q, r]) if robust_safe(&[p, q, r, x]) => {
+                // robust's orient3d is positive when x lies on the side the normal of
+                // (q − p) × (r − p) points away from.
+                let o = robust::orient3d(c3(p), c3(q), c3(r), c3(x));
+                0.0f64.partial_cmp(&o).unwrap_or(Ordering::Equal)
+            }
+            PlaneDef::Edge { p, q, k, flip } if robust_safe(&[p, q, x]) => {
+                let (u, v) = plane_axes(k as usize);
+                let c2 = |a: [f64; 3]| robust::Coord { x: a[u], y: a[v] };
+                // orient2d(p, q, x) = −((q − p) × e_k)·(x − p).
+                let o = robust::orient2d(c2(p), c2(q), c2(x));
+                let s = 0.0f64.partial_cmp(&o).unwrap_or(Ordering::Equal);
+                if flip {
+                    s.reverse()
+                } else {
+                    s
+                }
+            }
+            _ => {
+                let (n, d) = self.data.def.exact();
+                (&dyadic::dot3(&n, &dyadic::point3(x)) + &d).signum()
+            }
+        };
+        let s = if self.neg { s.reverse() } else { s };
+        Side::from_ordering(s)
+    }
+
+    /// Whether the normals of two planes point into the same half-space (positive dot
+    /// product), exactly.
     pub fn same_facing(&self, other: &Plane) -> bool {
-        let n = self.normal();
-        let m = other.normal();
-        let dot: i128 = (0..3).map(|i| n[i] as i128 * m[i] as i128).sum();
-        dot > 0
+        if self.same_definition(other) {
+            return self.neg == other.neg;
+        }
+        let iv = |p: &Plane| {
+            let (e, _) = p.error_bounds();
+            let a = p.approx();
+            [0, 1, 2].map(|i| Interval::around(a[i], e))
+        };
+        if let Some(s) = interval::dot(iv(self), iv(other)).sign() {
+            return s == Ordering::Greater;
+        }
+        let (n, _) = self.exact();
+        let (m, _) = other.exact();
+        dyadic::dot3(&n, &m).signum() == Ordering::Greater
+    }
+
+    /// The exact sign of normal component `k`.
+    pub(crate) fn normal_sign(&self, k: usize) -> Ordering {
+        let a = self.approx()[k];
+        let e = self.data.err_n;
+        if a > e {
+            return Ordering::Greater;
+        }
+        if a < -e {
+            return Ordering::Less;
+        }
+        self.exact().0[k].signum()
+    }
+
+    /// The axis of the largest approximate normal component (lowest index on ties). A
+    /// choice only: callers check the exact sign of that component.
+    pub fn dominant_axis(&self) -> usize {
+        let [a, b, c, _] = self.approx().map(f64::abs);
+        if a >= b && a >= c {
+            0
+        } else if b >= c {
+            1
+        } else {
+            2
+        }
+    }
+
+    /// Whether two planes are the same oriented plane (geometrically), exactly.
+    pub fn coincides(&self, other: &Plane) -> bool {
+        if self.same_definition(other) {
+            return self.neg == other.neg;
+        }
+        let (n, d) = self.exact();
+        let (m, e) = other.exact();
+        // Parallel, same direction, and the same offset after scaling.
+        let c = dyadic::cross3(&n, &m);
+        if !c.iter().all(Dyadic::is_zero) || dyadic::dot3(&n, &m).signum() != Ordering::Greater {
+            return false;
+        }
+        // n = λ m with λ > 0: then d = λ e ⇔ d·m_i = e·n_i for a non-zero component.
+        (0..3)
+            .find(|&i| !m[i].is_zero())
+            .is_some_and(|i| (&(&d * &m[i]) - &(&e * &n[i])).is_zero())
     }
 }
 
-/// The side for the sign of a plane value.
+/// The two axes spanning the projection along `k`, so that `(u, v, k)` is right-handed.
 #[inline]
-pub(crate) fn side_of_sign(s: i32) -> Side {
-    match s {
-        1.. => Side::Front,
-        0 => Side::On,
-        _ => Side::Back,
-    }
+pub(crate) fn plane_axes(k: usize) -> (usize, usize) {
+    ((k + 1) % 3, (k + 2) % 3)
 }
 
-/// The axis of the largest magnitude (lowest index on ties).
-pub(crate) fn dominant_axis<T: Into<i128> + Copy>(n: [T; 3]) -> usize {
-    let m = n.map(|v| v.into().unsigned_abs());
-    if m[0] >= m[1] && m[0] >= m[2] {
-        0
-    } else if m[1] >= m[2] {
-        1
+pub(crate) fn check_finite(p: [f64; 3]) -> Result<(), KernelError> {
+    if p.iter().all(|v| v.is_finite()) {
+        Ok(())
     } else {
-        2
+        Err(KernelError::NonFinite(p[0], p[1], p[2]))
     }
 }
 
@@ -277,37 +451,59 @@ mod tests {
     use super::*;
 
     #[test]
-    fn d_round_trips_through_halves() {
-        for d in [
-            0i128,
-            1,
-            -1,
-            (1 << 82) - 1,
-            -(1 << 82) + 1,
-            123_456_789_012_345_678_901,
-        ] {
-            assert_eq!(Plane::new(1, 0, 0, d).unwrap().d(), d);
+    fn through_orients_counter_clockwise() {
+        let p = Plane::through([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+        assert_eq!(p.side_of([0.0, 0.0, 5.0]), Side::Front);
+        assert_eq!(p.side_of([7.0, -3.0, 0.0]), Side::On);
+        assert_eq!(p.flipped().side_of([0.0, 0.0, 5.0]), Side::Back);
+        assert!(Plane::through([0.0; 3], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]).is_err());
+    }
+
+    #[test]
+    fn edge_planes_point_outwards() {
+        // Edge from (0,0) to (1,0) seen along +z: the interior (y > 0) is behind.
+        let e = Plane::edge([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], 2, false);
+        assert_eq!(e.side_of([0.5, 1.0, 3.0]), Side::Back);
+        assert_eq!(e.side_of([0.5, -1.0, 3.0]), Side::Front);
+        assert_eq!(e.side_of([0.5, 0.0, 3.0]), Side::On);
+        for k in 0..3 {
+            let (u, v) = plane_axes(k);
+            let mut p = [0.0; 3];
+            let mut q = [0.0; 3];
+            q[u] = 1.0;
+            let mut inside = [0.0; 3];
+            inside[v] = 1.0;
+            let e = Plane::edge(p, q, k, false);
+            assert_eq!(e.side_of(inside), Side::Back, "axis {k}");
+            assert_eq!(e.side_exact(inside), Side::Back, "axis {k}");
+            p[k] = 5.0;
+            assert_eq!(e.side_of(p), Side::On);
         }
     }
 
     #[test]
-    fn bounds_are_enforced() {
-        assert!(Plane::new(0, 0, 0, 1).is_none());
-        assert!(Plane::new(NORMAL_BOUND, 0, 0, 1).is_none());
-        assert!(Plane::new(1, 0, 0, OFFSET_BOUND).is_none());
-        assert!(Plane::new(NORMAL_BOUND - 1, 0, 0, OFFSET_BOUND - 1).is_some());
+    fn exact_far_from_robust_range() {
+        let s = 1e-200;
+        let p = Plane::through([0.0, 0.0, 0.0], [s, 0.0, 0.0], [0.0, s, 0.0]).unwrap();
+        assert_eq!(p.side_of([0.0, 0.0, s * 1e-100]), Side::Front);
+        assert_eq!(p.side_exact([3.0 * s, 5.0 * s, 0.0]), Side::On);
+        let big = 1e300;
+        let q = Plane::through([0.0, 0.0, big], [big, 0.0, big], [0.0, big, big]).unwrap();
+        assert_eq!(q.side_of([1.0, 1.0, big]), Side::On);
+        assert_eq!(
+            q.side_of([1.0, 1.0, big * (1.0 + f64::EPSILON)]),
+            Side::Front
+        );
     }
 
     #[test]
-    fn through_orients_counter_clockwise() {
-        let p = Plane::through(
-            GridPoint::new(0, 0, 0),
-            GridPoint::new(1, 0, 0),
-            GridPoint::new(0, 1, 0),
-        )
-        .unwrap();
-        assert_eq!(p.side_of(&GridPoint::new(0, 0, 5)), Side::Front);
-        assert_eq!(p.side_of(&GridPoint::new(7, -3, 0)), Side::On);
-        assert_eq!(p.flipped().side_of(&GridPoint::new(0, 0, 5)), Side::Back);
+    fn coincidence_is_geometric() {
+        let a = Plane::through([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]).unwrap();
+        let b = Plane::through([2.0, 2.0, 0.0], [3.0, 2.0, 0.0], [2.0, 5.0, 0.0]).unwrap();
+        assert!(a.coincides(&b));
+        assert!(!a.coincides(&b.flipped()));
+        assert!(a.same_facing(&b));
+        let n = Plane::point_normal([0.0, 0.0, 0.0], [0.0, 0.0, 3.0]).unwrap();
+        assert!(a.coincides(&n));
     }
 }

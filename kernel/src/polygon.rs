@@ -3,9 +3,9 @@
 
 use smallvec::SmallVec;
 
-use crate::plane::{Coeffs, Plane};
-use crate::predicates::{self, as_grid, PlaneF};
-use crate::traits::{PolygonSide, Side};
+use crate::plane::Plane;
+use crate::predicates::{self, PlaneF};
+use crate::side::{PolygonSide, Side};
 
 /// Vertices and edges stored inline (no heap allocation) up to this count.
 pub(crate) const INLINE: usize = 4;
@@ -14,10 +14,10 @@ pub(crate) const INLINE: usize = 4;
 /// so that classification touches as little memory as possible.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Corner {
-    /// Approximate grid coordinates of vertex `i`.
+    /// Approximate coordinates of vertex `i`.
     pub(crate) pos: [f64; 3],
-    /// Bound on the error of every coordinate of `pos`; 0 means `pos` is exact (and then a
-    /// grid point).
+    /// Bound on the error of every coordinate of `pos`; 0 means `pos` is the vertex
+    /// exactly (an input point, or an intersection that happens to be representable).
     pub(crate) err: f32,
     /// Whether edge `i` (from vertex `i` to `i + 1`) lies on an edge of the input face.
     pub(crate) original: bool,
@@ -38,19 +38,19 @@ pub(crate) fn err32(e: f64) -> f32 {
 #[derive(Default)]
 pub(crate) struct Builder {
     corners: SmallVec<[Corner; INLINE]>,
-    edges: SmallVec<[Coeffs; INLINE]>,
+    edges: SmallVec<[Plane; INLINE]>,
 }
 
 impl Builder {
     /// Appends vertex `i` and the plane of edge `i`.
     #[inline]
-    pub(crate) fn push(&mut self, corner: Corner, edge: Coeffs) {
+    pub(crate) fn push(&mut self, corner: Corner, edge: Plane) {
         self.corners.push(corner);
         self.edges.push(edge);
     }
 
     /// The polygon, computing the filter's per-polygon bounds.
-    pub(crate) fn finish(self, support: Coeffs) -> ExactPolygon {
+    pub(crate) fn finish(self, support: Plane) -> ExactPolygon {
         let mut max_abs: f32 = 0.0;
         let mut max_err: f32 = 0.0;
         for c in &self.corners {
@@ -71,9 +71,9 @@ impl Builder {
 /// A convex polygon of the exact kernel.
 ///
 /// Representation: the supporting plane `S` and, per edge `i`, a bounding plane `Eᵢ` with
-/// the interior on its back side. Vertex `i` is `S ∩ Eᵢ₋₁ ∩ Eᵢ`; it is never stored as
-/// rounded coordinates for decisions: the cached f64 position only feeds the filter,
-/// together with its proven error bound. Guarantees: at least three vertices, strictly
+/// the interior on its back side. Vertex `i` is `S ∩ Eᵢ₋₁ ∩ Eᵢ` (an input point for the
+/// corners of input faces); it is never stored as rounded coordinates for decisions: the
+/// cached f64 position only feeds the filter, together with its proven error bound. Guarantees: at least three vertices, strictly
 /// convex (no three consecutive vertices collinear), non-zero area, vertices
 /// counter-clockwise seen from the front of `S`.
 ///
@@ -87,14 +87,14 @@ pub struct ExactPolygon {
     max_abs: f32,
     /// Upper bound on the error bounds of all cached vertex positions.
     max_err: f32,
-    pub(crate) edges: SmallVec<[Coeffs; INLINE]>,
-    pub(crate) support: Coeffs,
+    pub(crate) edges: SmallVec<[Plane; INLINE]>,
+    pub(crate) support: Plane,
 }
 
 impl ExactPolygon {
     /// The supporting plane (normal towards the front).
     pub fn support(&self) -> Plane {
-        self.support.plane()
+        self.support.clone()
     }
 
     /// Number of vertices.
@@ -110,7 +110,7 @@ impl ExactPolygon {
     /// The bounding plane of edge `i` (from vertex `i` to `i + 1`); the interior is on its
     /// back side. Panics if `i` is out of range.
     pub fn edge_plane(&self, i: usize) -> Plane {
-        self.edges[i].plane()
+        self.edges[i].clone()
     }
 
     /// Whether edge `i` lies on an edge of the input face.
@@ -123,14 +123,14 @@ impl ExactPolygon {
     pub fn vertex_planes(&self, i: usize) -> [Plane; 3] {
         let n = self.corners.len();
         [
-            self.support.plane(),
-            self.edges[(i + n - 1) % n].plane(),
-            self.edges[i].plane(),
+            self.support.clone(),
+            self.edges[(i + n - 1) % n].clone(),
+            self.edges[i].clone(),
         ]
     }
 
-    /// The cached approximate grid coordinates of vertex `i` and their error bound (0 for
-    /// a vertex that is exactly a grid point). Panics if `i` is out of range.
+    /// The cached approximate coordinates of vertex `i` and their error bound (0 when
+    /// they are the vertex exactly). Panics if `i` is out of range.
     pub fn vertex_approx(&self, i: usize) -> ([f64; 3], f64) {
         let c = &self.corners[i];
         (c.pos, c.err as f64)
@@ -139,11 +139,12 @@ impl ExactPolygon {
     /// Exact side of `h` at vertex `i`, without the filter. Panics if `i` is out of range.
     pub fn side_exact(&self, i: usize, h: &Plane) -> Side {
         let c = &self.corners[i];
-        if let Some(g) = as_grid(&c.pos, c.err as f64) {
-            return h.side_of(&g);
+        if c.err == 0.0 {
+            return h.side_exact(c.pos);
         }
-        let [s, a, b] = self.vertex_planes(i);
-        predicates::side_of_intersection(&s, &a, &b, h).unwrap_or(Side::On)
+        let n = self.corners.len();
+        let (a, b) = (&self.edges[(i + n - 1) % n], &self.edges[i]);
+        predicates::side_of_intersection(&self.support, a, b, h).unwrap_or(Side::On)
     }
 
     /// The semi-static filter's sign at corner `c`: `1` front, `-1` back, `0` undecided.
@@ -159,21 +160,27 @@ impl ExactPolygon {
     #[inline]
     fn fine_side(&self, i: usize, h: &Plane, hf: &PlaneF, fallbacks: &mut u64) -> Side {
         let c = &self.corners[i];
+        if let Some(s) = hf.side(&c.pos, c.err as f64) {
+            return s;
+        }
+        // The combinatorial shortcut: a vertex that defines the plane, or is defined by
+        // it, lies on it (neighbouring faces share vertices; split vertices lie on their
+        // cut).
         if c.err == 0.0 {
-            // A grid point: the exact evaluation in i128 costs about as much as the
-            // per-vertex filter, and a vertex on the plane would defeat the filter anyway.
-            if let Some(g) = as_grid(&c.pos, 0.0) {
-                *fallbacks += 1;
-                return h.side_of(&g);
+            if h.defined_by(&c.pos) {
+                return Side::On;
+            }
+        } else {
+            let n = self.corners.len();
+            if h.same_definition(&self.support)
+                || h.same_definition(&self.edges[(i + n - 1) % n])
+                || h.same_definition(&self.edges[i])
+            {
+                return Side::On;
             }
         }
-        match hf.side(&c.pos, c.err as f64) {
-            Some(s) => s,
-            None => {
-                *fallbacks += 1;
-                self.side_exact(i, h)
-            }
-        }
+        *fallbacks += 1;
+        self.side_exact(i, h)
     }
 
     #[inline]
@@ -286,7 +293,7 @@ impl ExactPolygon {
             3 => PolygonSide::Spanning,
             FRONT => PolygonSide::Front,
             BACK => PolygonSide::Back,
-            _ if self.support().same_facing(h) => PolygonSide::Coplanar,
+            _ if self.support.same_facing(h) => PolygonSide::Coplanar,
             _ => PolygonSide::CoplanarOpposite,
         }
     }
@@ -306,7 +313,7 @@ impl ExactPolygon {
             (true, false) => return (Some(self.clone()), None),
             (false, true) => return (None, Some(self.clone())),
             (false, false) => {
-                return if self.support().same_facing(h) {
+                return if self.support.same_facing(h) {
                     (Some(self.clone()), None)
                 } else {
                     (None, Some(self.clone()))
@@ -315,30 +322,27 @@ impl ExactPolygon {
             (true, true) => {}
         }
         let n = self.corners.len();
-        let neg = h.coeffs().flipped();
-        let hk = h.coeffs();
-        let support = self.support.plane();
-        let sf = PlaneF::new(&support);
+        let neg = h.flipped();
         let mut fp = Builder::default();
         let mut bp = Builder::default();
         for i in 0..n {
-            let (c, e) = (self.corners[i], self.edges[i]);
+            let (c, e) = (self.corners[i], &self.edges[i]);
             let j = if i + 1 == n { 0 } else { i + 1 };
             let (si, sj) = (sides[i], sides[j]);
             // Vertex i itself; its outgoing edge becomes the cut when the polygon leaves
             // the piece's side right after it.
             if si != Side::Back {
                 if si == Side::On && sj == Side::Back {
-                    fp.push(cut_corner(&c), neg);
+                    fp.push(cut_corner(&c), neg.clone());
                 } else {
-                    fp.push(c, e);
+                    fp.push(c, e.clone());
                 }
             }
             if si != Side::Front {
                 if si == Side::On && sj == Side::Front {
-                    bp.push(cut_corner(&c), hk);
+                    bp.push(cut_corner(&c), h.clone());
                 } else {
-                    bp.push(c, e);
+                    bp.push(c, e.clone());
                 }
             }
             // A strict crossing of edge i.
@@ -347,9 +351,11 @@ impl ExactPolygon {
                 (Side::Front, Side::Back) | (Side::Back, Side::Front)
             );
             if crossing {
-                let edge = e.plane();
-                let (pos, err) = predicates::approximate_f(&sf, &PlaneF::new(&edge), &hf)
-                    .or_else(|| predicates::approximate(&support, &edge, h))
+                let (pos, err) = predicates::approximate(&self.support, e, h)
+                    .or_else(|| {
+                        let p = predicates::rounded_intersection(&self.support, e, h)?;
+                        Some((p, f64::INFINITY))
+                    })
                     .unwrap_or(([0.0; 3], f64::INFINITY));
                 let on_edge = Corner {
                     pos,
@@ -357,15 +363,18 @@ impl ExactPolygon {
                     original: c.original,
                 };
                 if si == Side::Front {
-                    fp.push(cut_corner(&on_edge), neg);
-                    bp.push(on_edge, e);
+                    fp.push(cut_corner(&on_edge), neg.clone());
+                    bp.push(on_edge, e.clone());
                 } else {
-                    fp.push(on_edge, e);
-                    bp.push(cut_corner(&on_edge), hk);
+                    fp.push(on_edge, e.clone());
+                    bp.push(cut_corner(&on_edge), h.clone());
                 }
             }
         }
-        (Some(fp.finish(self.support)), Some(bp.finish(self.support)))
+        (
+            Some(fp.finish(self.support.clone())),
+            Some(bp.finish(self.support.clone())),
+        )
     }
 }
 
@@ -387,9 +396,8 @@ mod tests {
     #[test]
     fn layout_stays_compact() {
         assert_eq!(std::mem::size_of::<Corner>(), 32);
-        assert_eq!(std::mem::size_of::<Coeffs>(), 32);
-        assert_eq!(std::mem::size_of::<Plane>(), 64);
-        assert!(std::mem::size_of::<ExactPolygon>() <= 312);
+        assert_eq!(std::mem::size_of::<Plane>(), 16);
+        assert!(std::mem::size_of::<ExactPolygon>() <= 232);
     }
 
     #[test]

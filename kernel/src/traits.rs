@@ -1,76 +1,9 @@
 //! The interface every polygon kernel offers to the orderings (exact and float alike).
 
 use glam::DVec3;
-use thiserror::Error;
 
-/// The side of a plane a point lies on. `Front` is the side the plane's normal points to
-/// (where `a·x + b·y + c·z + d > 0`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Side {
-    /// Strictly on the side the normal points to.
-    Front,
-    /// Strictly on the other side.
-    Back,
-    /// Exactly on the plane.
-    On,
-}
-
-impl Side {
-    /// The opposite side (`On` stays `On`).
-    pub fn flip(self) -> Side {
-        match self {
-            Side::Front => Side::Back,
-            Side::Back => Side::Front,
-            Side::On => Side::On,
-        }
-    }
-}
-
-/// Where a convex polygon lies with respect to a plane.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum PolygonSide {
-    /// Every vertex is in front or on the plane, at least one strictly in front.
-    Front,
-    /// Every vertex is behind or on the plane, at least one strictly behind.
-    Back,
-    /// In the plane, facing the same way as the plane.
-    Coplanar,
-    /// In the plane, facing the opposite way.
-    CoplanarOpposite,
-    /// Vertices strictly on both sides.
-    Spanning,
-}
-
-/// Errors of the kernels. Everything here is an input problem: the kernels themselves
-/// never fail on valid input.
-#[derive(Debug, Error, Clone, PartialEq)]
-#[non_exhaustive]
-pub enum KernelError {
-    /// No points were given to build a quantisation grid from.
-    #[error("no geometry: cannot build a quantisation grid from an empty scene")]
-    Empty,
-    /// A coordinate is NaN or infinite.
-    #[error("non-finite coordinate ({0}, {1}, {2})")]
-    NonFinite(f64, f64, f64),
-    /// A point lies outside the quantisation grid's box.
-    #[error("point ({0}, {1}, {2}) lies outside the quantisation grid")]
-    OutsideGrid(f64, f64, f64),
-    /// A point (such as the eye) is too far from the scene to be represented exactly.
-    #[error("point ({0}, {1}, {2}) is too far from the scene for exact predicates")]
-    TooFar(f64, f64, f64),
-    /// The scene's extent is too large or too small to quantise in f64.
-    #[error("scene extent {0} cannot be quantised (must be finite, and positive after snapping)")]
-    BadExtent(f64),
-    /// A plane normal is zero.
-    #[error("zero plane normal")]
-    ZeroNormal,
-    /// The number of grid bits asked for is outside the supported range.
-    #[error("unsupported number of grid bits {0} (supported: 2 to 26)")]
-    BadBits(u32),
-    /// Integer plane coefficients exceed the bounds the exact predicates are proven for.
-    #[error("plane coefficients out of range")]
-    PlaneOutOfRange,
-}
+use crate::error::KernelError;
+use crate::side::{PolygonSide, Side};
 
 /// A polygon kernel: planes, convex polygons, classification and splitting.
 ///
