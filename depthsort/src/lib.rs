@@ -115,7 +115,7 @@ pub fn order(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Orde
         });
     };
     match opts.arith {
-        Arith::Exact => order_with(&ExactKernel::new(lo, hi)?, scene, camera, opts),
+        Arith::Exact => order_with(&ExactKernel::new(), scene, camera, opts),
         Arith::Float => order_with(&FloatKernel::new(lo, hi)?, scene, camera, opts),
     }
 }

@@ -2,7 +2,8 @@
 //! plane tests cannot settle: polygons that touch at a shared vertex or edge, where a
 //! float overlap test can never prove that their projections only touch.
 
-use limn_kernel::{ExactKernel, ExactPolygon, FloatKernel, FloatPolygon, GridPoint, Kernel};
+use glam::DVec3;
+use limn_kernel::{ExactKernel, ExactPolygon, FloatKernel, FloatPolygon, Kernel};
 
 /// A kernel that can give some vertices exactly and orient four such points exactly.
 pub trait ExactVertices: Kernel {
@@ -21,29 +22,29 @@ pub trait ExactVertices: Kernel {
 }
 
 impl ExactVertices for ExactKernel {
-    type Exact = [i64; 3];
+    type Exact = [f64; 3];
 
-    fn vertex_exact(&self, poly: &ExactPolygon, i: usize) -> Option<[i64; 3]> {
+    fn vertex_exact(&self, poly: &ExactPolygon, i: usize) -> Option<[f64; 3]> {
         let (c, err) = poly.vertex_approx(i);
-        (err == 0.0).then(|| c.map(|v| v as i64))
+        (err == 0.0).then_some(c)
     }
 
-    fn point_exact(&self, p: &GridPoint) -> [i64; 3] {
-        [p.x, p.y, p.z]
+    fn point_exact(&self, p: &DVec3) -> [f64; 3] {
+        p.to_array()
     }
 
-    fn orient(&self, e: &[i64; 3], a: &[i64; 3], b: &[i64; 3], c: &[i64; 3]) -> i32 {
-        use ethnum::I256;
-        let d = |p: &[i64; 3]| [0, 1, 2].map(|k| I256::from(p[k] as i128 - e[k] as i128));
-        let (a, b, c) = (d(a), d(b), d(c));
-        let det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-            + a[2] * (b[0] * c[1] - b[1] * c[0]);
-        det.signum().as_i32()
+    fn orient(&self, e: &[f64; 3], a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> i32 {
+        match limn_kernel::predicates::orient3d(*e, *a, *b, *c) {
+            std::cmp::Ordering::Greater => 1,
+            std::cmp::Ordering::Less => -1,
+            std::cmp::Ordering::Equal => 0,
+        }
     }
 
-    fn vertex_world_fast(&self, poly: &ExactPolygon, i: usize) -> Option<glam::DVec3> {
+    fn vertex_world_fast(&self, poly: &ExactPolygon, i: usize) -> Option<DVec3> {
         let (c, err) = poly.vertex_approx(i);
-        (err <= 1e-6).then(|| self.quantizer().world_f(c))
+        let scale = c[0].abs().max(c[1].abs()).max(c[2].abs());
+        (err <= 1e-9 * scale).then(|| DVec3::from_array(c))
     }
 }
 

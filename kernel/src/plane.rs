@@ -26,21 +26,32 @@ use crate::interval::{self, Interval};
 use crate::side::Side;
 use crate::KernelError;
 
-/// How a plane was defined (see the module docs).
+/// How a plane was defined (see the module docs): the exact values its coefficients are
+/// polynomials in.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum PlaneDef {
-    /// Through three points, counter-clockwise seen from the front.
+pub enum PlaneDef {
+    /// Through three points, counter-clockwise seen from the front: normal
+    /// `(q − p) × (r − p)`, offset `−n·p`.
     Through([[f64; 3]; 3]),
-    /// Through `p` and `q`, containing the direction of axis `k`; normal
-    /// `(q − p) × e_k`, negated when `flip`.
+    /// Through `p` and `q`, containing the direction of axis `k` (0 = x, 1 = y, 2 = z):
+    /// normal `(q − p) × e_k`, negated when `flip`; offset `−n·p`.
     Edge {
+        /// First point.
         p: [f64; 3],
+        /// Second point.
         q: [f64; 3],
+        /// The axis whose direction the plane contains.
         k: u8,
+        /// Whether the normal is negated.
         flip: bool,
     },
-    /// Through `p` with normal `n`.
-    PointNormal { p: [f64; 3], n: [f64; 3] },
+    /// Through `p` with normal `n`: offset `−n·p`.
+    PointNormal {
+        /// The point.
+        p: [f64; 3],
+        /// The normal.
+        n: [f64; 3],
+    },
 }
 
 /// A plane's definition with its approximate coefficients.
@@ -254,6 +265,16 @@ impl Plane {
             k: k as u8,
             flip,
         })
+    }
+
+    /// The definition of the plane before [`Plane::is_flipped`] is applied.
+    pub fn definition(&self) -> PlaneDef {
+        self.data.def
+    }
+
+    /// Whether this plane is its definition flipped (all coefficients negated).
+    pub fn is_flipped(&self) -> bool {
+        self.neg
     }
 
     /// Whether the exact normal is zero.

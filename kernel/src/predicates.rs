@@ -189,3 +189,25 @@ pub(crate) fn rounded_intersection(p1: &Plane, p2: &Plane, p3: &Plane) -> Option
     // Divide with 64 bits of quotient precision: scale X by 2^k first.
     Some(x.map(|v| dyadic::quotient_f64(&v, &d)))
 }
+
+/// The exact sign of `robust::orient3d(a, b, c, d)`: `Greater` when `d` lies below the
+/// plane through `a`, `b`, `c` (counter-clockwise seen from above), for every finite
+/// input (Shewchuk's adaptive predicate where it is exact, dyadic arithmetic otherwise).
+pub fn orient3d(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
+    if crate::plane::robust_safe(&[a, b, c, d]) {
+        let p = |v: [f64; 3]| robust::Coord3D {
+            x: v[0],
+            y: v[1],
+            z: v[2],
+        };
+        let o = robust::orient3d(p(a), p(b), p(c), p(d));
+        return o.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
+    }
+    let dd = dyadic::point3(d);
+    let row = |v: [f64; 3]| {
+        let e = dyadic::point3(v);
+        [&e[0] - &dd[0], &e[1] - &dd[1], &e[2] - &dd[2]]
+    };
+    let (ra, rb, rc) = (row(a), row(b), row(c));
+    dyadic::dot3(&ra, &dyadic::cross3(&rb, &rc)).signum()
+}

@@ -3,15 +3,60 @@
 
 use glam::DVec3;
 use limn_depthsort::{order_polygons, OrderOptions, Ordered};
-use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane};
+use limn_kernel::{ExactKernel, ExactPolygon, Plane, PlaneDef};
 use limn_scene::{Camera, Scene};
-use num_bigint::BigInt;
 use num_traits::Zero;
 
 use crate::checker::{Checker, ExactFragment, P3, Q};
 
-fn qi(x: i128) -> Q {
-    Q::from_integer(BigInt::from(x))
+fn qf(x: f64) -> Q {
+    Q::from_float(x).expect("finite coordinate")
+}
+
+fn qsub(a: &[Q; 3], b: &[Q; 3]) -> [Q; 3] {
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+}
+
+fn qcross(a: &[Q; 3], b: &[Q; 3]) -> [Q; 3] {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+fn qp(p: [f64; 3]) -> [Q; 3] {
+    p.map(qf)
+}
+
+/// The exact coefficients `[a, b, c, d]` of a kernel plane, computed here in big
+/// rationals from the plane's definition (independently of the kernel's arithmetic).
+pub fn coefficients(pl: &Plane) -> [Q; 4] {
+    let (n, p) = match pl.definition() {
+        PlaneDef::Through([p, q, r]) => {
+            let p = qp(p);
+            (qcross(&qsub(&qp(q), &p), &qsub(&qp(r), &p)), p)
+        }
+        PlaneDef::Edge { p, q, k, flip } => {
+            let p = qp(p);
+            let w = qsub(&qp(q), &p);
+            let z = Q::zero();
+            let n = match k {
+                0 => [z, w[2].clone(), -&w[1]],
+                1 => [-&w[2], z, w[0].clone()],
+                _ => [w[1].clone(), -&w[0], z],
+            };
+            (if flip { n.map(|x| -x) } else { n }, p)
+        }
+        PlaneDef::PointNormal { p, n } => (qp(n), qp(p)),
+    };
+    let d = -(&n[0] * &p[0] + &n[1] * &p[1] + &n[2] * &p[2]);
+    let [a, b, c] = n;
+    if pl.is_flipped() {
+        [-a, -b, -c, -d]
+    } else {
+        [a, b, c, d]
+    }
 }
 
 /// The intersection point of three planes, solved independently of the kernel (Cramer's
@@ -20,8 +65,8 @@ pub fn intersect(p: &[Plane; 3]) -> P3 {
     let rows: Vec<[Q; 4]> = p
         .iter()
         .map(|pl| {
-            let (a, b, c, d) = pl.coefficients();
-            [qi(a as i128), qi(b as i128), qi(c as i128), -qi(d)]
+            let [a, b, c, d] = coefficients(pl);
+            [a, b, c, -d]
         })
         .collect();
     let det3 = |m: [[&Q; 3]; 3]| -> Q {
@@ -58,7 +103,7 @@ pub fn intersect(p: &[Plane; 3]) -> P3 {
     [out[0].clone(), out[1].clone(), out[2].clone()]
 }
 
-/// The exact vertices of a kernel polygon, in grid coordinates.
+/// The exact vertices of a kernel polygon, in world coordinates.
 pub fn exact_vertices(poly: &ExactPolygon) -> Vec<P3> {
     (0..poly.len())
         .map(|i| intersect(&poly.vertex_planes(i)))
@@ -78,8 +123,7 @@ pub struct ExactRun {
 
 /// Orders `scene` with the exact kernel and prepares the exact check.
 pub fn exact_run(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> ExactRun {
-    let (lo, hi) = scene.bounds().expect("scene has faces");
-    let kernel = ExactKernel::new(lo, hi).expect("kernel");
+    let kernel = ExactKernel::new();
     let (ordered, polys) = order_polygons(&kernel, scene, camera, opts).expect("orderable");
     let fragments = ordered
         .fragments
@@ -90,8 +134,7 @@ pub fn exact_run(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> ExactRu
             verts: exact_vertices(p),
         })
         .collect();
-    let eye = kernel.point(camera.eye).expect("eye");
-    let eye: P3 = [qi(eye.x as i128), qi(eye.y as i128), qi(eye.z as i128)];
+    let eye: P3 = qp(camera.eye.to_array());
     let fwd: DVec3 = ordered.camera.forward();
     let checker = Checker::new(eye, fwd.to_array());
     ExactRun {
