@@ -178,6 +178,15 @@ impl PlaneDef {
         (n, d)
     }
 
+    /// The points among the definition (they all lie on the plane).
+    fn points(&self) -> ([[f64; 3]; 3], usize) {
+        match *self {
+            PlaneDef::Through(pts) => (pts, 3),
+            PlaneDef::Edge { p, q, .. } => ([p, q, q], 2),
+            PlaneDef::PointNormal { p, .. } => ([p, p, p], 1),
+        }
+    }
+
     /// Whether `x` is one of the points that define the plane (then it lies on it).
     fn defined_by(&self, x: &[f64; 3]) -> bool {
         match self {
@@ -337,6 +346,23 @@ impl Plane {
     #[inline]
     pub(crate) fn defined_by(&self, x: &[f64; 3]) -> bool {
         self.data.def.defined_by(x)
+    }
+
+    /// Two distinct points that define both planes, when there are: the line through
+    /// them is the planes' intersection (if the planes differ).
+    pub(crate) fn common_line(&self, other: &Plane) -> Option<([f64; 3], [f64; 3])> {
+        let (a, na) = self.data.def.points();
+        let mut first: Option<[f64; 3]> = None;
+        for p in &a[..na] {
+            if other.data.def.defined_by(p) {
+                match first {
+                    None => first = Some(*p),
+                    Some(f) if f != *p => return Some((f, *p)),
+                    Some(_) => {}
+                }
+            }
+        }
+        None
     }
 
     /// The exact side of a point given by its f64 coordinates.

@@ -172,10 +172,11 @@ impl ExactPolygon {
             }
         } else {
             let n = self.corners.len();
-            if h.same_definition(&self.support)
-                || h.same_definition(&self.edges[(i + n - 1) % n])
-                || h.same_definition(&self.edges[i])
-            {
+            let (a, b) = (&self.edges[(i + n - 1) % n], &self.edges[i]);
+            if h.same_definition(&self.support) || h.same_definition(a) || h.same_definition(b) {
+                return Side::On;
+            }
+            if on_common_line(h, [&self.support, a, b]) {
                 return Side::On;
             }
         }
@@ -376,6 +377,20 @@ impl ExactPolygon {
             Some(bp.finish(self.support.clone())),
         )
     }
+}
+
+/// Whether two of a vertex's planes meet in a line through two input points that both lie
+/// on `h`: then the vertex lies on `h` (the usual case of a vertex made on an edge that
+/// neighbouring faces share).
+fn on_common_line(h: &Plane, planes: [&Plane; 3]) -> bool {
+    for (x, y) in [(0, 1), (0, 2), (1, 2)] {
+        if let Some((p, q)) = planes[x].common_line(planes[y]) {
+            if h.side_of(p) == Side::On && h.side_of(q) == Side::On {
+                return true;
+            }
+        }
+    }
+    false
 }
 
 /// The corner at the same vertex whose outgoing edge is a cut (not original).
