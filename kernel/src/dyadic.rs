@@ -174,6 +174,21 @@ pub(crate) fn point3(p: [f64; 3]) -> [Dyadic; 3] {
     p.map(Dyadic::from_f64)
 }
 
+/// `a / b` rounded to a nearby f64 (within a few ulps) for `b ≠ 0`.
+pub(crate) fn quotient_f64(a: &Dyadic, b: &Dyadic) -> f64 {
+    if a.is_zero() {
+        return 0.0;
+    }
+    // Scale the numerator so that the integer quotient keeps at least 64 bits.
+    let shift = (b.m.bits() as i64 - a.m.bits() as i64 + 66).max(0);
+    let q = (&a.m << shift as usize) / &b.m;
+    Dyadic {
+        m: q,
+        e: a.e - b.e - shift,
+    }
+    .to_f64()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -207,19 +222,4 @@ mod tests {
         assert_ne!(&p - &Dyadic::from_f64(0.1 * 0.1), Dyadic::zero());
         assert_eq!(&p - &p, Dyadic::zero());
     }
-}
-
-/// `a / b` rounded to a nearby f64 (within a few ulps) for `b ≠ 0`.
-pub(crate) fn quotient_f64(a: &Dyadic, b: &Dyadic) -> f64 {
-    if a.is_zero() {
-        return 0.0;
-    }
-    // Scale the numerator so that the integer quotient keeps at least 64 bits.
-    let shift = (b.m.bits() as i64 - a.m.bits() as i64 + 66).max(0);
-    let q = (&a.m << shift as usize) / &b.m;
-    Dyadic {
-        m: q,
-        e: a.e - b.e - shift,
-    }
-    .to_f64()
 }

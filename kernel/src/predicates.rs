@@ -36,7 +36,7 @@ const U: f64 = 1.0 / 9_007_199_254_740_992.0; // 2^-53
 const FILTER_REL: f64 = 8.0 * U;
 const SAFETY: f64 = 1.0 + 1.0 / 1_073_741_824.0; // 1 + 2^-30
 /// Absolute slack for subnormal results: 2^-1060.
-const ETA: f64 = 8.289_046_058_458_095e-320;
+const ETA: f64 = f64::from_bits(1 << 14);
 
 /// A plane's approximate coefficients prepared for the filter.
 #[derive(Debug, Clone, Copy)]

@@ -58,14 +58,9 @@ proptest! {
         lo in point(), hi in point(),
         face in prop::collection::vec(point(), 0..9),
         p in point(), n in point(),
-        bits in 0u32..40,
     ) {
-        if let Ok(k) = ExactKernel::with_bits(lo, hi, bits) {
-            exercise(&k, &face, p, n);
-        }
-        if let Ok(k) = ExactKernel::new(DVec3::splat(-2.0), DVec3::splat(2.0)) {
-            exercise(&k, &face, p, n);
-        }
+        exercise(&ExactKernel::new(), &face, p, n);
+        exercise(&ExactKernel::new().without_filter(), &face, p, n);
         if let Ok(k) = FloatKernel::new(lo, hi) {
             exercise(&k, &face, p, n);
         }

@@ -1,210 +1,223 @@
-//! Every predicate sign equals an arbitrary-precision reference.
+//! Every predicate sign equals a big-rational reference computed on the raw f64 input
+//! (no snap): random and near-degenerate points, planes through shared vertices, vertices
+//! one ulp off a plane, implicit vertices made by splitting, and coordinates from 1e-300
+//! to 1e300 in one case.
 
 mod common;
 
 use common::*;
-use limn_kernel::predicates::{side_of_intersection, ImplicitPoint};
-use limn_kernel::{GridPoint, Kernel, Plane, Side};
+use glam::DVec3;
+use limn_kernel::predicates::orient3d;
+use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane, Side};
+use num_traits::Signed;
 use proptest::prelude::*;
 
-/// Adds two planes (the result passes through their common line), if within bounds.
-fn combine(p: &Plane, q: &Plane, s: i64, t: i64) -> Option<Plane> {
-    let (a, b, c, d) = p.coefficients();
-    let (e, f, g, h) = q.coefficients();
-    let mix = |x: i64, y: i64| x.checked_mul(s)?.checked_add(y.checked_mul(t)?);
-    Plane::new(
-        mix(a, e)?,
-        mix(b, f)?,
-        mix(c, g)?,
-        d.checked_mul(s as i128)?
-            .checked_add(h.checked_mul(t as i128)?)?,
+/// The side of every vertex of `poly` against `h`, filtered and unfiltered, equals the
+/// rational reference.
+fn check_vertices(k: &ExactKernel, poly: &ExactPolygon, h: &Plane) {
+    let raw = ExactKernel::new().without_filter();
+    for i in 0..poly.len() {
+        let want = vertex_side(poly, i, h);
+        assert_eq!(
+            k.side_of_vertex(poly, i, h),
+            want,
+            "vertex {i} of {poly:?} vs {h:?}"
+        );
+        assert_eq!(
+            raw.side_of_vertex(poly, i, h),
+            want,
+            "unfiltered vertex {i}"
+        );
+    }
+}
+
+/// Splits `tri` by `cut` and checks every vertex of both pieces against `h` (the cut's
+/// new vertices are implicit: intersections of three planes).
+fn check_after_split(tri: [[f64; 3]; 3], cut: &Plane, hs: &[Plane]) {
+    let k = ExactKernel::new();
+    let corners: Vec<DVec3> = tri.iter().map(|p| DVec3::from_array(*p)).collect();
+    for poly in k.face_polygons(&corners).unwrap() {
+        let (f, b) = k.split(&poly, cut);
+        for piece in [f, b].into_iter().flatten() {
+            limn_kernel::check::check_polygon(&piece).unwrap();
+            for h in hs {
+                check_vertices(&k, &piece, h);
+            }
+            // The cut itself: every vertex on its side or on it.
+            check_vertices(&k, &piece, cut);
+        }
+    }
+}
+
+fn rsign(v: num_rational::BigRational) -> std::cmp::Ordering {
+    if v.is_positive() {
+        std::cmp::Ordering::Greater
+    } else if v.is_negative() {
+        std::cmp::Ordering::Less
+    } else {
+        std::cmp::Ordering::Equal
+    }
+}
+
+/// The reference orient3d: det[a − d; b − d; c − d].
+fn orient_ref(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> std::cmp::Ordering {
+    let (a, b, c, d) = (qp(a), qp(b), qp(c), qp(d));
+    let r = |p: &RPoint| [&p[0] - &d[0], &p[1] - &d[1], &p[2] - &d[2]];
+    let (a, b, c) = (r(&a), r(&b), r(&c));
+    rsign(
+        &a[0] * (&b[1] * &c[2] - &b[2] * &c[1]) - &a[1] * (&b[0] * &c[2] - &b[2] * &c[0])
+            + &a[2] * (&b[0] * &c[1] - &b[1] * &c[0]),
     )
 }
 
-fn check_point(planes: [Plane; 3], h: &Plane) {
-    let reference = intersect(&planes).map(|p| side_at(h, &p));
-    let exact = side_of_intersection(&planes[0], &planes[1], &planes[2], h);
-    assert_eq!(exact, reference, "exact path, planes {planes:?}, h {h:?}");
-    if let Some(want) = reference {
-        let v = ImplicitPoint::new(planes[0], planes[1], planes[2]).unwrap();
-        if let Some(s) = v.side_filtered(h) {
-            assert_eq!(s, want, "filter decided wrongly: {planes:?} {h:?}");
-        }
-        assert_eq!(v.side(h).0, want);
-        assert_eq!(v.side_exact(h), want);
-    }
-}
-
-/// Planes through a common grid point `g` with the given normals.
-fn planes_through(g: [i64; 3], normals: &[[i64; 3]]) -> Option<Vec<Plane>> {
-    normals
-        .iter()
-        .map(|n| {
-            let d = -(0..3).map(|i| n[i] as i128 * g[i] as i128).sum::<i128>();
-            Plane::new(n[0], n[1], n[2], d)
-        })
-        .collect()
-}
-
-fn small_normal() -> impl Strategy<Value = [i64; 3]> {
-    let m = (1i64 << 54) - 1;
-    [
-        prop_oneof![-m..=m, -2i64..=2],
-        prop_oneof![-m..=m, -2i64..=2],
-        prop_oneof![-m..=m, -2i64..=2],
-    ]
-}
-
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(3000))]
+    #![proptest_config(ProptestConfig::with_cases(600))]
 
+    /// Input points against planes through input points and point-normal planes.
     #[test]
-    fn random_planes(p1 in any_plane(), p2 in any_plane(), p3 in any_plane(), h in any_plane()) {
-        check_point([p1, p2, p3], &h);
+    fn points_against_planes(x in world_point(), h in any_plane()) {
+        let want = side_at(&h, &qp(x));
+        prop_assert_eq!(h.side_of(x), want);
+        let k = ExactKernel::new();
+        prop_assert_eq!(k.side_of_point(&h, &DVec3::from_array(x)), want);
     }
 
-    /// `h` is a combination of two of the planes: it passes exactly through the vertex,
-    /// or (with `delta`) misses it by one unit of offset.
+    /// A point exactly on a plane through three points (one of them, or on an edge
+    /// between lattice points) and the same point moved by one ulp on each axis.
     #[test]
-    fn coplanar_combinations(
-        p1 in any_plane(), p2 in any_plane(), p3 in any_plane(),
-        s in -3i64..=3, t in -3i64..=3, delta in -2i128..=2,
+    fn one_ulp_off_a_plane(
+        a in grid_point(), b in grid_point(), c in grid_point(),
+        axis in 0usize..3, ulps in -1i64..=1, which in 0usize..3,
     ) {
-        let Some(h) = combine(&p1, &p2, s, t) else { return Ok(()) };
-        let (a, b, c, d) = h.coefficients();
-        let Some(h) = Plane::new(a, b, c, d + delta) else { return Ok(()) };
-        check_point([p1, p2, p3], &h);
-    }
-
-    /// Vertices that are grid points (possibly far off-centre), planes through them, and
-    /// planes through them shifted by one unit.
-    #[test]
-    fn through_grid_points(
-        g in grid_point(),
-        n1 in small_normal(), n2 in small_normal(), n3 in small_normal(), nh in small_normal(),
-        delta in -1i128..=1,
-    ) {
-        // Normals below 2^54 and coordinates up to 2^25 keep offsets below 2^83.
-        let Some(ps) = planes_through(g, &[n1, n2, n3, nh]) else { return Ok(()) };
-        let (a, b, c, d) = ps[3].coefficients();
-        let Some(h) = Plane::new(a, b, c, d + delta) else { return Ok(()) };
-        check_point([ps[0], ps[1], ps[2]], &h);
-        let want = match delta { 0 => Side::On, 1.. => Side::Front, _ => Side::Back };
-        if intersect(&[ps[0], ps[1], ps[2]]).is_some() {
-            prop_assert_eq!(side_of_intersection(&ps[0], &ps[1], &ps[2], &h), Some(want));
+        let Some(h) = plane_g(a, b, c) else { return Ok(()) };
+        let mut x = gp([a, b, c][which]);
+        x[axis] = nudge(x[axis], ulps);
+        let want = side_at(&h, &qp(x));
+        if ulps == 0 {
+            prop_assert_eq!(want, Side::On);
         }
-        prop_assert_eq!(h.side_of(&GridPoint::new(g[0], g[1], g[2])), want);
+        prop_assert_eq!(h.side_of(x), want);
     }
 
-    /// Nearly parallel planes: the vertex is ill-conditioned and far away.
+    /// Orientation of four points, exactly, over the whole f64 range.
     #[test]
-    fn nearly_parallel(p in any_plane(), e1 in -2i64..=2, e2 in -2i64..=2, q in any_plane(), h in any_plane()) {
-        let (a, b, c, d) = p.coefficients();
-        let Some(p2) = Plane::new(a.saturating_add(e1).clamp(-(1 << 55) + 1, (1 << 55) - 1), b.saturating_add(e2).clamp(-(1 << 55) + 1, (1 << 55) - 1), c, d) else { return Ok(()) };
-        check_point([p, p2, q], &h);
-        let Some(h2) = combine(&p, &q, 1, 1) else { return Ok(()) };
-        check_point([p, p2, q], &h2);
+    fn orientation(a in world_point(), b in world_point(), c in world_point(), d in world_point()) {
+        prop_assert_eq!(orient3d(a, b, c, d), orient_ref(a, b, c, d));
+        // Coplanar: d on the line through a and b (a lattice midpoint is exact).
+        let m = [0, 1, 2].map(|i| a[i] * 0.5 + b[i] * 0.5);
+        prop_assert_eq!(orient3d(a, b, c, m), orient_ref(a, b, c, m));
     }
-}
 
-#[test]
-fn extreme_coefficients_do_not_overflow() {
-    let m = (1i64 << 55) - 1;
-    let d = (1i128 << 83) - 1;
-    let signs = [1i64, -1];
-    for &s1 in &signs {
-        for &s2 in &signs {
-            for &s3 in &signs {
-                let p1 = Plane::new(m, s1 * m, s2 * m, d).unwrap();
-                let p2 = Plane::new(s3 * m, m, -m, -d).unwrap();
-                let p3 = Plane::new(-m, s1 * m, m, d).unwrap();
-                let h = Plane::new(m * s2, -m, m * s3, -d * s1 as i128).unwrap();
-                check_point([p1, p2, p3], &h);
+    /// Implicit vertices (a triangle cut by a plane) against random planes, planes
+    /// through the triangle's corners, and the triangle's own support.
+    #[test]
+    fn implicit_vertices(
+        tri in [world_point(), world_point(), world_point()],
+        cut in any_plane(), h in any_plane(), p in world_point(),
+    ) {
+        let mut hs = vec![h];
+        if let Ok(t) = Plane::through(tri[0], tri[1], p) {
+            hs.push(t);
+        }
+        if let Ok(t) = Plane::through(tri[1], tri[2], p) {
+            hs.push(t);
+        }
+        check_after_split(tri, &cut, &hs);
+    }
+
+    /// Nearly parallel cuts: the plane through two corners of a triangle and a point a
+    /// few ulps off the triangle's plane.
+    #[test]
+    fn nearly_parallel_cuts(
+        a in grid_point(), b in grid_point(), c in grid_point(),
+        ulps in -3i64..=3, axis in 0usize..3, h in any_plane(),
+    ) {
+        let tri = [gp(a), gp(b), gp(c)];
+        let mut m = [0, 1, 2].map(|i| tri[1][i] * 0.5 + tri[2][i] * 0.5);
+        m[axis] = nudge(m[axis], ulps);
+        let Ok(cut) = Plane::through(tri[0], m, [0, 1, 2].map(|i| tri[0][i] * 0.5 + tri[2][i] * 0.5)) else {
+            return Ok(());
+        };
+        check_after_split(tri, &cut, &[h]);
+    }
+
+    /// The same triangle and cut translated by 1e7, and scaled by 1e-9 and 1e9 (powers
+    /// of two keep the scaling exact): the same sides.
+    #[test]
+    fn translated_and_scaled(
+        a in grid_point(), b in grid_point(), c in grid_point(),
+        x in grid_point(), y in grid_point(), z in grid_point(), w in grid_point(),
+    ) {
+        for s in [1.0, 2f64.powi(-30), 2f64.powi(30)] {
+            for t in [0.0, 1e7] {
+                let f = |g: [i64; 3]| gp(g).map(|v| v * s + t);
+                let tri = [f(a), f(b), f(c)];
+                let (Ok(cut), Ok(h)) = (Plane::through(f(x), f(y), f(z)), Plane::through(f(x), f(w), f(a))) else {
+                    continue;
+                };
+                check_after_split(tri, &cut, &[h]);
             }
         }
     }
 }
 
-/// A world coordinate in [-1, 1], biased toward grid cell boundaries (half steps, where
-/// snapping rounds ties) and nudged by a few ulps.
-fn world_coord() -> impl Strategy<Value = f64> {
-    let half_step = |(k, ulps): (i64, i64)| nudge((k as f64 + 0.5) * 2f64.powi(-25), ulps);
-    let coarse = |(k, ulps): (i64, i64)| nudge(k as f64 * 2f64.powi(-15), ulps).clamp(-1.0, 1.0);
-    prop_oneof![
-        -1.0f64..1.0,
-        (-1000i64..1000, -3i64..=3).prop_map(half_step),
-        (-1000i64..1000, -3i64..=3).prop_map(coarse),
-    ]
-}
-
-/// `x` moved by `ulps` representable values (through zero and subnormals as needed).
-fn nudge(mut x: f64, ulps: i64) -> f64 {
-    for _ in 0..ulps.abs() {
-        x = if ulps > 0 { x.next_up() } else { x.next_down() };
-    }
-    x
-}
-
-fn big(v: i64) -> num_bigint::BigInt {
-    num_bigint::BigInt::from(v)
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(2000))]
-
-    /// The side of an eye point (possibly far away) with respect to the plane of a
-    /// triangle given in world coordinates, against a bigint evaluation on the snapped
-    /// points.
-    #[test]
-    fn eye_against_world_triangle(
-        tri in [[world_coord(), world_coord(), world_coord()], [world_coord(), world_coord(), world_coord()], [world_coord(), world_coord(), world_coord()]],
-        dir in [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0],
-        scale in prop_oneof![Just(0.0), 0.0f64..2.0, 1.0f64..1e7],
-        on_plane in any::<bool>(),
-    ) {
-        use glam::DVec3;
-        let k = kernel();
+#[test]
+fn tiny_and_huge_coordinates_in_one_scene() {
+    let k = ExactKernel::new();
+    let tiny = 1e-300;
+    let huge = 1e300;
+    // A huge triangle, a tiny one near the origin, and a cut through both.
+    let big = [[-huge, -huge, 0.0], [huge, -huge, 0.0], [0.0, huge, tiny]];
+    let small = [[0.0, 0.0, 0.0], [tiny, 0.0, 0.0], [0.0, tiny, tiny]];
+    let cut = Plane::through(
+        [tiny * 0.5, -1.0, -1.0],
+        [tiny * 0.5, 1.0, -1.0],
+        [tiny * 0.5, 0.0, 1.0],
+    )
+    .unwrap();
+    for tri in [big, small] {
         let corners: Vec<DVec3> = tri.iter().map(|p| DVec3::from_array(*p)).collect();
         let polys = k.face_polygons(&corners).unwrap();
-        let q = k.quantizer();
-        let g: Vec<[i64; 3]> = corners.iter().map(|c| q.snap(*c).unwrap().to_array()).collect();
-        let u: Vec<_> = (0..3).map(|i| big(g[1][i] - g[0][i])).collect();
-        let v: Vec<_> = (0..3).map(|i| big(g[2][i] - g[0][i])).collect();
-        let n = [
-            &u[1] * &v[2] - &u[2] * &v[1],
-            &u[2] * &v[0] - &u[0] * &v[2],
-            &u[0] * &v[1] - &u[1] * &v[0],
-        ];
-        let zero = num_bigint::BigInt::from(0);
-        if n.iter().all(|c| *c == zero) {
-            prop_assert!(polys.is_empty());
-            return Ok(());
-        }
-        prop_assert_eq!(polys.len(), 1);
-        // An eye on the triangle's plane (a snapped corner) or off it, possibly far away.
-        let eye_w = if on_plane { corners[1] } else { corners[0] + DVec3::from_array(dir) * scale };
-        let eye = k.point(eye_w).unwrap();
-        let e = eye.to_array();
-        let val: num_bigint::BigInt = (0..3).map(|i| &n[i] * big(e[i] - g[0][i])).sum();
-        let want = match val.sign() {
-            num_bigint::Sign::Plus => Side::Front,
-            num_bigint::Sign::Minus => Side::Back,
-            num_bigint::Sign::NoSign => Side::On,
-        };
-        let h = k.support(&polys[0]);
-        prop_assert_eq!(k.side_of_point(&h, &eye), want);
-        if on_plane {
-            prop_assert_eq!(want, Side::On);
+        assert_eq!(polys.len(), 1);
+        let (f, b) = k.split(&polys[0], &cut);
+        assert!(
+            f.is_some() && b.is_some(),
+            "the cut x = tiny/2 crosses both"
+        );
+        for piece in [f, b].into_iter().flatten() {
+            check_vertices(&k, &piece, &cut);
+            check_vertices(&k, &piece, &polys[0].support());
         }
     }
+    // Sides of points far apart in magnitude.
+    let h = Plane::through(small[0], small[1], small[2]).unwrap();
+    for x in [
+        [huge, huge, huge],
+        [0.0, 0.0, tiny * 1e-8],
+        [tiny, tiny, 0.0],
+    ] {
+        assert_eq!(h.side_of(x), side_at(&h, &qp(x)));
+    }
+}
 
-    /// Three planes through one line never meet in a single point: both the kernel and
-    /// the reference say so.
-    #[test]
-    fn collinear_planes(p1 in any_plane(), p2 in any_plane(), s in -2i64..=2, t in -2i64..=2, h in any_plane()) {
-        let Some(p3) = combine(&p1, &p2, s, t) else { return Ok(()) };
-        prop_assert!(intersect(&[p1, p2, p3]).is_none());
-        prop_assert_eq!(side_of_intersection(&p1, &p2, &p3, &h), None);
-        prop_assert!(ImplicitPoint::new(p1, p2, p3).is_none());
-    }
+#[test]
+fn shared_vertices_are_on_the_plane_without_arithmetic() {
+    // Two triangles of a slightly non-planar quad: the shared vertices lie on both
+    // planes, the fourth corner is off by one ulp.
+    let k = ExactKernel::new();
+    let p = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0f64.next_up()],
+        [0.0, 1.0, 0.0],
+    ];
+    let t1 = Plane::through(p[0], p[1], p[2]).unwrap();
+    let t2 = Plane::through(p[0], p[2], p[3]).unwrap();
+    assert_eq!(t1.side_of(p[0]), Side::On);
+    assert_eq!(t2.side_of(p[2]), Side::On);
+    assert_eq!(t1.side_of(p[3]), side_at(&t1, &qp(p[3])));
+    assert_ne!(t1.side_of(p[3]), Side::On);
+    let corners: Vec<DVec3> = p.iter().map(|c| DVec3::from_array(*c)).collect();
+    // Not exactly planar: two triangles.
+    assert_eq!(k.face_polygons(&corners).unwrap().len(), 2);
 }

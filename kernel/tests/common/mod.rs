@@ -1,11 +1,10 @@
 //! Shared helpers for the integration tests: an arbitrary-precision reference
-//! (num-bigint / num-rational, independent of the kernel's fixed-width arithmetic) and
+//! (num-rational on the planes' definitions, independent of the kernel's arithmetic) and
 //! generators biased toward degenerate inputs.
 
 #![allow(dead_code)]
 
-use limn_kernel::{ExactPolygon, Plane, Side};
-use num_bigint::BigInt;
+use limn_kernel::{ExactPolygon, Plane, PlaneDef, Side};
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
@@ -13,18 +12,68 @@ use proptest::prelude::*;
 /// A rational point.
 pub type RPoint = [BigRational; 3];
 
-fn big(v: i128) -> BigRational {
-    BigRational::from_integer(BigInt::from(v))
+/// The lattice step used by the integer-lattice generators: lattice point `g` is the
+/// world point `g · STEP`, exactly.
+pub const STEP: f64 = 1.0 / 33_554_432.0; // 2^-25
+
+/// The exact rational value of an f64.
+pub fn q(x: f64) -> BigRational {
+    BigRational::from_float(x).expect("finite")
+}
+
+/// A rational point from f64 coordinates.
+pub fn qp(p: [f64; 3]) -> RPoint {
+    p.map(q)
+}
+
+fn sub(a: &RPoint, b: &RPoint) -> RPoint {
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+}
+
+fn cross(a: &RPoint, b: &RPoint) -> RPoint {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+/// The exact coefficients `(n, d)` of a plane, from its definition.
+pub fn coefficients(pl: &Plane) -> (RPoint, BigRational) {
+    let (n, p) = match pl.definition() {
+        PlaneDef::Through([p, qq, r]) => {
+            let p = qp(p);
+            (cross(&sub(&qp(qq), &p), &sub(&qp(r), &p)), p)
+        }
+        PlaneDef::Edge { p, q: qq, k, flip } => {
+            let p = qp(p);
+            let w = sub(&qp(qq), &p);
+            let z = BigRational::zero();
+            let n = match k {
+                0 => [z, w[2].clone(), -&w[1]],
+                1 => [-&w[2], z, w[0].clone()],
+                _ => [w[1].clone(), -&w[0], z],
+            };
+            (if flip { n.map(|x| -x) } else { n }, p)
+        }
+        PlaneDef::PointNormal { p, n } => (qp(n), qp(p)),
+    };
+    let d = -(&n[0] * &p[0] + &n[1] * &p[1] + &n[2] * &p[2]);
+    if pl.is_flipped() {
+        (n.map(|x| -x), -d)
+    } else {
+        (n, d)
+    }
 }
 
 /// The intersection of three planes by Cramer's rule in rationals (`None` if they do not
 /// meet in one point).
 pub fn intersect(planes: &[Plane; 3]) -> Option<RPoint> {
-    let rows: Vec<([BigRational; 3], BigRational)> = planes
+    let rows: Vec<(RPoint, BigRational)> = planes
         .iter()
         .map(|p| {
-            let (a, b, c, d) = p.coefficients();
-            ([big(a as i128), big(b as i128), big(c as i128)], -big(d))
+            let (n, d) = coefficients(p);
+            (n, -d)
         })
         .collect();
     let det3 = |m: [[BigRational; 3]; 3]| -> BigRational {
@@ -48,8 +97,8 @@ pub fn intersect(planes: &[Plane; 3]) -> Option<RPoint> {
 
 /// The exact side of a plane at a rational point.
 pub fn side_at(h: &Plane, p: &RPoint) -> Side {
-    let (a, b, c, d) = h.coefficients();
-    let v = big(a as i128) * &p[0] + big(b as i128) * &p[1] + big(c as i128) * &p[2] + big(d);
+    let (n, d) = coefficients(h);
+    let v = &n[0] * &p[0] + &n[1] * &p[1] + &n[2] * &p[2] + d;
     if v.is_positive() {
         Side::Front
     } else if v.is_negative() {
@@ -75,14 +124,14 @@ pub fn projected_area2(poly: &ExactPolygon, k: usize) -> BigRational {
     let pts: Vec<RPoint> = (0..poly.len()).map(|i| vertex(poly, i)).collect();
     let mut s = BigRational::zero();
     for i in 0..pts.len() {
-        let (p, q) = (&pts[i], &pts[(i + 1) % pts.len()]);
-        s += &p[u] * &q[v] - &q[u] * &p[v];
+        let (p, qq) = (&pts[i], &pts[(i + 1) % pts.len()]);
+        s += &p[u] * &qq[v] - &qq[u] * &p[v];
     }
     s
 }
 
-/// Grid coordinates (26-bit grid): within ±2^25, biased toward small values, the box
-/// boundary and clustered values.
+/// Lattice coordinates: within ±2^25, biased toward small values, the box boundary and
+/// clustered values.
 pub fn coord() -> impl Strategy<Value = i64> {
     let lim = 1i64 << 25;
     prop_oneof![
@@ -93,62 +142,70 @@ pub fn coord() -> impl Strategy<Value = i64> {
     ]
 }
 
-/// A grid point.
+/// A lattice point.
 pub fn grid_point() -> impl Strategy<Value = [i64; 3]> {
     [coord(), coord(), coord()]
 }
 
-/// A plane normal component, biased toward the extremes of the allowed range.
-pub fn normal_component() -> impl Strategy<Value = i64> {
-    let m = (1i64 << 55) - 1;
+/// The world point of a lattice point (exact).
+pub fn gp(a: [i64; 3]) -> [f64; 3] {
+    a.map(|v| v as f64 * STEP)
+}
+
+/// The plane through three lattice points, if they are not collinear.
+pub fn plane_g(a: [i64; 3], b: [i64; 3], c: [i64; 3]) -> Option<Plane> {
+    Plane::through(gp(a), gp(b), gp(c)).ok()
+}
+
+/// `x` moved by `ulps` representable values (through zero and subnormals as needed).
+pub fn nudge(mut x: f64, ulps: i64) -> f64 {
+    for _ in 0..ulps.abs() {
+        x = if ulps > 0 { x.next_up() } else { x.next_down() };
+    }
+    x
+}
+
+/// An f64 coordinate biased toward hard cases: uniform, small integers, values a few ulps
+/// from simple ones, and every magnitude from 1e-300 to 1e300.
+pub fn world_coord() -> impl Strategy<Value = f64> {
     prop_oneof![
-        2 => -m..=m,
-        2 => -3i64..=3,
-        1 => prop_oneof![Just(m), Just(-m), (m - 8)..=m],
-        1 => -(1i64 << 27)..=(1i64 << 27),
+        3 => -1.0f64..1.0,
+        2 => (-8i64..=8, -3i64..=3).prop_map(|(k, u)| nudge(k as f64 * 0.125, u)),
+        1 => (-1.0f64..1.0, -300i32..=300).prop_map(|(m, e)| m * 10f64.powi(e)),
     ]
 }
 
-/// A plane offset, biased toward the extremes of the allowed range.
-pub fn offset() -> impl Strategy<Value = i128> {
-    let m = (1i128 << 83) - 1;
-    prop_oneof![
-        2 => -m..=m,
-        2 => -3i128..=3,
-        1 => prop_oneof![Just(m), Just(-m), (m - 8)..=m],
-    ]
+/// A world point.
+pub fn world_point() -> impl Strategy<Value = [f64; 3]> {
+    [world_coord(), world_coord(), world_coord()]
 }
 
-/// Any plane within the kernel's coefficient bounds.
+/// Any plane: through three world points, or a point and a normal.
 pub fn any_plane() -> impl Strategy<Value = Plane> {
-    (
-        normal_component(),
-        normal_component(),
-        normal_component(),
-        offset(),
-    )
-        .prop_filter_map("zero normal", |(a, b, c, d)| Plane::new(a, b, c, d))
+    prop_oneof![
+        (world_point(), world_point(), world_point())
+            .prop_filter_map("collinear", |(a, b, c)| Plane::through(a, b, c).ok()),
+        (world_point(), world_point())
+            .prop_filter_map("zero normal", |(p, n)| Plane::point_normal(p, n).ok()),
+    ]
 }
 
-/// The kernel used by the polygon tests: box [-1, 1]³, 26 bits, so the step is 2^-25 and
-/// grid coordinates reach ±2^25.
+/// The kernel used by the polygon tests.
 pub fn kernel() -> limn_kernel::ExactKernel {
-    use glam::DVec3;
-    limn_kernel::ExactKernel::new(DVec3::splat(-1.0), DVec3::splat(1.0)).unwrap()
+    limn_kernel::ExactKernel::new()
 }
 
-/// Polygons of the face with the given grid corners.
+/// Polygons of the face with the given lattice corners.
 pub fn face(k: &limn_kernel::ExactKernel, pts: &[[i64; 3]]) -> Vec<ExactPolygon> {
     use limn_kernel::Kernel;
-    let s = k.step();
     let corners: Vec<glam::DVec3> = pts
         .iter()
-        .map(|p| glam::DVec3::new(p[0] as f64 * s, p[1] as f64 * s, p[2] as f64 * s))
+        .map(|p| glam::DVec3::from_array(gp(*p)))
         .collect();
-    k.face_polygons(&corners).expect("corners inside the grid")
+    k.face_polygons(&corners).expect("finite corners")
 }
 
-/// A convex planar outline on the lattice `o + i·u + j·v` (exactly planar grid points).
+/// A convex planar outline on the lattice `o + i·u + j·v` (exactly planar points).
 pub fn lattice_polygon() -> impl Strategy<Value = Vec<[i64; 3]>> {
     let small = || -300i64..=300;
     let vec3 = move || [small(), small(), small()];
