@@ -173,9 +173,10 @@ pub struct RenderArgs {
     /// Stroke the original model edges (never the cuts).
     #[arg(long)]
     pub outline: bool,
-    /// Width in pixels of a stroke in each opaque face's own colour that closes the
-    /// hairline seams viewers leave between adjacent faces (SVG, PDF, EPS; 0 = none).
-    #[arg(long, value_name = "PX", default_value_t = 0.35, value_parser = parse_seams)]
+    /// Width in pixels of the seam flaps that close the hairlines viewers leave between
+    /// adjacent faces: each opaque face is extended this far under the neighbours painted
+    /// after it, which cover the flap, so the picture is unchanged (0 = none).
+    #[arg(long, value_name = "PX", default_value_t = 0.5, value_parser = parse_seams)]
     pub seams: f64,
     /// How to render: painter's order (vector) or an image-space method (PNG only).
     #[arg(long, value_enum, default_value_t = MethodArg::Painter)]

@@ -130,11 +130,9 @@ fn svg_has_exact_unlit_colour() {
     assert!(svg.contains("<svg"), "{svg}");
     assert!(svg.contains("viewBox=\"0 0 800 600\""), "{svg}");
     assert!(svg.contains("#336699"), "{svg}");
-    // The default seam stroke is in the fill's own colour; with --seams 0 there is none.
-    assert!(
-        svg.contains(r##"fill="#336699" stroke="#336699""##),
-        "{svg}"
-    );
+    // No stroke by default: seams are closed by flaps under later faces, never by
+    // growing a face.
+    assert!(!svg.contains("stroke"), "{svg}");
     ok(
         d.path(),
         &["render", "a.obj", "-o", "bare.svg", "--seams", "0"],

@@ -51,7 +51,7 @@ use limn_scene::{Camera, Scene};
 
 use crate::ctx::Ctx;
 pub use crate::options::{Arith, CullMode, OrderError, OrderOptions, SortMode, Stats};
-pub use crate::picture::{picture, Style};
+pub use crate::picture::{picture, seam_flaps, Style};
 pub use crate::shared::ExactVertices;
 
 /// One output fragment: a convex piece of one input face.
@@ -92,7 +92,7 @@ pub struct Ordered {
     pub fragments: Vec<Fragment>,
     /// What the ordering did.
     pub stats: Stats,
-    /// The camera actually used (the exact kernel snaps the eye to its grid).
+    /// The camera actually used (the one given: no kernel moves the eye).
     pub camera: Camera,
     /// Near plane distance used for clipping.
     pub near: f64,
