@@ -111,7 +111,7 @@ pub fn exact_vertices(poly: &ExactPolygon) -> Vec<P3> {
 }
 
 /// An exact run: the order, its fragments as exact polygons (grid coordinates), and a
-/// checker for the (snapped) eye.
+/// checker for the eye.
 pub struct ExactRun {
     /// The order.
     pub ordered: Ordered,

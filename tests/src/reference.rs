@@ -28,7 +28,7 @@ pub struct Painted {
 }
 
 impl Painted {
-    /// The camera the ordering actually used (the eye snapped to the exact grid).
+    /// The camera the ordering actually used.
     pub fn camera(&self) -> &Camera {
         &self.ordered.camera
     }

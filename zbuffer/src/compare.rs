@@ -70,17 +70,17 @@ pub fn compare(a: &IdImage, b: &IdImage, band: Option<&Mask>) -> Comparison {
 }
 
 /// The default band tolerance in pixels for a `width × height` picture:
-/// `1e-6 · max(width, height) + 1e-6`.
+/// `1e-9 · max(width, height) + 1e-9`.
 ///
-/// Why: limn's exact kernel snaps input to a 2²⁶ grid over the scene's bounding box, a
-/// relative displacement of at most 2⁻²⁷ · √3 ≈ 1.3e-8 of the scene's size; for a scene
-/// filling the picture that is about 1.3e-8 · size pixels, and the float references
-/// move edges by far less (about 1e-15 · size). Only pixel centres essentially *on* an
-/// edge can be decided differently by float and exact answers; the tolerance covers the
-/// snapping with a margin of about 75, plus a small absolute term, while remaining far
-/// below a pixel, so a real ordering error (which affects whole pixels) is never hidden.
+/// Why: limn's exact kernel decides on the input as given and rounds only the output
+/// coordinates of vertices made by splitting (relative error about 1e-12 of the scene),
+/// and the references compute their rays and projections in f64 (about 1e-15 of the
+/// scene). Only pixel centres essentially *on* an edge can be decided differently; the
+/// tolerance covers both roundings with a margin, plus a small absolute term, while
+/// staying far below a pixel, so a real ordering error (which affects whole areas) is
+/// never hidden.
 pub fn default_band_tolerance(width: u32, height: u32) -> f64 {
-    1e-6 * width.max(height) as f64 + 1e-6
+    1e-9 * width.max(height) as f64 + 1e-9
 }
 
 /// Marks the pixels whose centre lies within `tolerance_px` of any of the segments
