@@ -9,15 +9,15 @@ use limn_kernel::{ExactKernel, ExactPolygon, FloatKernel, FloatPolygon, Kernel};
 pub trait ExactVertices: Kernel {
     /// An exactly represented point.
     type Exact: Copy + PartialEq;
-    /// Vertex `i` of `poly`, when it is exactly representable (an input grid point for
-    /// the exact kernel; every vertex for the float kernel).
+    /// Vertex `i` of `poly`, when it is exactly representable (an input point, or an
+    /// intersection whose coordinates are exactly representable, for the exact kernel; every vertex for the float kernel).
     fn vertex_exact(&self, poly: &Self::Polygon, i: usize) -> Option<Self::Exact>;
     /// A point, exactly.
     fn point_exact(&self, p: &Self::Point) -> Self::Exact;
     /// The sign (−1, 0, 1) of the orientation of `a`, `b`, `c` as seen from `e`.
     fn orient(&self, e: &Self::Exact, a: &Self::Exact, b: &Self::Exact, c: &Self::Exact) -> i32;
-    /// A cheap world position of vertex `i`, within a millionth of a grid step of the
-    /// true one, when the kernel has it at hand (for the float prefilters only).
+    /// A cheap world position of vertex `i`, within a relative 1e-9 of the true
+    /// one, when the kernel has it at hand (for the float prefilters only).
     fn vertex_world_fast(&self, poly: &Self::Polygon, i: usize) -> Option<glam::DVec3>;
 }
 
