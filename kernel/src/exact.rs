@@ -6,6 +6,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use glam::DVec3;
 
 use crate::error::KernelError;
+use crate::orientation::Orientation;
 use crate::plane::Plane;
 use crate::polygon::ExactPolygon;
 use crate::predicates::rounded_intersection;
@@ -102,6 +103,7 @@ impl Kernel for ExactKernel {
     type Plane = Plane;
     type Polygon = ExactPolygon;
     type Point = DVec3;
+    type ExactPoint = [f64; 3];
 
     fn name(&self) -> &'static str {
         "exact"
@@ -173,5 +175,24 @@ impl Kernel for ExactKernel {
 
     fn fallbacks(&self) -> u64 {
         self.fallbacks.load(Ordering::Relaxed)
+    }
+
+    fn vertex_exact(&self, poly: &ExactPolygon, i: usize) -> Option<[f64; 3]> {
+        let (c, err) = poly.vertex_approx(i);
+        (err == 0.0).then_some(c)
+    }
+
+    fn point_exact(&self, p: &DVec3) -> [f64; 3] {
+        p.to_array()
+    }
+
+    fn orientation(&self, e: &[f64; 3], a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> Orientation {
+        Orientation::from_ordering(crate::predicates::orient3d(*e, *a, *b, *c))
+    }
+
+    fn vertex_world_approx(&self, poly: &ExactPolygon, i: usize) -> Option<DVec3> {
+        let (c, err) = poly.vertex_approx(i);
+        let scale = c[0].abs().max(c[1].abs()).max(c[2].abs());
+        (err <= 1e-9 * scale).then(|| DVec3::from_array(c))
     }
 }

@@ -4,6 +4,7 @@
 use glam::DVec3;
 
 use crate::error::KernelError;
+use crate::orientation::Orientation;
 use crate::side::{PolygonSide, Side};
 use crate::traits::Kernel;
 use crate::triangulate::triangulate;
@@ -145,6 +146,7 @@ impl Kernel for FloatKernel {
     type Plane = FloatPlane;
     type Polygon = FloatPolygon;
     type Point = DVec3;
+    type ExactPoint = [f64; 3];
 
     fn name(&self) -> &'static str {
         "float"
@@ -334,5 +336,28 @@ impl Kernel for FloatKernel {
 
     fn fallbacks(&self) -> u64 {
         0
+    }
+
+    fn vertex_exact(&self, poly: &FloatPolygon, i: usize) -> Option<[f64; 3]> {
+        poly.vertices().nth(i).map(|v| v.to_array())
+    }
+
+    fn point_exact(&self, p: &DVec3) -> [f64; 3] {
+        p.to_array()
+    }
+
+    /// Shewchuk's adaptive `orient3d` on the float kernel's (interpolated) vertices.
+    fn orientation(&self, e: &[f64; 3], a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> Orientation {
+        let pt = |p: &[f64; 3]| robust::Coord3D {
+            x: p[0],
+            y: p[1],
+            z: p[2],
+        };
+        let o = robust::orient3d(pt(e), pt(a), pt(b), pt(c));
+        Orientation::from_ordering(o.partial_cmp(&0.0).unwrap_or(std::cmp::Ordering::Equal))
+    }
+
+    fn vertex_world_approx(&self, poly: &FloatPolygon, i: usize) -> Option<DVec3> {
+        poly.vertices().nth(i)
     }
 }

@@ -3,6 +3,7 @@
 use glam::DVec3;
 
 use crate::error::KernelError;
+use crate::orientation::Orientation;
 use crate::side::{PolygonSide, Side};
 
 /// A polygon kernel: planes, convex polygons, classification and splitting.
@@ -21,6 +22,8 @@ pub trait Kernel: Sync {
     type Polygon: Clone + Send + Sync + std::fmt::Debug;
     /// A point, such as the eye (it may lie outside the scene's box).
     type Point: Copy + Send + Sync + std::fmt::Debug;
+    /// A point known exactly (an input point or the eye), for [`Kernel::orientation`].
+    type ExactPoint: Copy + PartialEq + Send + Sync + std::fmt::Debug;
 
     /// Short name for reports: `"exact"` or `"float"`.
     fn name(&self) -> &'static str;
@@ -75,4 +78,25 @@ pub trait Kernel: Sync {
     /// How often an exact predicate had to fall back from its floating-point filter since
     /// this kernel was created (always 0 for the float kernel).
     fn fallbacks(&self) -> u64;
+
+    /// Vertex `i` of `poly` when it is known exactly (an input point, or an intersection
+    /// whose coordinates happen to be representable, for the exact kernel; every vertex
+    /// for the float kernel).
+    fn vertex_exact(&self, poly: &Self::Polygon, i: usize) -> Option<Self::ExactPoint>;
+
+    /// A point, exactly.
+    fn point_exact(&self, p: &Self::Point) -> Self::ExactPoint;
+
+    /// The orientation of `e, a, b, c` (see [`Orientation`]); exact in the exact kernel.
+    fn orientation(
+        &self,
+        e: &Self::ExactPoint,
+        a: &Self::ExactPoint,
+        b: &Self::ExactPoint,
+        c: &Self::ExactPoint,
+    ) -> Orientation;
+
+    /// A cheap world position of vertex `i`, within a relative 1e-9 of the true one,
+    /// when the kernel has it at hand (for float prefilters only; never for decisions).
+    fn vertex_world_approx(&self, poly: &Self::Polygon, i: usize) -> Option<DVec3>;
 }
