@@ -2,11 +2,12 @@
 //! overlap, a topological sort of the occlusion graph, and BSP splitting only inside its
 //! strongly connected components (cycles and interpenetrations), recursively.
 
-use crate::shared::ExactVertices;
+use limn_kernel::Kernel;
 
-use crate::ctx::{Ctx, Pair};
-use crate::geom::{boxes_meet, convex_disjoint};
-use crate::partition::{choose_splitter, partition, push_parts, push_parts_as, Task};
+use crate::bsp::{choose_splitter, partition, push_parts, push_parts_as, Task};
+use crate::geom::{boxes_meet, convex_disjoint, Box2};
+use crate::occlusion::Pair;
+use crate::pieces::Ctx;
 
 /// A component larger than this, holding more than four fifths of its set, is dense.
 const DENSE_MIN: usize = 256;
@@ -18,22 +19,15 @@ const MAX_CELLS_PER_ITEM: usize = 64;
 
 /// Calls `f(i, j)` (indices into `set`, i ≠ j, each unordered pair once) for every pair
 /// whose screen boxes meet, using a uniform grid over the set's extent.
-pub(crate) fn box_pairs<K: ExactVertices>(
-    ctx: &Ctx<'_, K>,
-    set: &[u32],
-    mut f: impl FnMut(usize, usize),
-) {
+pub(crate) fn box_pairs<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32], mut f: impl FnMut(usize, usize)) {
     let n = set.len();
     if n < 2 {
         return;
     }
     let m = ctx.margin;
-    let boxes: Vec<[f64; 4]> = set
+    let boxes: Vec<Box2> = set
         .iter()
-        .map(|&p| {
-            let b = ctx.pieces[p as usize].bbox;
-            [b[0] - m, b[1] - m, b[2] + m, b[3] + m]
-        })
+        .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
         .collect();
     if n <= 24 {
         for i in 0..n {
@@ -45,24 +39,14 @@ pub(crate) fn box_pairs<K: ExactVertices>(
         }
         return;
     }
-    let mut u = [
-        f64::INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NEG_INFINITY,
-    ];
+    let mut u = Box2::EMPTY;
     let (mut sw, mut sh) = (0.0, 0.0);
     for b in &boxes {
-        u = [
-            u[0].min(b[0]),
-            u[1].min(b[1]),
-            u[2].max(b[2]),
-            u[3].max(b[3]),
-        ];
-        sw += b[2] - b[0];
-        sh += b[3] - b[1];
+        u = u.union(b);
+        sw += b.width();
+        sh += b.height();
     }
-    let (uw, uh) = ((u[2] - u[0]).max(1e-300), (u[3] - u[1]).max(1e-300));
+    let (uw, uh) = (u.width().max(1e-300), u.height().max(1e-300));
     // Cells about the size of an average box, at most ~2n cells in all.
     let avg = ((sw / n as f64) * (sh / n as f64)).sqrt().max(1e-300);
     let mut gx = ((uw / avg).ceil() as usize).clamp(1, 4096);
@@ -72,13 +56,18 @@ pub(crate) fn box_pairs<K: ExactVertices>(
         gy = (gy / 2).max(1);
     }
     let (cw, ch) = (uw / gx as f64, uh / gy as f64);
-    let cell_x = |x: f64| (((x - u[0]) / cw) as isize).clamp(0, gx as isize - 1) as usize;
-    let cell_y = |y: f64| (((y - u[1]) / ch) as isize).clamp(0, gy as isize - 1) as usize;
+    let cell_x = |x: f64| (((x - u.min_x) / cw) as isize).clamp(0, gx as isize - 1) as usize;
+    let cell_y = |y: f64| (((y - u.min_y) / ch) as isize).clamp(0, gy as isize - 1) as usize;
     let mut big = Vec::new();
     let mut counts = vec![0u32; gx * gy + 1];
     let mut ranges = Vec::with_capacity(n);
     for (i, b) in boxes.iter().enumerate() {
-        let (x0, x1, y0, y1) = (cell_x(b[0]), cell_x(b[2]), cell_y(b[1]), cell_y(b[3]));
+        let (x0, x1, y0, y1) = (
+            cell_x(b.min_x),
+            cell_x(b.max_x),
+            cell_y(b.min_y),
+            cell_y(b.max_y),
+        );
         if (x1 - x0 + 1) * (y1 - y0 + 1) > MAX_CELLS_PER_ITEM {
             big.push(i);
             ranges.push(None);
@@ -117,7 +106,7 @@ pub(crate) fn box_pairs<K: ExactVertices>(
                     continue;
                 }
                 // Report the pair only in the cell holding the corner of the overlap.
-                if cell_x(bi[0].max(bj[0])) == cx && cell_y(bi[1].max(bj[1])) == cy {
+                if cell_x(bi.min_x.max(bj.min_x)) == cx && cell_y(bi.min_y.max(bj.min_y)) == cy {
                     f(i as usize, j as usize);
                 }
             }
@@ -200,7 +189,7 @@ pub(crate) fn components(n: usize, start: &[u32], adj: &[u32]) -> Vec<Vec<u32>> 
 }
 
 /// Orders one set: constraints, components, and tasks for the stack.
-fn order_set<K: ExactVertices>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
+fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
     let n = set.len();
     let mut edges: Vec<(u32, u32)> = Vec::new();
     let mut pairs = Vec::new();
@@ -256,7 +245,7 @@ fn order_set<K: ExactVertices>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut 
 }
 
 /// The adaptive order of `set`.
-pub(crate) fn adaptive<K: ExactVertices>(
+pub(crate) fn adaptive<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     set: Vec<u32>,
     candidates: usize,

@@ -1,9 +1,10 @@
 //! Splitting a set of pieces by the plane of one of them (the BSP step), shared by the
 //! BSP and adaptive orderings.
 
-use crate::shared::ExactVertices;
+use limn_kernel::Kernel;
 
-use crate::ctx::{Ctx, Rel};
+use crate::occlusion::Rel;
+use crate::pieces::Ctx;
 
 /// How many pieces a splitter candidate is scored against, at most.
 const SCORE_SAMPLE: usize = 512;
@@ -11,7 +12,7 @@ const SCORE_SAMPLE: usize = 512;
 /// Picks a splitter among `candidates` random members of `set`: the one whose plane
 /// crosses the fewest other members (scored on a deterministic sample of at most
 /// [`SCORE_SAMPLE`] members).
-pub(crate) fn choose_splitter<K: ExactVertices>(
+pub(crate) fn choose_splitter<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     set: &[u32],
     candidates: usize,
@@ -53,7 +54,7 @@ pub(crate) fn choose_splitter<K: ExactVertices>(
 
 /// Splits every member of `set` by the plane of `splitter` and returns the parts on the
 /// far side, in the plane (sorted by face id: later faces win), and on the eye's side.
-pub(crate) fn partition<K: ExactVertices>(
+pub(crate) fn partition<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     set: &[u32],
     splitter: u32,
@@ -117,11 +118,7 @@ pub(crate) fn push_parts_as(
 
 /// The Fuchs–Kedem–Naylor BSP order of `set`: split by a splitter, recurse on both
 /// sides, paint far side, splitter plane, near side.
-pub(crate) fn bsp<K: ExactVertices>(
-    ctx: &mut Ctx<'_, K>,
-    set: Vec<u32>,
-    candidates: usize,
-) -> Vec<u32> {
+pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: usize) -> Vec<u32> {
     let mut out = Vec::with_capacity(set.len());
     let mut stack = vec![Task::Order(set)];
     while let Some(t) = stack.pop() {

@@ -3,22 +3,67 @@
 //! only when a gap wider than a margin separates them), so a float error can cost work
 //! but never change an order.
 
-/// An axis-aligned box in pixel space: `[min_x, min_y, max_x, max_y]`.
-pub(crate) type Box2 = [f64; 4];
+/// An axis-aligned box in pixel space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Box2 {
+    pub min_x: f64,
+    pub min_y: f64,
+    pub max_x: f64,
+    pub max_y: f64,
+}
+
+impl Box2 {
+    /// The empty box (the identity of [`Box2::union`]).
+    pub const EMPTY: Box2 = Box2 {
+        min_x: f64::INFINITY,
+        min_y: f64::INFINITY,
+        max_x: f64::NEG_INFINITY,
+        max_y: f64::NEG_INFINITY,
+    };
+
+    /// The box grown by `m` on every side.
+    #[inline]
+    pub fn grown(&self, m: f64) -> Box2 {
+        Box2 {
+            min_x: self.min_x - m,
+            min_y: self.min_y - m,
+            max_x: self.max_x + m,
+            max_y: self.max_y + m,
+        }
+    }
+
+    /// The smallest box containing both.
+    #[inline]
+    pub fn union(&self, o: &Box2) -> Box2 {
+        Box2 {
+            min_x: self.min_x.min(o.min_x),
+            min_y: self.min_y.min(o.min_y),
+            max_x: self.max_x.max(o.max_x),
+            max_y: self.max_y.max(o.max_y),
+        }
+    }
+
+    /// Width (negative for the empty box).
+    #[inline]
+    pub fn width(&self) -> f64 {
+        self.max_x - self.min_x
+    }
+
+    /// Height (negative for the empty box).
+    #[inline]
+    pub fn height(&self) -> f64 {
+        self.max_y - self.min_y
+    }
+}
 
 /// The bounding box of a point list.
 pub(crate) fn bbox(pts: &[[f64; 2]]) -> Box2 {
-    let mut b = [
-        f64::INFINITY,
-        f64::INFINITY,
-        f64::NEG_INFINITY,
-        f64::NEG_INFINITY,
-    ];
+    let mut b = Box2::EMPTY;
     for p in pts {
-        b[0] = b[0].min(p[0]);
-        b[1] = b[1].min(p[1]);
-        b[2] = b[2].max(p[0]);
-        b[3] = b[3].max(p[1]);
+        b.min_x = b.min_x.min(p[0]);
+        b.min_y = b.min_y.min(p[1]);
+        b.max_x = b.max_x.max(p[0]);
+        b.max_y = b.max_y.max(p[1]);
     }
     b
 }
@@ -26,7 +71,10 @@ pub(crate) fn bbox(pts: &[[f64; 2]]) -> Box2 {
 /// Whether two boxes overlap or come within `margin` of each other.
 #[inline]
 pub(crate) fn boxes_meet(a: &Box2, b: &Box2, margin: f64) -> bool {
-    a[0] <= b[2] + margin && b[0] <= a[2] + margin && a[1] <= b[3] + margin && b[1] <= a[3] + margin
+    a.min_x <= b.max_x + margin
+        && b.min_x <= a.max_x + margin
+        && a.min_y <= b.max_y + margin
+        && b.min_y <= a.max_y + margin
 }
 
 /// Whether the convex polygons `a` and `b` are separated by a gap wider than `margin`

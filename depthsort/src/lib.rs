@@ -1,6 +1,6 @@
 //! Exact painter's ordering for limn: a back-to-front list of fragments such that painting
 //! them in order gives the correct picture, for every scene — cyclic overlaps and
-//! interpenetrating polygons included — plus the painter backends.
+//! interpenetrating polygons included. The painters live in `limn-paint`.
 //!
 //! The pipeline: convert faces to kernel polygons; cull back faces (automatically for
 //! closed opaque objects) and faces seen exactly edge-on; clip exactly at the near plane;
@@ -32,27 +32,25 @@
 //! ```
 
 mod adaptive;
-mod ctx;
+mod bsp;
 mod geom;
 mod merge;
 mod newell;
+mod occlusion;
 mod options;
-pub mod paint;
-mod partition;
-mod picture;
+mod pieces;
 mod prepare;
-mod shared;
+mod rng;
+mod simple;
 
 use std::time::Instant;
 
 use glam::DVec3;
-use limn_kernel::{ExactKernel, FloatKernel};
+use limn_kernel::{ExactKernel, FloatKernel, Kernel};
 use limn_scene::{Camera, Scene};
 
-use crate::ctx::Ctx;
 pub use crate::options::{Arith, CullMode, OrderError, OrderOptions, SortMode, Stats};
-pub use crate::picture::{picture, seam_flaps, Style};
-pub use crate::shared::ExactVertices;
+use crate::pieces::Ctx;
 
 /// One output fragment: a convex piece of one input face.
 #[derive(Debug, Clone, PartialEq)]
@@ -64,24 +62,6 @@ pub struct Fragment {
     /// Vertices in world coordinates (rounded from the exact representation once).
     pub world: Vec<DVec3>,
     /// Per edge `i` (vertex `i` to `i + 1`): does it lie on an edge of the input face?
-    pub original_edges: Vec<bool>,
-    /// The eye sees the front of the face (its vertices run counter-clockwise).
-    pub front_facing: bool,
-    /// Set on the first fragment painted of an input polygon that was split: the whole
-    /// polygon. Painting it instead of the fragment gives the same picture for an opaque
-    /// face (every later piece is painted again, on top, at its own place in the order,
-    /// and whatever comes in between and overlaps a later piece lies behind it), but the
-    /// cut edges of the later pieces then fall on the face's own colour: no seam.
-    pub cover: Option<Cover>,
-}
-
-/// A whole input polygon to paint in place of its first fragment (see
-/// [`Fragment::cover`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Cover {
-    /// Vertices in pixel coordinates.
-    pub points: Vec<[f64; 2]>,
-    /// Per edge: does it lie on an edge of the input face?
     pub original_edges: Vec<bool>,
 }
 
@@ -98,31 +78,27 @@ pub struct Ordered {
     pub near: f64,
     /// Far plane distance (for projections; the painter does not clip there).
     pub far: f64,
+    /// Per input face: whether all of it takes part in the order, unclipped, not culled
+    /// and with one facing, so that its projected outline is exactly the union of its
+    /// fragments (painters may then paint the whole face in place of its first fragment).
+    pub whole_faces: Vec<bool>,
 }
 
 /// Orders `scene` as seen by `camera` with the kernel and mode of `opts`.
 pub fn order(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Ordered, OrderError> {
-    scene.validate()?;
-    camera.validate()?;
+    validate(scene, camera)?;
     let Some((lo, hi)) = scene.bounds() else {
-        let (near, far) = camera.near_far(scene);
-        return Ok(Ordered {
-            fragments: Vec::new(),
-            stats: Stats::default(),
-            camera: *camera,
-            near,
-            far,
-        });
+        return Ok(empty(scene, camera));
     };
     match opts.arith {
-        Arith::Exact => order_with(&ExactKernel::new(), scene, camera, opts),
-        Arith::Float => order_with(&FloatKernel::new(lo, hi)?, scene, camera, opts),
+        Arith::Exact => ordered(&ExactKernel::new(), scene, camera, opts).map(|(o, _)| o),
+        Arith::Float => ordered(&FloatKernel::new(lo, hi)?, scene, camera, opts).map(|(o, _)| o),
     }
 }
 
-/// Orders `scene` with an explicit kernel (the scene's bounds must lie inside the
-/// kernel's domain).
-pub fn order_with<K: ExactVertices>(
+/// Orders `scene` with an explicit kernel (for the float kernel, the scene's bounds must
+/// lie inside its domain).
+pub fn order_with<K: Kernel>(
     kernel: &K,
     scene: &Scene,
     camera: &Camera,
@@ -133,39 +109,52 @@ pub fn order_with<K: ExactVertices>(
 
 /// Like [`order_with`], and also returns the kernel polygon of every fragment (same
 /// positions as [`Ordered::fragments`]), for exact checks.
-pub fn order_polygons<K: ExactVertices>(
+pub fn order_polygons<K: Kernel>(
     kernel: &K,
     scene: &Scene,
     camera: &Camera,
     opts: &OrderOptions,
 ) -> Result<(Ordered, Vec<K::Polygon>), OrderError> {
+    validate(scene, camera)?;
+    ordered(kernel, scene, camera, opts)
+}
+
+/// The input checks every entry point makes once.
+fn validate(scene: &Scene, camera: &Camera) -> Result<(), OrderError> {
     scene.validate()?;
     camera.validate()?;
+    Ok(())
+}
+
+/// The result for a scene without faces.
+fn empty(scene: &Scene, camera: &Camera) -> Ordered {
+    let (near, far) = camera.near_far(scene);
+    Ordered {
+        fragments: Vec::new(),
+        stats: Stats::default(),
+        camera: *camera,
+        near,
+        far,
+        whole_faces: vec![false; scene.faces.len()],
+    }
+}
+
+/// The pipeline on validated input: prepare, order, merge, build the fragments.
+fn ordered<K: Kernel>(
+    kernel: &K,
+    scene: &Scene,
+    camera: &Camera,
+    opts: &OrderOptions,
+) -> Result<(Ordered, Vec<K::Polygon>), OrderError> {
     let t0 = Instant::now();
     let fallbacks0 = kernel.fallbacks();
     let eye = kernel.point(camera.eye)?;
-    let mut cam = *camera;
-    cam.eye = kernel.point_world(&eye);
-    cam.validate()?;
-    let (near, far) = cam.near_far(scene);
-    let vp = cam.view_projection(near, far);
-    let mut ctx = Ctx::new(kernel, eye, cam, vp, far, opts.seed);
-    let (items, whole) = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
+    let (near, far) = camera.near_far(scene);
+    let vp = camera.view_projection(near, far);
+    let mut ctx = Ctx::new(kernel, eye, *camera, vp, far, opts.seed);
+    let (items, whole_faces) = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
     let t1 = Instant::now();
-    let cands = opts.candidates.max(1);
-    let order = match opts.sort {
-        SortMode::Simple => {
-            let mut v = items;
-            v.sort_by(|&a, &b| {
-                let (pa, pb) = (&ctx.pieces[a as usize], &ctx.pieces[b as usize]);
-                pb.dmean.total_cmp(&pa.dmean).then(pa.face.cmp(&pb.face))
-            });
-            v
-        }
-        SortMode::Bsp => partition::bsp(&mut ctx, items, cands),
-        SortMode::Newell => newell::newell(&mut ctx, items, cands),
-        SortMode::Adaptive => adaptive::adaptive(&mut ctx, items, cands),
-    };
+    let order = sort(&mut ctx, items, opts);
     let t2 = Instant::now();
     ctx.stats.fragments_before_merge = order.len();
     let order = if opts.merge {
@@ -173,46 +162,7 @@ pub fn order_polygons<K: ExactVertices>(
     } else {
         order
     };
-    let mut fragments = Vec::with_capacity(order.len());
-    let mut polys = Vec::with_capacity(order.len());
-    let mut per_face = vec![0u32; scene.faces.len()];
-    for &id in &order {
-        per_face[ctx.pieces[id as usize].face as usize] += 1;
-    }
-    let mut covered = vec![false; scene.faces.len()];
-    for id in order {
-        let p = &ctx.pieces[id as usize];
-        let f = p.face as usize;
-        let cover = (whole[f] && per_face[f] > 1 && !std::mem::replace(&mut covered[f], true))
-            .then(|| {
-                let pts: Vec<[f64; 2]> = scene.faces[f]
-                    .vertices
-                    .iter()
-                    .map(|&v| {
-                        let pr = ctx.camera.project_with(&ctx.vp, scene.vertices[v as usize]);
-                        [pr.x, pr.y]
-                    })
-                    .collect();
-                Cover {
-                    original_edges: vec![true; pts.len()],
-                    points: pts,
-                }
-            });
-        let mut world = Vec::with_capacity(p.pts.len());
-        kernel.vertices_world(&p.poly, &mut world);
-        let original_edges = (0..world.len())
-            .map(|i| kernel.edge_is_original(&p.poly, i))
-            .collect();
-        fragments.push(Fragment {
-            face: p.face,
-            points: p.pts.clone(),
-            world,
-            original_edges,
-            front_facing: p.eye_front,
-            cover,
-        });
-        polys.push(p.poly.clone());
-    }
+    let (fragments, polys) = fragments(&ctx, &order);
     let t3 = Instant::now();
     let mut stats = ctx.stats;
     stats.fragments_out = fragments.len();
@@ -220,14 +170,46 @@ pub fn order_polygons<K: ExactVertices>(
     stats.ms_prepare = (t1 - t0).as_secs_f64() * 1e3;
     stats.ms_order = (t2 - t1).as_secs_f64() * 1e3;
     stats.ms_merge = (t3 - t2).as_secs_f64() * 1e3;
-    Ok((
-        Ordered {
-            fragments,
-            stats,
-            camera: cam,
-            near,
-            far,
-        },
-        polys,
-    ))
+    let ordered = Ordered {
+        fragments,
+        stats,
+        camera: *camera,
+        near,
+        far,
+        whole_faces,
+    };
+    Ok((ordered, polys))
+}
+
+/// Runs the ordering `opts.sort` asks for on the prepared pieces.
+fn sort<K: Kernel>(ctx: &mut Ctx<'_, K>, items: Vec<u32>, opts: &OrderOptions) -> Vec<u32> {
+    let candidates = opts.candidates.max(1);
+    match opts.sort {
+        SortMode::Simple => simple::simple(ctx, items),
+        SortMode::Bsp => bsp::bsp(ctx, items, candidates),
+        SortMode::Newell => newell::newell(ctx, items, candidates),
+        SortMode::Adaptive => adaptive::adaptive(ctx, items, candidates),
+    }
+}
+
+/// The output fragments (and their kernel polygons) of the pieces in `order`.
+fn fragments<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> (Vec<Fragment>, Vec<K::Polygon>) {
+    let mut fragments = Vec::with_capacity(order.len());
+    let mut polys = Vec::with_capacity(order.len());
+    for &id in order {
+        let p = &ctx.pieces[id as usize];
+        let mut world = Vec::with_capacity(p.pts.len());
+        ctx.k.vertices_world(&p.poly, &mut world);
+        let original_edges = (0..world.len())
+            .map(|i| ctx.k.edge_is_original(&p.poly, i))
+            .collect();
+        fragments.push(Fragment {
+            face: p.face,
+            points: p.pts.clone(),
+            world,
+            original_edges,
+        });
+        polys.push(p.poly.clone());
+    }
+    (fragments, polys)
 }

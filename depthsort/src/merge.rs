@@ -5,12 +5,12 @@
 
 use std::collections::HashSet;
 
-use crate::shared::ExactVertices;
+use limn_kernel::Kernel;
 
-use crate::ctx::{Ctx, NONE};
+use crate::pieces::{Ctx, NONE};
 
 /// Joins sibling pieces inside each run of consecutive pieces of the same face.
-pub(crate) fn merge<K: ExactVertices>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
+pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
     let mut out = Vec::with_capacity(order.len());
     let mut i = 0;
     while i < order.len() {
@@ -31,7 +31,7 @@ pub(crate) fn merge<K: ExactVertices>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u3
 
 /// Pieces of one face never overlap each other in projection, so any order within the
 /// run is valid: join every pair of siblings present until none is left.
-fn merge_run<K: ExactVertices>(ctx: &Ctx<'_, K>, run: &[u32], out: &mut Vec<u32>) {
+fn merge_run<K: Kernel>(ctx: &Ctx<'_, K>, run: &[u32], out: &mut Vec<u32>) {
     let mut present: HashSet<u32> = run.iter().copied().collect();
     let mut list: Vec<u32> = run.to_vec();
     loop {

@@ -5,11 +5,12 @@
 //! would be moved twice marks a cycle, broken by splitting. Plane tests are exact; the
 //! extent and projection tests are conservative float prefilters.
 
-use crate::shared::ExactVertices;
+use limn_kernel::Kernel;
 
-use crate::ctx::{Ctx, Rel};
+use crate::bsp::bsp;
 use crate::geom::convex_disjoint;
-use crate::partition::bsp;
+use crate::occlusion::Rel;
+use crate::pieces::Ctx;
 
 /// What to do with the head P after testing it against Q.
 enum Verdict {
@@ -25,14 +26,14 @@ enum Verdict {
     Stuck,
 }
 
-fn test_pair<K: ExactVertices>(ctx: &Ctx<'_, K>, p: u32, q: u32, q_marked: bool) -> Verdict {
+fn test_pair<K: Kernel>(ctx: &Ctx<'_, K>, p: u32, q: u32, q_marked: bool) -> Verdict {
     let (pp, qq) = (&ctx.pieces[p as usize], &ctx.pieces[q as usize]);
     let m = ctx.margin;
     // Tests 1 and 2: screen extents disjoint.
-    if pp.bbox[2] + m < qq.bbox[0] || qq.bbox[2] + m < pp.bbox[0] {
+    if pp.bbox.max_x + m < qq.bbox.min_x || qq.bbox.max_x + m < pp.bbox.min_x {
         return Verdict::Pass;
     }
-    if pp.bbox[3] + m < qq.bbox[1] || qq.bbox[3] + m < pp.bbox[1] {
+    if pp.bbox.max_y + m < qq.bbox.min_y || qq.bbox.max_y + m < pp.bbox.min_y {
         return Verdict::Pass;
     }
     // Test 3: P entirely behind Q's plane.
@@ -75,7 +76,7 @@ fn test_pair<K: ExactVertices>(ctx: &Ctx<'_, K>, p: u32, q: u32, q_marked: bool)
 }
 
 /// Inserts `id` into the sorted tail `list[front..]` (farthest first).
-fn insert_sorted<K: ExactVertices>(ctx: &Ctx<'_, K>, list: &mut Vec<u32>, front: usize, id: u32) {
+fn insert_sorted<K: Kernel>(ctx: &Ctx<'_, K>, list: &mut Vec<u32>, front: usize, id: u32) {
     let key = ctx.pieces[id as usize].dmax;
     let tail = &list[front..];
     let pos = tail.partition_point(|&x| ctx.pieces[x as usize].dmax >= key);
@@ -83,7 +84,7 @@ fn insert_sorted<K: ExactVertices>(ctx: &Ctx<'_, K>, list: &mut Vec<u32>, front:
 }
 
 /// The Newell–Newell–Sancha order of `set`.
-pub(crate) fn newell<K: ExactVertices>(
+pub(crate) fn newell<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     mut list: Vec<u32>,
     candidates: usize,

@@ -2,12 +2,12 @@
 //! edge-on (exactly), clip at the near plane (exactly), and drop what lies outside the
 //! picture (conservatively, in floats).
 
-use crate::shared::ExactVertices;
+use limn_kernel::Kernel;
 use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
-use crate::ctx::{Ctx, NONE};
 use crate::options::{CullMode, OrderError};
+use crate::pieces::{Ctx, NONE};
 
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
 /// (between vertex positions) must be used exactly once in each direction within the
@@ -69,7 +69,7 @@ pub(crate) fn closed_opaque_objects(scene: &Scene) -> Vec<bool> {
 /// Converts, culls and clips every face; returns the ids of the pieces to order, and per
 /// face whether all of it takes part unclipped with one facing (so its projected outline
 /// is exactly the union of its fragments).
-pub(crate) fn prepare<K: ExactVertices>(
+pub(crate) fn prepare<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     scene: &Scene,
     cull: CullMode,
@@ -137,7 +137,12 @@ pub(crate) fn prepare<K: ExactVertices>(
             let id = ctx.add(poly, fi as u32, NONE, Some(side == Side::Front));
             let b = ctx.pieces[id as usize].bbox;
             // Entirely outside the picture (with a one-pixel margin): never painted.
-            if b[2] < -1.0 || b[0] > w + 1.0 || b[3] < -1.0 || b[1] > h + 1.0 || !b[0].is_finite() {
+            if b.max_x < -1.0
+                || b.min_x > w + 1.0
+                || b.max_y < -1.0
+                || b.min_y > h + 1.0
+                || !b.min_x.is_finite()
+            {
                 continue;
             }
             kept_any = true;

@@ -7,7 +7,7 @@ use std::sync::OnceLock;
 
 use divan::counter::BytesCount;
 use divan::Bencher;
-use limn_depthsort::paint::{
+use limn_paint::{
     EpsPainter, Outline, PaintFragment, Painter, PdfPainter, Picture, PngPainter, SvgPainter,
 };
 

@@ -1,11 +1,15 @@
-//! From ordered fragments to a paintable [`Picture`]: flat shading per face (only the
-//! effects the scene asks for), opacity, object names, outlines.
+//! From ordered fragments to a paintable [`Picture`]: flat or Gouraud shading per face
+//! (only the effects the scene asks for), opacity, object names, outlines, whole-face
+//! covers and seam flaps.
 
 use glam::DVec3;
 use limn_scene::{interpolated_normal, shade_face, shade_point, Scene};
 
-use crate::paint::{Outline, PaintFragment, Picture};
-use crate::Ordered;
+use limn_depthsort::Ordered;
+
+use crate::covers::covers;
+use crate::seams::seam_flaps;
+use crate::{Outline, PaintFragment, Picture};
 
 /// How to turn an order into a picture.
 #[derive(Debug, Clone, PartialEq)]
@@ -17,13 +21,14 @@ pub struct Style {
     pub outline: Option<Outline>,
     /// Paint the first piece of a split opaque polygon as the whole polygon, so that the
     /// cuts leave no anti-aliasing seams (the picture is otherwise the same; see
-    /// [`crate::Fragment::cover`]). Default: `true`.
+    /// [`covers`]). Default: `true`.
     pub seamless: bool,
     /// Gouraud shading for lit faces with vertex normals: colours are computed at the
     /// fragment's vertices (normals interpolated over the input face) and interpolated
     /// by the painter. Faces without normals stay flat. Default: `true`.
     pub smooth: bool,
-    /// Width in pixels of the seam flaps (see [`seam_flaps`]); 0 = none. Default: 0.5 px.
+    /// Width in pixels of the seam flaps (see [`crate::seam_flaps`]); 0 = none. Default:
+    /// 0.5 px.
     pub seams: f64,
 }
 
@@ -45,19 +50,20 @@ impl Default for Style {
 pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     let cam = &ordered.camera;
     let mut cache: Vec<Option<[f64; 4]>> = vec![None; scene.faces.len()];
+    let cover = covers(scene, ordered);
     let mut fragments = Vec::with_capacity(ordered.fragments.len());
-    for f in &ordered.fragments {
+    for (f, cover) in ordered.fragments.iter().zip(&cover) {
         let face = &scene.faces[f.face as usize];
         let fill = *cache[f.face as usize].get_or_insert_with(|| {
             let m = &scene.materials[face.material as usize];
             let c = shade_face(scene, f.face, cam.eye);
             [c[0], c[1], c[2], m.opacity.clamp(0.0, 1.0)]
         });
-        // An opaque face's first piece is painted as the whole polygon (see
-        // `Fragment::cover`); translucent faces must not be painted twice.
-        let use_cover = fill[3] >= 1.0 && style.seamless && f.cover.is_some();
-        let (points, original_edges) = match &f.cover {
-            Some(c) if use_cover => (c.points.clone(), c.original_edges.clone()),
+        // An opaque face's first piece is painted as the whole polygon (see `covers`);
+        // translucent faces must not be painted twice.
+        let use_cover = fill[3] >= 1.0 && style.seamless && cover.is_some();
+        let (points, original_edges) = match cover {
+            Some(c) if use_cover => (c.clone(), vec![true; c.len()]),
             _ => (f.points.clone(), f.original_edges.clone()),
         };
         let m = &scene.materials[face.material as usize];
@@ -103,103 +109,4 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         outline: style.outline,
         seams: 0.0,
     }
-}
-
-/// The bits of an edge's end points, smaller end first (an undirected edge key).
-type EdgeKey = ([u64; 2], [u64; 2]);
-
-fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
-    let (ka, kb) = (a.map(f64::to_bits), b.map(f64::to_bits));
-    if ka <= kb {
-        (ka, kb)
-    } else {
-        (kb, ka)
-    }
-}
-
-/// Adds seam flaps: viewers anti-alias each path on its own, so where two fills meet
-/// along an edge both edge pixels are only partly covered and the background shows
-/// through as a hairline. For every edge an opaque flat fragment shares (end points
-/// equal) with an opaque fragment of another face painted *later*, a flap in the first
-/// fragment's colour is painted right after it: the part of the later fragment within
-/// `width` pixels of the shared edge. The later fragment covers its flaps entirely, so
-/// the picture stays exactly the same at every point (the flap only fills the
-/// anti-aliased pixels under the shared edge): silhouettes, edges against faces painted
-/// earlier and translucent faces get no flap.
-pub fn seam_flaps(fragments: Vec<PaintFragment>, width: f64) -> Vec<PaintFragment> {
-    use std::collections::HashMap;
-    let opaque = |f: &PaintFragment| f.fill[3] >= 1.0;
-    let mut later: HashMap<EdgeKey, Vec<usize>> = HashMap::new();
-    for (j, f) in fragments.iter().enumerate() {
-        if !opaque(f) {
-            continue;
-        }
-        let n = f.points.len();
-        for i in 0..n {
-            later
-                .entry(edge_key(f.points[i], f.points[(i + 1) % n]))
-                .or_default()
-                .push(j);
-        }
-    }
-    let mut out = Vec::with_capacity(fragments.len());
-    for (i, f) in fragments.iter().enumerate() {
-        out.push(f.clone());
-        if !opaque(f) || f.vertex_colors.is_some() {
-            continue;
-        }
-        let n = f.points.len();
-        for e in 0..n {
-            let (a, b) = (f.points[e], f.points[(e + 1) % n]);
-            let Some(js) = later.get(&edge_key(a, b)) else {
-                continue;
-            };
-            // The first fragment of another face painted after this one.
-            let Some(&j) = js.iter().find(|&&j| j > i && fragments[j].face != f.face) else {
-                continue;
-            };
-            if let Some(flap) = flap(&fragments[j].points, a, b, width) {
-                let mut p = PaintFragment::new(flap, f.fill);
-                p.face = f.face;
-                p.object = f.object;
-                p.original_edges = vec![false; p.points.len()];
-                out.push(p);
-            }
-        }
-    }
-    out
-}
-
-/// The part of `poly` within `width` of the line through `a` and `b` (on `poly`'s side),
-/// by clipping `poly` with one half-plane; `None` when it is degenerate.
-fn flap(poly: &[[f64; 2]], a: [f64; 2], b: [f64; 2], width: f64) -> Option<Vec<[f64; 2]>> {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let len = d[0].hypot(d[1]);
-    if len.is_nan() || len <= 0.0 {
-        return None;
-    }
-    let mut nrm = [-d[1] / len, d[0] / len];
-    // Point the normal into the polygon (towards its centroid).
-    let c = poly
-        .iter()
-        .fold([0.0, 0.0], |s, p| [s[0] + p[0], s[1] + p[1]]);
-    let c = [c[0] / poly.len() as f64, c[1] / poly.len() as f64];
-    if (c[0] - a[0]) * nrm[0] + (c[1] - a[1]) * nrm[1] < 0.0 {
-        nrm = [-nrm[0], -nrm[1]];
-    }
-    // Keep the points with distance(x) = nrm·(x − a) ≤ width.
-    let dist = |p: [f64; 2]| (p[0] - a[0]) * nrm[0] + (p[1] - a[1]) * nrm[1] - width;
-    let mut out = Vec::with_capacity(poly.len() + 2);
-    for k in 0..poly.len() {
-        let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
-        let (dp, dq) = (dist(p), dist(q));
-        if dp <= 0.0 {
-            out.push(p);
-        }
-        if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
-            let t = dp / (dp - dq);
-            out.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]);
-        }
-    }
-    (out.len() >= 3).then_some(out)
 }

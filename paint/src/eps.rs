@@ -34,8 +34,8 @@
 
 use std::io::Write;
 
-use super::fmt::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
-use super::prep::{check, reversals, walk, Frag};
+use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
+use super::runs::{check, reversals, walk, Frag};
 use super::{PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`EpsPainter`].

@@ -22,8 +22,8 @@ use std::io::Write;
 
 use pdf_writer::{Name, Pdf, Rect, Ref};
 
-use super::fmt::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
-use super::prep::{check, reversals, walk, Frag};
+use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
+use super::runs::{check, reversals, walk, Frag};
 use super::{PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PdfPainter`].

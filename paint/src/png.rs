@@ -23,8 +23,8 @@ use tiny_skia::{
     Color, FillRule, LineCap, LineJoin, Mask, Paint, Path, PathBuilder, Pixmap, Stroke, Transform,
 };
 
-use super::fmt::{channel_u8, rgb_u8};
-use super::prep::{check, reversals, walk, Frag};
+use super::number::{channel_u8, rgb_u8};
+use super::runs::{check, reversals, walk, Frag};
 use super::{PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PngPainter`].

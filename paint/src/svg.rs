@@ -23,10 +23,10 @@
 
 use std::io::Write;
 
-use super::fmt::{
+use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
-use super::prep::{check, reversals, walk, Frag};
+use super::runs::{check, reversals, walk, Frag};
 use super::{PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`SvgPainter`].

@@ -1,8 +1,6 @@
 //! PNG output, decoded and checked pixel by pixel.
 
-use limn_depthsort::paint::{
-    Outline, PaintError, PaintFragment, Painter, Picture, PngOptions, PngPainter,
-};
+use limn_paint::{Outline, PaintError, PaintFragment, Painter, Picture, PngOptions, PngPainter};
 use tiny_skia::Pixmap;
 
 const BLUE: [f64; 4] = [0.2, 0.4, 0.6, 1.0];

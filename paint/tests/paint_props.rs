@@ -1,7 +1,7 @@
 //! Random pictures, biased toward bad input: every backend paints them without error,
 //! skips exactly the invalid fragments, and writes the same bytes every time.
 
-use limn_depthsort::paint::{painter_for, Format, Outline, PaintFragment, Picture};
+use limn_paint::{painter_for, Format, Outline, PaintFragment, Picture};
 use proptest::prelude::*;
 
 /// Coordinates: mostly on the page, sometimes far away, huge or not finite.

@@ -1,7 +1,7 @@
 //! Seam-closing strokes: only opaque flat fills get them, in their own colour, and only
 //! when asked for.
 
-use limn_depthsort::paint::{EpsPainter, PaintFragment, Painter, PdfPainter, Picture, SvgPainter};
+use limn_paint::{EpsPainter, PaintFragment, Painter, PdfPainter, Picture, SvgPainter};
 
 fn picture(seams: f64) -> Picture {
     let mut p = Picture::new(40, 30);
@@ -43,7 +43,7 @@ fn svg_strokes_opaque_fills_in_their_own_colour() {
 #[test]
 fn svg_outlines_keep_their_own_width_next_to_seams() {
     let mut p = picture(0.35);
-    p.outline = Some(limn_depthsort::paint::Outline {
+    p.outline = Some(limn_paint::Outline {
         color: [0.0, 0.0, 0.0, 0.5],
         width: 1.5,
     });

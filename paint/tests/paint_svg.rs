@@ -1,8 +1,6 @@
 //! Exact SVG output for small pictures.
 
-use limn_depthsort::paint::{
-    Outline, PaintFragment, PaintStats, Painter, Picture, SvgOptions, SvgPainter,
-};
+use limn_paint::{Outline, PaintFragment, PaintStats, Painter, Picture, SvgOptions, SvgPainter};
 
 fn frag(
     face: u32,
@@ -319,8 +317,5 @@ fn io_errors_are_reported() {
     let err = SvgPainter::default()
         .paint(&p, &mut Failing(10))
         .unwrap_err();
-    assert!(
-        matches!(err, limn_depthsort::paint::PaintError::Io(_)),
-        "{err}"
-    );
+    assert!(matches!(err, limn_paint::PaintError::Io(_)), "{err}");
 }

@@ -1,8 +1,6 @@
 //! Structure of the PDF and EPS outputs.
 
-use limn_depthsort::paint::{
-    EpsPainter, Outline, PaintFragment, PaintStats, Painter, PdfPainter, Picture,
-};
+use limn_paint::{EpsPainter, Outline, PaintFragment, PaintStats, Painter, PdfPainter, Picture};
 
 const BLUE: [f64; 4] = [0.2, 0.4, 0.6, 1.0];
 

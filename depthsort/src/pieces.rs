@@ -1,0 +1,146 @@
+//! The working state shared by the orderings: the piece tree (every polygon and every
+//! fragment split from it, with its provenance), projections, counters and the random
+//! source. The occlusion predicates between pieces live in [`crate::occlusion`].
+
+use glam::{DMat4, DVec3};
+use limn_kernel::{Kernel, PolygonSide, Side};
+use limn_scene::Camera;
+
+use crate::geom::{bbox, Box2};
+use crate::options::Stats;
+use crate::rng::SplitMix;
+
+/// No piece.
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// A convex polygon taking part in the ordering: an input polygon or a piece split from
+/// one. Pieces are never removed: a split piece stays as the parent of its two halves,
+/// so halves that end up next to each other can be joined again exactly.
+pub(crate) struct Piece<K: Kernel> {
+    pub poly: K::Polygon,
+    pub plane: K::Plane,
+    pub face: u32,
+    pub parent: u32,
+    pub kids: [u32; 2],
+    /// The eye lies strictly in front of the supporting plane.
+    pub eye_front: bool,
+    /// Projected vertices in pixels.
+    pub pts: Vec<[f64; 2]>,
+    pub bbox: Box2,
+    /// Range of view depth (clip w) over the vertices.
+    pub dmin: f64,
+    pub dmax: f64,
+    pub dmean: f64,
+}
+
+pub(crate) struct Ctx<'a, K: Kernel> {
+    pub k: &'a K,
+    pub eye: K::Point,
+    pub vp: DMat4,
+    pub camera: Camera,
+    pub pieces: Vec<Piece<K>>,
+    pub stats: Stats,
+    /// Pixel margin of the float prefilters.
+    pub margin: f64,
+    /// Depth margin of the float prefilters.
+    pub dmargin: f64,
+    rng: SplitMix,
+    scratch: Vec<DVec3>,
+}
+
+impl<'a, K: Kernel> Ctx<'a, K> {
+    pub fn new(k: &'a K, eye: K::Point, camera: Camera, vp: DMat4, far: f64, seed: u64) -> Self {
+        let size = (camera.width + camera.height) as f64;
+        Ctx {
+            k,
+            eye,
+            vp,
+            camera,
+            pieces: Vec::new(),
+            stats: Stats::default(),
+            margin: 1e-7 * size + 1e-9,
+            dmargin: 1e-9 * far.abs().max(1e-300),
+            rng: SplitMix::new(seed),
+            scratch: Vec::new(),
+        }
+    }
+
+    /// A deterministic pseudo-random number.
+    pub fn next_random(&mut self) -> u64 {
+        self.rng.next_u64()
+    }
+
+    /// Adds a piece and projects it. `eye_front` is computed when `None`.
+    pub fn add(
+        &mut self,
+        poly: K::Polygon,
+        face: u32,
+        parent: u32,
+        eye_front: Option<bool>,
+    ) -> u32 {
+        let plane = self.k.support(&poly);
+        let eye_front =
+            eye_front.unwrap_or_else(|| self.k.side_of_point(&plane, &self.eye) == Side::Front);
+        self.scratch.clear();
+        self.k.vertices_world(&poly, &mut self.scratch);
+        let mut pts = Vec::with_capacity(self.scratch.len());
+        let (mut dmin, mut dmax, mut dsum) = (f64::INFINITY, f64::NEG_INFINITY, 0.0);
+        for &p in &self.scratch {
+            let pr = self.camera.project_with(&self.vp, p);
+            pts.push([pr.x, pr.y]);
+            dmin = dmin.min(pr.w);
+            dmax = dmax.max(pr.w);
+            dsum += pr.w;
+        }
+        let dmean = dsum / pts.len().max(1) as f64;
+        let bbox = bbox(&pts);
+        self.pieces.push(Piece {
+            poly,
+            plane,
+            face,
+            parent,
+            kids: [NONE, NONE],
+            eye_front,
+            pts,
+            bbox,
+            dmin,
+            dmax,
+            dmean,
+        });
+        (self.pieces.len() - 1) as u32
+    }
+
+    /// Splits piece `id` by the plane of piece `by`. Returns the ids of the part on the
+    /// eye's side of that plane and the part on the far side (either may be absent when
+    /// the piece does not span the plane).
+    pub fn split_by(&mut self, id: u32, by: u32) -> (Option<u32>, Option<u32>) {
+        let plane = self.pieces[by as usize].plane.clone();
+        let by_eye_front = self.pieces[by as usize].eye_front;
+        let (front, back) = self.split_plane(id, &plane);
+        if by_eye_front {
+            (front, back)
+        } else {
+            (back, front)
+        }
+    }
+
+    /// Splits piece `id` by `plane` into (front, back) piece ids. A piece that lies on one
+    /// side is returned unchanged on that side.
+    pub fn split_plane(&mut self, id: u32, plane: &K::Plane) -> (Option<u32>, Option<u32>) {
+        let piece = &self.pieces[id as usize];
+        match self.k.classify(&piece.poly, plane) {
+            PolygonSide::Front | PolygonSide::Coplanar => (Some(id), None),
+            PolygonSide::Back | PolygonSide::CoplanarOpposite => (None, Some(id)),
+            PolygonSide::Spanning => {
+                let (f, b) = self.k.split(&piece.poly, plane);
+                let face = piece.face;
+                let ef = Some(piece.eye_front);
+                self.stats.splits += 1;
+                let f = f.map(|poly| self.add(poly, face, id, ef));
+                let b = b.map(|poly| self.add(poly, face, id, ef));
+                self.pieces[id as usize].kids = [f.unwrap_or(NONE), b.unwrap_or(NONE)];
+                (f, b)
+            }
+        }
+    }
+}

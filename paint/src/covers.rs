@@ -1,0 +1,45 @@
+//! Whole-face covers: the first painted fragment of a split opaque face is painted as
+//! the whole face, so the cuts between its pieces never show.
+
+use limn_depthsort::Ordered;
+use limn_scene::Scene;
+
+/// Per fragment of `ordered` (which must come from `scene`), the projected outline of its
+/// whole input face when the fragment is the first painted of a face that takes part
+/// whole ([`Ordered::whole_faces`]) and was split or triangulated into several fragments;
+/// `None` otherwise.
+///
+/// Painting the cover instead of the fragment gives the same picture for an opaque face:
+/// every later piece is painted again, on top, at its own place in the order, and
+/// whatever comes in between and overlaps a later piece lies behind it. The cut edges of
+/// the later pieces then fall on the face's own colour: no seam.
+pub fn covers(scene: &Scene, ordered: &Ordered) -> Vec<Option<Vec<[f64; 2]>>> {
+    let faces = scene.faces.len();
+    let mut per_face = vec![0u32; faces];
+    for f in &ordered.fragments {
+        if let Some(c) = per_face.get_mut(f.face as usize) {
+            *c += 1;
+        }
+    }
+    let cam = &ordered.camera;
+    let vp = cam.view_projection(ordered.near, ordered.far);
+    let mut covered = vec![false; faces];
+    ordered
+        .fragments
+        .iter()
+        .map(|frag| {
+            let f = frag.face as usize;
+            let whole = ordered.whole_faces.get(f).copied().unwrap_or(false);
+            (whole && per_face[f] > 1 && !std::mem::replace(&mut covered[f], true)).then(|| {
+                scene.faces[f]
+                    .vertices
+                    .iter()
+                    .map(|&v| {
+                        let p = cam.project_with(&vp, scene.vertices[v as usize]);
+                        [p.x, p.y]
+                    })
+                    .collect()
+            })
+        })
+        .collect()
+}
