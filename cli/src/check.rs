@@ -1,60 +1,19 @@
-//! `limn check` and the raster methods of `limn render --method`.
+//! `limn check`: the painter's order against an image-space reference, pixel by pixel
+//! (through [`limn_check`], the routine the tests use).
 
-use std::path::Path;
 use std::process::ExitCode;
 
 use anyhow::{Context, Result};
-use limn_depthsort::{order, CullMode, OrderOptions};
-use limn_scene::{Camera, Scene};
-use limn_zbuffer::{
-    compare, default_band_tolerance, diff_png, edge_band, rasterize_ids, render, scene_edges,
-    Method, RenderOptions, NO_FACE,
-};
+use limn_check::paint;
+use limn_zbuffer::{default_band_tolerance, diff_png, DepthFormat, Method, NO_FACE};
 use serde_json::json;
 
-use crate::args::{AgainstArg, CheckArgs, MethodArg, ViewArgs};
+use crate::args::{AgainstArg, CheckArgs};
 use crate::output::write_atomic;
-use crate::render::{camera, load, order_options};
+use crate::setup::{camera, load, order_options};
 
 /// Exit status when mismatches remain outside the edge band.
 const MISMATCH: u8 = 3;
-
-fn method_of(m: MethodArg) -> Option<Method> {
-    match m {
-        MethodArg::Painter => None,
-        MethodArg::Zbuffer => Some(Method::ZBuffer),
-        MethodArg::Scanline => Some(Method::ScanLine),
-        MethodArg::Abuffer => Some(Method::ABuffer),
-        MethodArg::Warnock => Some(Method::Warnock),
-        MethodArg::Raycast => Some(Method::RayCast),
-    }
-}
-
-/// Renders the scene with an image-space method and writes the colour image as PNG.
-pub fn raster(
-    scene: &Scene,
-    cam: &Camera,
-    m: MethodArg,
-    output: &Path,
-    view: &ViewArgs,
-    oo: &OrderOptions,
-) -> Result<ExitCode> {
-    let method = method_of(m).context("the painter is not a raster method")?;
-    let opts = RenderOptions {
-        cull_back_faces: oo.cull == CullMode::On,
-        ..RenderOptions::default()
-    };
-    let r = render(scene, cam, method, &opts)?;
-    let png = r.color.encode_png()?;
-    write_atomic(output, |w| {
-        w.write_all(&png)?;
-        Ok(())
-    })?;
-    if !view.quiet && output.as_os_str() != "-" {
-        eprintln!("limn: wrote {} ({})", output.display(), method.name());
-    }
-    Ok(ExitCode::SUCCESS)
-}
 
 /// Orders the scene, resolves which fragment covers each pixel centre, and compares the
 /// face ids with a reference.
@@ -63,41 +22,20 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     let scene = &loaded.scene;
     let cam = camera(scene, &a.view, loaded.opts.size, &a.input)?;
     let oo = order_options(&a.view, &loaded.opts)?;
-    let ordered = order(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
-    let c = &ordered.camera;
-    let (w, h) = (c.width, c.height);
-    let polys: Vec<(Vec<[f64; 2]>, u32)> = ordered
-        .fragments
-        .iter()
-        .map(|f| (f.points.clone(), f.face))
-        .collect();
-    let painter = rasterize_ids(&polys, w, h);
+    let painted = paint(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
+    let ordered = &painted.ordered;
+    let (w, h) = (ordered.camera.width, ordered.camera.height);
     let method = match a.against {
         AgainstArg::Zbuffer => Method::ZBuffer,
         AgainstArg::Raycast => Method::RayCast,
         AgainstArg::Warnock => Method::Warnock,
         AgainstArg::Scanline => Method::ScanLine,
     };
-    let ropts = RenderOptions {
-        cull_back_faces: oo.cull == CullMode::On,
-        near_far: Some((ordered.near, ordered.far)),
-        ..RenderOptions::default()
-    };
-    let reference = render(scene, c, method, &ropts)?;
-    // Pixel centres near a projected edge (of a face, a near-plane cut or a fragment:
-    // fragments also trace where faces pierce each other) are ambiguous.
-    let mut edges = scene_edges(scene, c, &ropts)?;
-    for f in &ordered.fragments {
-        let n = f.points.len();
-        for i in 0..n {
-            edges.push((f.points[i], f.points[(i + 1) % n]));
-        }
-    }
+    let reference = painted.reference(scene, method, DepthFormat::F64)?;
     let tol = default_band_tolerance(w, h);
-    let band = edge_band(&edges, w, h, tol);
-    let cmp = compare(&painter, &reference.ids, Some(&band));
+    let cmp = painted.compare(&reference);
     if let Some(path) = &a.diff {
-        let png = diff_png(&painter, &reference.ids, Some(&band))?;
+        let png = diff_png(&painted.ids, &reference, Some(&painted.band))?;
         write_atomic(path, |out| {
             out.write_all(&png)?;
             Ok(())

@@ -5,8 +5,20 @@
 //! * middle: two closed boxes passing through each other, lit;
 //! * right: a closed, shaded icosphere with a specular highlight.
 
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::Result;
 use glam::{DMat3, DVec3};
-use limn_scene::{shapes, Light, LightKind, Material, Scene, SceneError};
+use limn_depthsort::{order, OrderOptions};
+use limn_paint::{painter_for, picture, Outline, Style};
+use limn_scene::{shapes, Camera, Light, LightKind, Material, Scene, SceneError};
+
+use crate::args::DemoArgs;
+use crate::output::write_atomic;
+use crate::setup::format_of;
+use crate::stats::{write_stats, Timing};
 
 /// Builds the demo scene.
 pub fn scene() -> Result<Scene, SceneError> {
@@ -72,6 +84,53 @@ pub fn scene() -> Result<Scene, SceneError> {
         },
     ];
     Ok(s)
+}
+
+/// Runs `limn demo`: the built-in scene, framed, written like `render` writes.
+pub fn run(a: DemoArgs) -> Result<ExitCode> {
+    let t0 = Instant::now();
+    let scene = scene()?;
+    let output = a
+        .output
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("demo.svg"));
+    let format = format_of(&output, None)?;
+    let mut cam = Camera::framing(&scene, 960, 540)?;
+    cam.eye = cam.target + (cam.eye - cam.target) * 0.8;
+    let t1 = Instant::now();
+    let oo = OrderOptions::default();
+    let ordered = order(&scene, &cam, &oo)?;
+    let t2 = Instant::now();
+    let style = Style {
+        seamless: true,
+        smooth: true,
+        seams: Style::default().seams,
+        background: Some([1.0, 1.0, 1.0, 1.0]),
+        outline: a.outline.then_some(Outline {
+            color: [0.1, 0.1, 0.1, 1.0],
+            width: 1.0,
+        }),
+    };
+    let pic = picture(&scene, &ordered, &style);
+    let ps = write_atomic(&output, |w| Ok(painter_for(format).paint(&pic, w)?))?;
+    let t3 = Instant::now();
+    let timing = Timing {
+        load: (t1 - t0).as_secs_f64() * 1e3,
+        order: (t2 - t1).as_secs_f64() * 1e3,
+        write: (t3 - t2).as_secs_f64() * 1e3,
+        total: t0.elapsed().as_secs_f64() * 1e3,
+    };
+    write_stats(&a.stats, &scene, &ordered, &oo, ps.paths, ps.bytes, &timing)?;
+    if !a.quiet && output.as_os_str() != "-" {
+        eprintln!(
+            "limn: wrote {} ({} faces, {} fragments, {} splits)",
+            output.display(),
+            ordered.stats.faces_in,
+            ordered.stats.fragments_out,
+            ordered.stats.splits
+        );
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 #[cfg(test)]

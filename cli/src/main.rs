@@ -6,7 +6,10 @@ mod check;
 mod demo;
 mod output;
 mod progress;
+mod raster;
 mod render;
+mod setup;
+mod stats;
 
 use std::process::ExitCode;
 
@@ -26,7 +29,12 @@ fn main() -> ExitCode {
         let _ = e.print();
         return ExitCode::from(2);
     }
-    match render::run(cli) {
+    let run = match cli.command {
+        args::Command::Render(a) => render::render(a),
+        args::Command::Demo(a) => demo::run(a),
+        args::Command::Check(a) => check::check(a),
+    };
+    match run {
         Ok(code) => code,
         Err(e) => {
             eprintln!("limn: error: {}", message(&e));

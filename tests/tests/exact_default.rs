@@ -2,7 +2,8 @@
 //! whole-face covers and seam flaps, as the writers receive them) give every pixel centre
 //! the face exact ray casting sees, outside a 1/64-pixel band around the true edges.
 
-use limn_depthsort::{order, picture, seam_flaps, OrderOptions, SortMode, Style};
+use limn_depthsort::{order, OrderOptions, SortMode};
+use limn_paint::{picture, seam_flaps, Style};
 use limn_scene::{shapes, Camera, Material, Scene};
 use limn_tests::corpus;
 use limn_zbuffer::{compare, edge_band, rasterize_ids, render, scene_edges, Method, RenderOptions};
@@ -90,7 +91,7 @@ fn default_pictures_of_meshes_and_soups_are_exact() {
 
 #[test]
 fn flaps_go_only_under_later_opaque_faces_of_other_faces() {
-    use limn_depthsort::paint::PaintFragment;
+    use limn_paint::PaintFragment;
     // Two unit squares sharing the edge x = 1, and a translucent third one.
     let sq = |x0: f64| vec![[x0, 0.0], [x0 + 1.0, 0.0], [x0 + 1.0, 1.0], [x0, 1.0]];
     let mut a = PaintFragment::new(sq(0.0), [1.0, 0.0, 0.0, 1.0]);
@@ -120,7 +121,7 @@ fn flaps_go_only_under_later_opaque_faces_of_other_faces() {
 /// anti-aliasing, shows another colour than the face exact ray casting sees
 /// (pixels of translucent or smooth-shaded faces are not compared).
 fn svg_wrong_pixels(scene: &Scene, camera: &Camera) -> usize {
-    use limn_depthsort::paint::{Painter, SvgPainter};
+    use limn_paint::{Painter, SvgPainter};
     let o = order(scene, camera, &OrderOptions::default()).expect("orderable");
     let pic = picture(scene, &o, &Style::default());
     let mut svg = Vec::new();

@@ -22,7 +22,9 @@ fn wrong(case: &Case, arith: Arith) -> Vec<(SortMode, usize)> {
                 ..OrderOptions::default()
             };
             let p = paint(&case.scene, &case.camera, &opts);
-            let r = p.reference(&case.scene, Method::RayCast, DepthFormat::F64);
+            let r = p
+                .reference(&case.scene, Method::RayCast, DepthFormat::F64)
+                .expect("reference renders");
             (sort, p.compare(&r).mismatches_outside_band)
         })
         .collect()

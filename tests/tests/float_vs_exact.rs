@@ -3,7 +3,8 @@
 //! (exact ray casting decides).
 
 use glam::DVec3;
-use limn_depthsort::{order_with, ExactVertices, OrderOptions, SortMode};
+use limn_depthsort::{order_with, OrderOptions, SortMode};
+use limn_kernel::Kernel;
 use limn_kernel::{ExactKernel, FloatKernel};
 use limn_tests::corpus::{self, transformed, Case};
 use limn_zbuffer::{
@@ -11,7 +12,7 @@ use limn_zbuffer::{
     RenderOptions,
 };
 
-fn mismatches<K: ExactVertices>(kernel: &K, case: &Case, sort: SortMode) -> usize {
+fn mismatches<K: Kernel>(kernel: &K, case: &Case, sort: SortMode) -> usize {
     let o = order_with(
         kernel,
         &case.scene,

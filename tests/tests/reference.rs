@@ -3,8 +3,9 @@
 //! buffers, translucent blending, and random triangle soups.
 
 use glam::DVec3;
-use limn_depthsort::paint::{PngOptions, PngPainter};
-use limn_depthsort::{picture, Arith, CullMode, OrderOptions, SortMode, Style};
+use limn_depthsort::{Arith, CullMode, OrderOptions, SortMode};
+use limn_paint::{picture, Style};
+use limn_paint::{PngOptions, PngPainter};
 use limn_scene::{polygon_normal, Camera, Material, Scene};
 use limn_tests::corpus::{self, Case};
 use limn_tests::reference::{paint, Painted};
@@ -66,7 +67,9 @@ fn painter_agrees_with_ray_casting_and_the_f64_zbuffer_on_every_corpus_case() {
             let p = paint(&case.scene, &case.camera, &exact(mode));
             assert!(p.ids.covered() > 0, "{}: nothing painted", case.name);
             for method in [Method::RayCast, Method::ZBuffer] {
-                let r = p.reference(&case.scene, method, DepthFormat::F64);
+                let r = p
+                    .reference(&case.scene, method, DepthFormat::F64)
+                    .expect("reference renders");
                 let c = p.compare(&r);
                 let real = non_coplanar_mismatches(&case.scene, &p.ids, &r, &p.band);
                 let ties = c.mismatches_outside_band - real;
@@ -104,7 +107,9 @@ fn painter_agrees_with_ray_casting_and_the_f64_zbuffer_on_every_corpus_case() {
 fn simple_depth_sort_gets_pixels_wrong_against_ray_casting() {
     for case in [corpus::cyclic_quads(), corpus::interpenetrating_triangles()] {
         let p = paint(&case.scene, &case.camera, &exact(SortMode::Simple));
-        let r = p.reference(&case.scene, Method::RayCast, DepthFormat::F64);
+        let r = p
+            .reference(&case.scene, Method::RayCast, DepthFormat::F64)
+            .expect("reference renders");
         let c = p.compare(&r);
         eprintln!(
             "{:<28} simple vs raycast: {} outside the band",
@@ -124,8 +129,12 @@ fn scanline_equals_zbuffer_and_warnock_agrees_outside_the_band() {
     for case in corpus::all() {
         let p = paint(&case.scene, &case.camera, &exact(SortMode::Adaptive));
         for depth in DepthFormat::ALL {
-            let z = p.reference(&case.scene, Method::ZBuffer, depth);
-            let s = p.reference(&case.scene, Method::ScanLine, depth);
+            let z = p
+                .reference(&case.scene, Method::ZBuffer, depth)
+                .expect("reference renders");
+            let s = p
+                .reference(&case.scene, Method::ScanLine, depth)
+                .expect("reference renders");
             assert_eq!(
                 compare(&z, &s, None).mismatches,
                 0,
@@ -140,8 +149,12 @@ fn scanline_equals_zbuffer_and_warnock_agrees_outside_the_band() {
         assert_eq!(z.ids, s.ids, "{}: scan-line (own near/far)", case.name);
         assert_eq!(z.depth, s.depth, "{}: scan-line depths", case.name);
 
-        let z = p.reference(&case.scene, Method::ZBuffer, DepthFormat::F64);
-        let w = p.reference(&case.scene, Method::Warnock, DepthFormat::F64);
+        let z = p
+            .reference(&case.scene, Method::ZBuffer, DepthFormat::F64)
+            .expect("reference renders");
+        let w = p
+            .reference(&case.scene, Method::Warnock, DepthFormat::F64)
+            .expect("reference renders");
         let c = compare(&z, &w, Some(&p.band));
         let real = non_coplanar_mismatches(&case.scene, &z, &w, &p.band);
         eprintln!(
@@ -166,7 +179,9 @@ fn zbuffer_errors(case: &Case, p: &Painted, depth: DepthFormat, near_far: (f64, 
         ..p.ropts
     };
     let z = render(&case.scene, p.camera(), Method::ZBuffer, &opts).unwrap();
-    let r = p.reference(&case.scene, Method::RayCast, DepthFormat::F64);
+    let r = p
+        .reference(&case.scene, Method::RayCast, DepthFormat::F64)
+        .expect("reference renders");
     compare(&r, &z.ids, Some(&p.band)).mismatches_outside_band
 }
 
@@ -200,7 +215,9 @@ fn coarse_depth_buffers_fail_where_the_exact_painter_and_ray_casting_agree() {
     for (case, near_ratio, failing) in &cases {
         assert!(case.name == "tiny_angle" || case.name == "cyclic_translated_1e7");
         let p = paint(&case.scene, &case.camera, &exact(SortMode::Adaptive));
-        let r = p.reference(&case.scene, Method::RayCast, DepthFormat::F64);
+        let r = p
+            .reference(&case.scene, Method::RayCast, DepthFormat::F64)
+            .expect("reference renders");
         let c = p.compare(&r);
         assert_eq!(
             c.mismatches_outside_band, 0,
@@ -398,7 +415,7 @@ proptest! {
         for mode in EXACT_MODES {
             let oo = OrderOptions { cull: CullMode::Off, ..exact(mode) };
             let p = paint(&scene, &camera, &oo);
-            let r = p.reference(&scene, Method::RayCast, DepthFormat::F64);
+            let r = p.reference(&scene, Method::RayCast, DepthFormat::F64).expect("reference renders");
             let c = p.compare(&r);
             prop_assert_eq!(
                 c.mismatches_outside_band, 0,

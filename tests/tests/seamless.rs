@@ -1,7 +1,8 @@
 //! Painting the first piece of a split opaque face as the whole face ("seamless" mode)
 //! must not change which face is seen anywhere.
 
-use limn_depthsort::{order, picture, OrderOptions, SortMode, Style};
+use limn_depthsort::{order, OrderOptions, SortMode};
+use limn_paint::{covers, picture, Style};
 use limn_tests::corpus;
 use limn_zbuffer::{compare, default_band_tolerance, edge_band, rasterize_ids};
 
@@ -19,7 +20,10 @@ fn whole_face_covers_give_the_same_ids_as_the_fragments() {
                 },
             )
             .unwrap();
-            covered += o.fragments.iter().filter(|f| f.cover.is_some()).count();
+            covered += covers(&case.scene, &o)
+                .iter()
+                .filter(|c| c.is_some())
+                .count();
             let (w, h) = (o.camera.width, o.camera.height);
             let frags: Vec<(Vec<[f64; 2]>, u32)> = o
                 .fragments

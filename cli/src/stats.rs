@@ -1,0 +1,75 @@
+//! The `--stats` JSON object of `render` and `demo`.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use limn_depthsort::{OrderOptions, Ordered};
+use limn_scene::{Effects, Scene};
+use serde_json::json;
+
+use crate::output::write_atomic;
+
+/// Milliseconds spent per stage.
+pub struct Timing {
+    /// Loading (or building) the scene.
+    pub load: f64,
+    /// Ordering.
+    pub order: f64,
+    /// Writing.
+    pub write: f64,
+    /// Everything.
+    pub total: f64,
+}
+
+/// Writes the statistics of a run to `path` (nothing when `None`).
+pub fn write_stats(
+    path: &Option<PathBuf>,
+    scene: &Scene,
+    ordered: &Ordered,
+    oo: &OrderOptions,
+    paths_out: usize,
+    bytes: u64,
+    t: &Timing,
+) -> Result<()> {
+    let Some(path) = path else { return Ok(()) };
+    let s = &ordered.stats;
+    let effects = Effects::of(scene);
+    let mut effect_names: Vec<&str> = effects.names();
+    if s.faces_culled > 0 {
+        effect_names.push("backface-culling");
+    }
+    let v = json!({
+        "faces_in": s.faces_in,
+        "faces_culled": s.faces_culled,
+        "faces_degenerate": s.faces_degenerate,
+        "faces_clipped": s.faces_clipped,
+        "polygons": s.polygons,
+        "candidate_pairs": s.candidate_pairs,
+        "constraints": s.constraints,
+        "components": s.components,
+        "largest_component": s.largest_component,
+        "splits": s.splits,
+        "fragments_before_merge": s.fragments_before_merge,
+        "fragments_out": s.fragments_out,
+        "paths_out": paths_out,
+        "bytes_out": bytes,
+        "filter_fallbacks": s.filter_fallbacks,
+        "sort": oo.sort.name(),
+        "arith": oo.arith.name(),
+        "effects": effect_names,
+        "ms": {
+            "load": t.load,
+            "order": t.order,
+            "write": t.write,
+            "total": t.total,
+            "prepare": s.ms_prepare,
+            "sort": s.ms_order,
+            "merge": s.ms_merge,
+        },
+    });
+    let text = serde_json::to_string_pretty(&v)? + "\n";
+    write_atomic(path, |w| {
+        w.write_all(text.as_bytes())?;
+        Ok(())
+    })
+}
