@@ -52,9 +52,9 @@ mod compare;
 mod depth;
 mod error;
 mod exact;
+mod fragment_ids;
 mod image;
 mod lines;
-mod painter;
 mod png;
 mod raycast;
 mod render;
@@ -68,9 +68,9 @@ mod zbuf;
 pub use compare::{compare, default_band_tolerance, edge_band, Comparison, Segment2};
 pub use depth::DepthFormat;
 pub use error::ZError;
+pub use fragment_ids::rasterize_ids;
 pub use image::{rgb_to_u8, to_u8, ColorImage, DepthImage, IdImage, Mask, NO_FACE};
 pub use lines::{bresenham, dda, wireframe, LineAlgorithm, LineOptions};
-pub use painter::rasterize_ids;
 pub use png::{diff_png, id_color, save_diff_png};
 pub use render::{
     render, scene_edges, Method, ParseMethodError, Raster, RenderOptions, RenderStats,
