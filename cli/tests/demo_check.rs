@@ -26,6 +26,26 @@ fn demo_writes_the_named_svg() {
     assert!(!d.path().join("demo.svg").exists());
 }
 
+/// The demo's SVG, byte for byte: a change to the ordering, the kernel or the writers
+/// that moves anything in the picture shows here. After an intended change, regenerate
+/// with `cargo run --release -- demo -o cli/tests/golden/demo.svg` and say why in the
+/// commit.
+#[test]
+fn demo_svg_is_unchanged() {
+    let d = tempdir();
+    let run = limn(d.path(), &["demo", "-o", "x.svg"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let got = std::fs::read(d.path().join("x.svg")).unwrap();
+    let want = include_bytes!("golden/demo.svg");
+    assert!(
+        got == want,
+        "the demo SVG changed ({} bytes, golden {}); regenerate cli/tests/golden/demo.svg \
+         if the change is intended",
+        got.len(),
+        want.len()
+    );
+}
+
 #[test]
 fn demo_without_output_writes_demo_svg_in_the_current_folder() {
     let d = tempdir();
