@@ -12,7 +12,7 @@
 //! | [`Plane::point_normal`]`(p, n)` | `n` | `−n·p` |
 //!
 //! The front of the plane is where `n·x + d > 0`. Each plane carries its coefficients as
-//! f64 midpoints with proven error radii (computed once, in interval arithmetic), which
+//! f64 values with proven error bounds (computed once, in f64 with a-priori bounds), which
 //! the filters read; the exact coefficients are recomputed as dyadic numbers only when a
 //! filter cannot decide. Planes are shared (`Arc`) between the pieces a split makes, so
 //! cloning a polygon copies no coefficients.
@@ -95,36 +95,6 @@ impl fmt::Debug for Plane {
     }
 }
 
-/// Radius of `[lo, hi]` around its midpoint, for a vector of intervals.
-fn mid_rad3(v: [Interval; 3]) -> ([f64; 3], f64) {
-    let mut mid = [0.0; 3];
-    let mut rad: f64 = 0.0;
-    for i in 0..3 {
-        let (m, r) = v[i].mid_rad();
-        mid[i] = m;
-        rad = rad.max(r);
-    }
-    (mid, rad)
-}
-
-fn ipoint(p: [f64; 3]) -> [Interval; 3] {
-    p.map(Interval::point)
-}
-
-fn isub(a: [Interval; 3], b: [Interval; 3]) -> [Interval; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-/// `w × e_k` for interval or exact vectors, written once through a closure-free match.
-fn cross_axis_iv(w: [Interval; 3], k: u8) -> [Interval; 3] {
-    let z = Interval::point(0.0);
-    match k {
-        0 => [z, w[2], -w[1]],
-        1 => [-w[2], z, w[0]],
-        _ => [w[1], -w[0], z],
-    }
-}
-
 fn cross_axis_exact(w: &[Dyadic; 3], k: u8) -> [Dyadic; 3] {
     match k {
         0 => [Dyadic::zero(), w[2].clone(), -&w[1]],
@@ -137,25 +107,84 @@ fn dsub(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
     [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
 }
 
+/// `2^-53`, the unit roundoff.
+const U: f64 = 1.0 / 9_007_199_254_740_992.0;
+/// Relative slack of the a-priori bounds: each covered quantity suffers at most four
+/// roundings (`γ₄ < 4.01u`); twice that is used.
+const REL: f64 = 8.0 * U;
+/// Absolute slack for results in the subnormal range (`2^-1060`).
+const ETA: f64 = f64::from_bits(1 << 14);
+/// Covers the roundings made while computing a bound.
+const SAFETY: f64 = 1.0 + 1.0 / 1_073_741_824.0;
+
+/// A bound that is infinite unless finite (a NaN or an overflow makes every filter
+/// undecided, so the exact path decides).
+#[inline]
+fn finite_or_inf(e: f64) -> f64 {
+    if e.is_finite() {
+        e
+    } else {
+        f64::INFINITY
+    }
+}
+
 impl PlaneDef {
-    /// The normal and offset as intervals.
-    fn intervals(&self) -> ([Interval; 3], Interval) {
-        let (n, p) = match *self {
+    /// Approximate coefficients and proven bounds `(ñ, d̃, e_n, e_d)` with
+    /// `|nᵢ − ñᵢ| ≤ e_n` and `|d − d̃| ≤ e_d`, in plain f64 with a-priori bounds:
+    ///
+    /// * a difference `q − p` is rounded once (relative error `u`);
+    /// * a cross-product component `a·b − c·d` of rounded differences differs from the
+    ///   exact one by at most `γ₄ · (|a·b| + |c·d|)` (two input roundings, the product,
+    ///   the difference);
+    /// * `d̃ = −fl(ñ·p)` differs from `−n·p` by at most `e_n·Σ|pᵢ| + γ₄·Σ|ñᵢpᵢ|`;
+    ///
+    /// each with `2γ₄` and an absolute `2^-1060` for subnormal results, times a safety
+    /// factor for the bound's own roundings. This is the hot path of face conversion
+    /// (interval arithmetic, used for implicit vertices, costs about three times more);
+    /// a unit test checks the bounds against the exact dyadic coefficients.
+    fn approximate(&self) -> ([f64; 3], f64, f64, f64) {
+        let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+        let (n, err_n, p) = match *self {
             PlaneDef::Through([p, q, r]) => {
-                let pi = ipoint(p);
-                let u = isub(ipoint(q), pi);
-                let v = isub(ipoint(r), pi);
-                (interval::cross(u, v), pi)
+                let (u, v) = (sub(q, p), sub(r, p));
+                let n = [
+                    u[1] * v[2] - u[2] * v[1],
+                    u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0],
+                ];
+                let m = [
+                    (u[1] * v[2]).abs() + (u[2] * v[1]).abs(),
+                    (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
+                    (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
+                ];
+                let e = (REL * m[0].max(m[1]).max(m[2]) + ETA) * SAFETY;
+                (n, e, p)
             }
             PlaneDef::Edge { p, q, k, flip } => {
-                let pi = ipoint(p);
-                let n = cross_axis_iv(isub(ipoint(q), pi), k);
-                (if flip { n.map(|x| -x) } else { n }, pi)
+                let w = sub(q, p);
+                let s = if flip { -1.0 } else { 1.0 };
+                let n = match k {
+                    0 => [0.0, s * w[2], -s * w[1]],
+                    1 => [-s * w[2], 0.0, s * w[0]],
+                    _ => [s * w[1], -s * w[0], 0.0],
+                };
+                let e = (REL * w[0].abs().max(w[1].abs()).max(w[2].abs()) + ETA) * SAFETY;
+                (n, e, p)
             }
-            PlaneDef::PointNormal { p, n } => (ipoint(n), ipoint(p)),
+            PlaneDef::PointNormal { p, n } => (n, 0.0, p),
         };
-        let d = -interval::dot(n, p);
-        (n, d)
+        let t = [n[0] * p[0], n[1] * p[1], n[2] * p[2]];
+        let d = -(t[0] + t[1] + t[2]);
+        let err_d = (err_n * (p[0].abs() + p[1].abs() + p[2].abs())
+            + REL * (t[0].abs() + t[1].abs() + t[2].abs())
+            + ETA)
+            * SAFETY;
+        let ok = n.iter().all(|v| v.is_finite()) && d.is_finite();
+        if ok {
+            (n, d, finite_or_inf(err_n), finite_or_inf(err_d))
+        } else {
+            (n, d, f64::INFINITY, f64::INFINITY)
+        }
     }
 
     /// The exact normal and offset.
@@ -222,9 +251,7 @@ fn c3(p: [f64; 3]) -> robust::Coord3D<f64> {
 
 impl Plane {
     fn from_def(def: PlaneDef) -> Plane {
-        let (n, d) = def.intervals();
-        let (mid_n, err_n) = mid_rad3(n);
-        let (mid_d, err_d) = d.mid_rad();
+        let (mid_n, mid_d, err_n, err_d) = def.approximate();
         Plane {
             data: Arc::new(PlaneData {
                 def,
@@ -306,7 +333,7 @@ impl Plane {
         }
     }
 
-    /// The approximate coefficients `[a, b, c, d]` (midpoints of proven intervals; see
+    /// The approximate coefficients `[a, b, c, d]` (with proven bounds; see
     /// [`Plane::error_bounds`]).
     #[inline]
     pub fn approx(&self) -> [f64; 4] {
@@ -541,6 +568,49 @@ mod tests {
             q.side_of([1.0, 1.0, big * (1.0 + f64::EPSILON)]),
             Side::Front
         );
+    }
+
+    /// The a-priori bounds enclose the exact coefficients (checked against the exact
+    /// dyadic values).
+    #[test]
+    fn a_priori_bounds_enclose_the_exact_coefficients() {
+        let mut x = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let m = (x >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            let e = ((x >> 3) % 40) as i32 - 20;
+            m * 2f64.powi(e)
+        };
+        for round in 0..2000u32 {
+            let p = [next(), next(), next()];
+            let q = [next(), next(), next()];
+            let r = [next(), next(), next()];
+            for def in [
+                PlaneDef::Through([p, q, r]),
+                PlaneDef::Edge {
+                    p,
+                    q,
+                    k: (round % 3) as u8,
+                    flip: round % 2 == 0,
+                },
+                PlaneDef::PointNormal { p, n: q },
+            ] {
+                let (n, d, en, ed) = def.approximate();
+                let (ne, de) = def.exact();
+                let within = |approx: f64, err: f64, exact: &Dyadic| {
+                    let lo = Dyadic::from_f64((approx - err).next_down());
+                    let hi = Dyadic::from_f64((approx + err).next_up());
+                    (&lo - exact).signum() != Ordering::Greater
+                        && (&hi - exact).signum() != Ordering::Less
+                };
+                for i in 0..3 {
+                    assert!(within(n[i], en, &ne[i]), "{def:?} normal {i}");
+                }
+                assert!(within(d, ed, &de), "{def:?} offset");
+            }
+        }
     }
 
     #[test]
