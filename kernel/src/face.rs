@@ -145,6 +145,15 @@ pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, Kern
     if g.len() < 3 {
         return Ok(Vec::new());
     }
+    if g.len() == 3 {
+        // A triangle of three distinct corners is exactly planar, and when its normal is
+        // not zero it is strictly convex in the projection along any axis where the
+        // normal's component is not zero: no check needed.
+        return Ok(match Plane::through(g[0], g[1], g[2]) {
+            Ok(support) => vec![convex_polygon(&g, support, &[true; 3])],
+            Err(_) => Vec::new(),
+        });
+    }
     let n = g.len();
     let p0 = g[0];
     // Approximate Newell normal (a choice of fan triangle and projection only; every
@@ -170,7 +179,51 @@ pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, Kern
             break;
         }
     }
+    if g.len() == 4 {
+        if let Some(polys) = quad_triangles(&g, newell) {
+            return Ok(polys);
+        }
+    }
     triangulated(&g, newell)
+}
+
+/// A quad that is not one convex planar polygon, as two triangles along a diagonal whose
+/// triangles both turn the way of the (approximate) Newell normal in the projection along
+/// its dominant axis, decided exactly: the diagonal `p₀p₂` first, then `p₁p₃`. `None`
+/// when neither works (a self-intersecting or degenerate outline), for the general path.
+fn quad_triangles(g: &[P3], newell: P3) -> Option<Vec<ExactPolygon>> {
+    let m = newell.map(f64::abs);
+    let k = if m[0] >= m[1] && m[0] >= m[2] {
+        0
+    } else if m[1] >= m[2] {
+        1
+    } else {
+        2
+    };
+    let want = if newell[k] > 0.0 {
+        Ordering::Greater
+    } else if newell[k] < 0.0 {
+        Ordering::Less
+    } else {
+        return None;
+    };
+    for (a, b, c, d) in [(0, 1, 2, 3), (1, 2, 3, 0)] {
+        if orient_k(g[a], g[b], g[c], k) == want && orient_k(g[a], g[c], g[d], k) == want {
+            let (Ok(s1), Ok(s2)) = (
+                Plane::through(g[a], g[b], g[c]),
+                Plane::through(g[a], g[c], g[d]),
+            ) else {
+                return None;
+            };
+            // Edges: a→b, b→c original, c→a the diagonal; a→c the diagonal, c→d, d→a
+            // original.
+            return Some(vec![
+                convex_polygon(&[g[a], g[b], g[c]], s1, &[true, true, false]),
+                convex_polygon(&[g[a], g[c], g[d]], s2, &[false, true, true]),
+            ]);
+        }
+    }
+    None
 }
 
 /// The single-polygon path: exact planarity check, collinear removal, convexity check.
