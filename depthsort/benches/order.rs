@@ -34,6 +34,32 @@ fn torus() -> Scene {
     s
 }
 
+/// Two intersecting plot surfaces of `n × n` quads each over [-1, 1]²: z = 0.4·sin(2x)·
+/// cos(2y) and z = 0.3·(x − y)/2 (what 3D plotting libraries hand over: quads, most of
+/// them not exactly planar in f64).
+fn surfaces(n: usize) -> Scene {
+    let mut s = Scene::default();
+    let a = s.add_material(Material::diffuse("wave", [0.8, 0.4, 0.2]));
+    let b = s.add_material(Material::diffuse("plane", [0.2, 0.5, 0.8]));
+    let o = s.add_object("surfaces");
+    let at = |i: usize| -1.0 + 2.0 * i as f64 / n as f64;
+    type Height = fn(f64, f64) -> f64;
+    let fs: [(u32, Height); 2] = [
+        (a, |x, y| 0.4 * (2.0 * x).sin() * (2.0 * y).cos()),
+        (b, |x, y| 0.15 * (x - y)),
+    ];
+    for (m, f) in fs {
+        for i in 0..n {
+            for j in 0..n {
+                let p = |i: usize, j: usize| DVec3::new(at(i), at(j), f(at(i), at(j)));
+                let quad = [p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)];
+                s.add_polygon(&quad, m, o).expect("valid");
+            }
+        }
+    }
+    s
+}
+
 /// Peak resident memory since the last reset, in MB (Linux; 0 elsewhere).
 fn peak_mb() -> f64 {
     let s = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
@@ -99,6 +125,11 @@ fn main() {
         ),
         ("sphere 10k", sphere(50, 100), SortMode::ALL.to_vec()),
         ("torus 10k", torus(), SortMode::ALL.to_vec()),
+        (
+            "surfaces 2×100²",
+            surfaces(100),
+            vec![SortMode::Adaptive, SortMode::Bsp, SortMode::Simple],
+        ),
     ];
     if !quick {
         scenes.push((
