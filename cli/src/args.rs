@@ -2,8 +2,11 @@
 
 use std::path::PathBuf;
 
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::error::ErrorKind;
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
+use limn_depthsort::{Arith, CullMode, SortMode};
+use limn_paint::Format;
 
 /// Draw 3D polygon scenes as resolution-independent pictures with hidden surfaces
 /// removed exactly.
@@ -58,50 +61,31 @@ pub enum Command {
     Check(CheckArgs),
 }
 
-/// Output formats.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum FormatArg {
-    /// Scalable Vector Graphics.
-    Svg,
-    /// PDF, one page.
-    Pdf,
-    /// Encapsulated PostScript.
-    Eps,
-    /// PNG raster (anti-aliased).
-    Png,
+/// A parser for a library enum that names its values (`ALL`, `name`, `from_name`): the
+/// command accepts exactly the library's names, with no second list to keep in step.
+fn named<T: Copy + Send + Sync + 'static>(
+    all: &'static [T],
+    name: fn(T) -> &'static str,
+    from_name: fn(&str) -> Option<T>,
+) -> impl TypedValueParser<Value = T> {
+    PossibleValuesParser::new(all.iter().map(|&v| name(v)))
+        .try_map(move |s| from_name(&s).ok_or("not a name the library knows"))
 }
 
-/// Visibility orderings.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum SortArg {
-    /// Exact pairwise order, splitting only cycles (default).
-    Adaptive,
-    /// Fuchs–Kedem–Naylor BSP tree.
-    Bsp,
-    /// Newell–Newell–Sancha depth sort.
-    Newell,
-    /// One depth per polygon (wrong on hard cases; a baseline).
-    Simple,
+fn sort_parser() -> impl TypedValueParser<Value = SortMode> {
+    named(&SortMode::ALL, SortMode::name, SortMode::from_name)
 }
 
-/// Kernels.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ArithArg {
-    /// Exact plane-based predicates (default).
-    Exact,
-    /// f64 with an epsilon (a baseline).
-    Float,
+fn arith_parser() -> impl TypedValueParser<Value = Arith> {
+    named(&Arith::ALL, Arith::name, Arith::from_name)
 }
 
-/// Back-face culling.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CullArg {
-    /// Cull back faces of closed, opaque objects (default).
-    Auto,
-    /// Cull every back face.
-    On,
-    /// Keep every back face.
-    Off,
+fn cull_parser() -> impl TypedValueParser<Value = CullMode> {
+    named(&CullMode::ALL, CullMode::name, CullMode::from_name)
+}
+
+fn format_parser() -> impl TypedValueParser<Value = Format> {
+    named(&Format::ALL, Format::name, Format::from_name)
 }
 
 /// Image-space methods.
@@ -139,15 +123,19 @@ pub struct ViewArgs {
     /// Vertical field of view in degrees [default: 45].
     #[arg(long, value_name = "DEG", value_parser = parse_fov)]
     pub fov: Option<f64>,
-    /// Visibility ordering [default: adaptive, or the scene file's].
-    #[arg(long, value_enum)]
-    pub sort: Option<SortArg>,
-    /// Arithmetic of the geometric decisions [default: exact, or the scene file's].
-    #[arg(long, value_enum)]
-    pub arith: Option<ArithArg>,
-    /// Back-face culling [default: auto, or the scene file's].
-    #[arg(long, value_enum)]
-    pub cull: Option<CullArg>,
+    /// Visibility ordering: adaptive (exact pairwise order, splitting only cycles), bsp,
+    /// newell, or simple (one depth per polygon, a baseline) [default: adaptive, or the
+    /// scene file's].
+    #[arg(long, value_parser = sort_parser())]
+    pub sort: Option<SortMode>,
+    /// Arithmetic of the geometric decisions: exact, or float (an epsilon, the
+    /// baseline) [default: exact, or the scene file's].
+    #[arg(long, value_parser = arith_parser())]
+    pub arith: Option<Arith>,
+    /// Back-face culling: auto (closed opaque objects), on, off [default: auto, or the
+    /// scene file's].
+    #[arg(long, value_parser = cull_parser())]
+    pub cull: Option<CullMode>,
     /// Follow references (MTL, buffers, meshes) that lead outside the input's folder.
     #[arg(long)]
     pub allow_outside: bool,
@@ -168,8 +156,8 @@ pub struct RenderArgs {
     #[arg(short, long, value_name = "OUTPUT")]
     pub output: Option<PathBuf>,
     /// Output format [default: from OUTPUT's extension, else svg].
-    #[arg(long, value_enum)]
-    pub format: Option<FormatArg>,
+    #[arg(long, value_parser = format_parser())]
+    pub format: Option<Format>,
     /// Stroke the original model edges (never the cuts).
     #[arg(long)]
     pub outline: bool,

@@ -7,7 +7,7 @@ use anyhow::{bail, Context, Result};
 use limn_depthsort::order;
 use limn_paint::{painter_for, picture, Format, Outline, Style};
 
-use crate::args::{FormatArg, MethodArg, RenderArgs};
+use crate::args::{MethodArg, RenderArgs};
 use crate::output::write_atomic;
 use crate::progress::Progress;
 use crate::raster::raster;
@@ -22,12 +22,7 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     let cam = camera(&loaded.scene, &a.view, loaded.opts.size, &a.input)?;
     let oo = order_options(&a.view, &loaded.opts)?;
     let output = a.output.clone().unwrap_or_else(|| {
-        let ext = a.format.map_or("svg", |f| match f {
-            FormatArg::Svg => "svg",
-            FormatArg::Pdf => "pdf",
-            FormatArg::Eps => "eps",
-            FormatArg::Png => "png",
-        });
+        let ext = a.format.map_or("svg", Format::name);
         a.input.with_extension(ext)
     });
     let format = match (a.format, &loaded.opts.format, &a.output) {

@@ -10,7 +10,7 @@ use limn_paint::Format;
 use limn_scene::load::{load_scene_file, LoadError, LoadOptions, SceneOptions};
 use limn_scene::{Camera, Scene};
 
-use crate::args::{ArithArg, CullArg, FormatArg, SortArg, ViewArgs};
+use crate::args::ViewArgs;
 
 /// A loaded scene with the options its file gave (all unset for mesh files).
 pub struct Loaded {
@@ -120,10 +120,7 @@ pub fn camera(
 /// The ordering options: flags first, then the scene file's, then the defaults.
 pub fn order_options(view: &ViewArgs, file: &SceneOptions) -> Result<OrderOptions> {
     let sort = match view.sort {
-        Some(SortArg::Adaptive) => SortMode::Adaptive,
-        Some(SortArg::Bsp) => SortMode::Bsp,
-        Some(SortArg::Newell) => SortMode::Newell,
-        Some(SortArg::Simple) => SortMode::Simple,
+        Some(s) => s,
         None => match &file.sort {
             Some(s) => SortMode::from_name(s)
                 .with_context(|| format!("unknown sort `{s}` in the scene file"))?,
@@ -131,8 +128,7 @@ pub fn order_options(view: &ViewArgs, file: &SceneOptions) -> Result<OrderOption
         },
     };
     let arith = match view.arith {
-        Some(ArithArg::Exact) => Arith::Exact,
-        Some(ArithArg::Float) => Arith::Float,
+        Some(a) => a,
         None => match &file.arith {
             Some(s) => Arith::from_name(s)
                 .with_context(|| format!("unknown arith `{s}` in the scene file"))?,
@@ -140,9 +136,7 @@ pub fn order_options(view: &ViewArgs, file: &SceneOptions) -> Result<OrderOption
         },
     };
     let cull = match view.cull {
-        Some(CullArg::Auto) => CullMode::Auto,
-        Some(CullArg::On) => CullMode::On,
-        Some(CullArg::Off) => CullMode::Off,
+        Some(c) => c,
         None => match &file.cull {
             Some(s) => CullMode::from_name(s)
                 .with_context(|| format!("unknown cull `{s}` in the scene file"))?,
@@ -158,14 +152,9 @@ pub fn order_options(view: &ViewArgs, file: &SceneOptions) -> Result<OrderOption
 }
 
 /// The output format: the flag, else OUTPUT's extension (SVG for `-` or none).
-pub fn format_of(output: &Path, flag: Option<FormatArg>) -> Result<Format> {
+pub fn format_of(output: &Path, flag: Option<Format>) -> Result<Format> {
     if let Some(f) = flag {
-        return Ok(match f {
-            FormatArg::Svg => Format::Svg,
-            FormatArg::Pdf => Format::Pdf,
-            FormatArg::Eps => Format::Eps,
-            FormatArg::Png => Format::Png,
-        });
+        return Ok(f);
     }
     if output.as_os_str() == "-" {
         return Ok(Format::Svg);

@@ -80,6 +80,9 @@ impl Arith {
             Arith::Float => "float",
         }
     }
+
+    /// Both kernels.
+    pub const ALL: [Arith; 2] = [Arith::Exact, Arith::Float];
 }
 
 /// Back-face culling.
@@ -106,6 +109,18 @@ impl CullMode {
             _ => None,
         }
     }
+
+    /// The name accepted by [`CullMode::from_name`].
+    pub fn name(self) -> &'static str {
+        match self {
+            CullMode::Auto => "auto",
+            CullMode::On => "on",
+            CullMode::Off => "off",
+        }
+    }
+
+    /// Every mode.
+    pub const ALL: [CullMode; 3] = [CullMode::Auto, CullMode::On, CullMode::Off];
 }
 
 /// Options of [`crate::order`].
