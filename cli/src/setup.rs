@@ -6,8 +6,8 @@ use std::path::Path;
 use anyhow::{bail, Context, Result};
 use glam::DVec3;
 use limn_depthsort::{Arith, CullMode, OrderOptions, SortMode};
+use limn_load::{load_scene_file, LoadError, LoadOptions, SceneOptions};
 use limn_paint::Format;
-use limn_scene::load::{load_scene_file, LoadError, LoadOptions, SceneOptions};
 use limn_scene::{Camera, Scene};
 
 use crate::args::ViewArgs;
@@ -32,7 +32,7 @@ pub fn load(path: &Path, view: &ViewArgs) -> Result<Loaded> {
         let (scene, opts) = load_scene_file(path, &opts).map_err(explain)?;
         Loaded { scene, opts }
     } else {
-        let scene = limn_scene::load::load(path, &opts).map_err(explain)?;
+        let scene = limn_load::load(path, &opts).map_err(explain)?;
         Loaded {
             scene,
             opts: SceneOptions::default(),

@@ -1,4 +1,5 @@
-//! Scene model, camera, lights, materials and shading for limn, plus the file loaders.
+//! Scene model, camera, lights, materials and shading for limn (the file loaders are in
+//! `limn-load`).
 //!
 //! A [`Scene`] is a flat list of polygonal [`Face`]s over a shared vertex array, in world
 //! coordinates. Every face keeps its index in the input order: that index is the *face
@@ -22,11 +23,10 @@
 //! ```
 
 mod camera;
-pub mod load;
 mod model;
 mod shade;
 pub mod shapes;
 
-pub use camera::{Camera, CameraError, Projected};
+pub use camera::{Camera, CameraError, Projected, DEFAULT_VIEW_DIRECTION};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
 pub use shade::{interpolated_normal, polygon_normal, shade_face, shade_point, Effects, Rgb};

@@ -6,7 +6,7 @@ mod common;
 use std::path::{Path, PathBuf};
 
 use common::*;
-use limn_scene::load::{load_bytes, Format, LoadOptions};
+use limn_load::{load_bytes, Format, LoadOptions};
 use proptest::prelude::*;
 
 const FORMATS: [(Format, &str); 6] = [

@@ -26,7 +26,7 @@ use ::gltf::Document;
 use glam::DMat4;
 
 use super::{check_u32, transform, LoadError, LoadOptions, Location};
-use crate::{Face, Material, Scene};
+use limn_scene::{Face, Material, Scene};
 
 /// Extensions a file may require and still be drawn correctly (they only add material
 /// or texture detail that limn does not use).

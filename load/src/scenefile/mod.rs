@@ -54,7 +54,7 @@ use toml::Spanned;
 
 use self::doc::{ColourDoc, Doc, MeshDoc, RotateDoc, ScaleDoc, V3};
 use super::{refs, transform, Format, LoadError, LoadOptions, Location};
-use crate::Scene;
+use limn_scene::Scene;
 
 /// The output part of a scene file, for the command that renders it. `None` means the
 /// file does not say (the renderer's default applies). The enumerated settings are

@@ -10,7 +10,7 @@ use std::io::Write;
 use std::path::Path;
 use std::time::{Duration, Instant};
 
-use limn_scene::load::{load, LoadOptions};
+use limn_load::{load, LoadOptions};
 
 const RINGS: usize = 1000;
 const SIDES: usize = 500;

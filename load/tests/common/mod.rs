@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use base64::Engine as _;
-use limn_scene::load::{load, LoadError, LoadOptions};
+use limn_load::{load, LoadError, LoadOptions};
 use limn_scene::Scene;
 
 /// A fresh temporary folder.

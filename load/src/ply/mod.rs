@@ -30,7 +30,7 @@ use self::header::{Element, Kind};
 use self::source::Source;
 use super::text::BitsMap;
 use super::{check_u32, stem, LoadError, Location};
-use crate::{Face, Material, Scene};
+use limn_scene::{Face, Material, Scene};
 
 const RED: &[&str] = &["red", "diffuse_red", "r"];
 const GREEN: &[&str] = &["green", "diffuse_green", "g"];

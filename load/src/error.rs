@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use crate::{CameraError, SceneError};
+use limn_scene::{CameraError, SceneError};
 
 /// Where in an input file a problem was found: the file, and for text formats the
 /// 1-based line; for binary formats a record such as `triangle 17` (numbered from 1)

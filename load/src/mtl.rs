@@ -13,7 +13,7 @@ use std::path::Path;
 
 use super::text::{lossy, number, rest_after_keyword, strip_comment, tokens, Lines};
 use super::{LoadError, Location};
-use crate::Material;
+use limn_scene::Material;
 
 /// Materials by name, in the order of definition (later definitions replace earlier
 /// ones of the same name).

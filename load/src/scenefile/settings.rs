@@ -5,9 +5,9 @@ use toml::Spanned;
 
 use super::doc::{self, lower, Doc, LightKindDoc, SizeDoc, V3};
 use super::{Ctx, SceneOptions};
-use crate::camera::DEFAULT_VIEW_DIRECTION;
-use crate::load::LoadError;
-use crate::{Camera, Light, LightKind, Scene};
+use crate::LoadError;
+use limn_scene::DEFAULT_VIEW_DIRECTION;
+use limn_scene::{Camera, Light, LightKind, Scene};
 
 pub(super) fn light(cx: &Ctx, l: &Spanned<doc::LightDoc>) -> Result<Light, LoadError> {
     let d = l.get_ref();
@@ -139,7 +139,7 @@ pub(super) fn camera(
         None => {
             let (lo, hi) = scene
                 .bounds()
-                .ok_or_else(|| cam_err(crate::CameraError::EmptyScene))?;
+                .ok_or_else(|| cam_err(limn_scene::CameraError::EmptyScene))?;
             let dir = DVec3::from(DEFAULT_VIEW_DIRECTION);
             let mut cam =
                 Camera::framing_bounds(lo, hi, dir, fov, width, height).map_err(cam_err)?;
@@ -158,12 +158,12 @@ pub(super) fn camera(
     cam.far = d.far;
     if let (Some(n), None) = (cam.near, cam.far) {
         if !(n > 0.0 && n.is_finite()) {
-            return Err(cam_err(crate::CameraError::BadClip(n, f64::NAN)));
+            return Err(cam_err(limn_scene::CameraError::BadClip(n, f64::NAN)));
         }
     }
     if let (None, Some(f)) = (cam.near, cam.far) {
         if !(f > 0.0 && f.is_finite()) {
-            return Err(cam_err(crate::CameraError::BadClip(f64::NAN, f)));
+            return Err(cam_err(limn_scene::CameraError::BadClip(f64::NAN, f)));
         }
     }
     cam.validate().map_err(cam_err)?;

@@ -22,7 +22,7 @@ use glam::DVec3;
 use super::mtl::{self, Library};
 use super::text::{lossy, number, parse_i64, rest_after_keyword, strip_comment, tokens, Lines};
 use super::{check_u32, refs, stem, LoadError, LoadOptions, Location};
-use crate::{Face, Material, Scene};
+use limn_scene::{Face, Material, Scene};
 
 /// Statements accepted and ignored.
 const IGNORED: &[&[u8]] = &[

@@ -5,7 +5,7 @@
 mod common;
 
 use common::*;
-use limn_scene::load::LoadError;
+use limn_load::LoadError;
 
 const TRI_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 

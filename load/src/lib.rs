@@ -9,14 +9,14 @@
 //! Face ids: faces appear in [`Scene::faces`] in the order the file gives them.
 //!
 //! ```no_run
-//! use limn_scene::load::{load, LoadOptions};
+//! use limn_load::{load, LoadOptions};
 //! use std::path::Path;
 //!
 //! let scene = load(Path::new("bunny.obj"), &LoadOptions::default())?;
 //! for w in &scene.warnings {
 //!     eprintln!("warning: {w}");
 //! }
-//! # Ok::<(), limn_scene::load::LoadError>(())
+//! # Ok::<(), limn_load::LoadError>(())
 //! ```
 
 mod error;
@@ -35,7 +35,7 @@ use std::path::Path;
 pub use error::{LoadError, Location};
 pub use scenefile::{load_scene_file, SceneOptions};
 
-use crate::Scene;
+use limn_scene::Scene;
 
 /// Options for every loader.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

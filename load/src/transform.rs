@@ -2,7 +2,7 @@
 
 use glam::{DMat3, DMat4, DVec3};
 
-use crate::Scene;
+use limn_scene::Scene;
 
 /// Applies the affine transform `m` to the vertices from `first_vertex` on and the
 /// normals from `first_normal` on, and, when `m` mirrors (negative determinant),
@@ -57,7 +57,7 @@ pub(crate) fn vertices_finite(scene: &Scene, first_vertex: usize) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::Material;
+    use limn_scene::Material;
 
     #[test]
     fn mirror_flips_winding_and_keeps_normals_unit() {
@@ -77,7 +77,7 @@ mod tests {
         assert_eq!(s.faces[0].vertices, vec![2, 1, 0]);
         assert_eq!(s.vertices[1], DVec3::new(-2.0, 0.0, 0.0));
         assert!((s.normals[0] - DVec3::Z).length() < 1e-15);
-        let n = crate::polygon_normal(&s.face_points(0));
+        let n = limn_scene::polygon_normal(&s.face_points(0));
         assert!(n.z > 0.0, "the face still faces +z");
     }
 }

@@ -4,7 +4,7 @@ mod common;
 
 use common::*;
 use glam::DVec3;
-use limn_scene::load::{load, LoadOptions};
+use limn_load::{load, LoadOptions};
 use limn_scene::{Material, Scene};
 
 fn face_points(s: &Scene, f: usize) -> Vec<DVec3> {

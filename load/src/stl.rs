@@ -19,7 +19,7 @@ use glam::DVec3;
 
 use super::text::{lossy, parse_f64, position_key, rest_after_keyword, tokens, BitsMap, Lines};
 use super::{check_u32, stem, LoadError, Location};
-use crate::{Face, Material, Scene};
+use limn_scene::{Face, Material, Scene};
 
 const HEADER: usize = 84;
 const RECORD: usize = 50;

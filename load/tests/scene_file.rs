@@ -4,7 +4,7 @@ mod common;
 
 use common::*;
 use glam::DVec3;
-use limn_scene::load::{load, load_scene_file, LoadError, LoadOptions, SceneOptions};
+use limn_load::{load, load_scene_file, LoadError, LoadOptions, SceneOptions};
 use limn_scene::LightKind;
 
 const TRI: &str = "o tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
