@@ -76,18 +76,6 @@ fn make_cut(k: &ExactKernel, poly: &ExactPolygon, c: &Cut) -> Option<Plane> {
     }
 }
 
-/// The classification from the rational reference.
-fn reference_classify(poly: &ExactPolygon, h: &Plane) -> PolygonSide {
-    let sides: Vec<Side> = (0..poly.len()).map(|i| vertex_side(poly, i, h)).collect();
-    match (sides.contains(&Side::Front), sides.contains(&Side::Back)) {
-        (true, true) => PolygonSide::Spanning,
-        (true, false) => PolygonSide::Front,
-        (false, true) => PolygonSide::Back,
-        _ if poly.support().same_facing(h) => PolygonSide::Coplanar,
-        _ => PolygonSide::CoplanarOpposite,
-    }
-}
-
 /// All checks of one split; returns the pieces.
 fn checked_split(
     k: &ExactKernel,
@@ -166,7 +154,27 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(40))]
+    #![proptest_config(ProptestConfig::with_cases(150))]
+
+    /// Raw f64 triangles (any magnitude from 1e-300 to 1e300, values a few ulps from
+    /// simple ones) through chains of cuts: every check after every split.
+    #[test]
+    fn raw_triangles(tri in [world_point(), world_point(), world_point()], cuts in prop::collection::vec(cut(), 1..5)) {
+        let k = kernel();
+        let corners = tri.map(glam::DVec3::from_array);
+        for poly in k.face_polygons(&corners).unwrap() {
+            let mut p = poly;
+            for c in &cuts {
+                let Some(h) = make_cut(&k, &p, c) else { continue };
+                let (f, b) = checked_split(&k, &p, &h);
+                p = f.or(b).unwrap();
+            }
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(30))]
 
     /// 100 splits in a row: every check after every split, and every plane of the result
     /// is an input plane (so no number ever grows beyond the input bounds; overflow checks

@@ -1,10 +1,17 @@
 //! Shared helpers for the integration tests: an arbitrary-precision reference
 //! (num-rational on the planes' definitions, independent of the kernel's arithmetic) and
 //! generators biased toward degenerate inputs.
+//!
+//! Every f64 enters the reference as its exact `BigRational`. Input points are evaluated
+//! in rationals; implicit vertices (intersections of three planes) are evaluated
+//! homogeneously in integers, each plane's rational coefficients multiplied by a positive
+//! power of two (no gcd on numbers of thousands of bits, which is what made a rational
+//! Cramer's rule slow at 1e±300).
 
 #![allow(dead_code)]
 
-use limn_kernel::{ExactPolygon, Plane, PlaneDef, Side};
+use limn_kernel::{ExactPolygon, Plane, PlaneDef, PolygonSide, Side};
+use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
@@ -66,33 +73,121 @@ pub fn coefficients(pl: &Plane) -> (RPoint, BigRational) {
     }
 }
 
-/// The intersection of three planes by Cramer's rule in rationals (`None` if they do not
-/// meet in one point).
-pub fn intersect(planes: &[Plane; 3]) -> Option<RPoint> {
-    let rows: Vec<(RPoint, BigRational)> = planes
-        .iter()
-        .map(|p| {
-            let (n, d) = coefficients(p);
-            (n, -d)
-        })
-        .collect();
-    let det3 = |m: [[BigRational; 3]; 3]| -> BigRational {
-        &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1])
-            - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
-            + &m[0][2] * (&m[1][0] * &m[2][1] - &m[1][1] * &m[2][0])
+/// Whether a positive integer is a power of two.
+fn is_pow2(x: &BigInt) -> bool {
+    x.sign() == Sign::Plus && x.bits() == x.trailing_zeros().unwrap_or(0) + 1
+}
+
+/// The values defining a plane (points, normal) as integers: each f64 as an exact
+/// rational, all multiplied by their largest denominator (a power of two).
+/// Returns them with the exponent `l` of that denominator `2^l`.
+fn integer_values<const N: usize>(v: [[f64; 3]; N]) -> ([[BigInt; 3]; N], u64) {
+    let r = v.map(qp);
+    let tz = |x: &BigRational| x.denom().trailing_zeros().unwrap_or(0);
+    assert!(r.iter().flatten().all(|x| is_pow2(x.denom())), "dyadic");
+    let l = r.iter().flatten().map(tz).max().unwrap_or(0);
+    (r.map(|p| p.map(|x| x.numer() << (l - tz(&x)) as usize)), l)
+}
+
+fn isub(a: &[BigInt; 3], b: &[BigInt; 3]) -> [BigInt; 3] {
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+}
+
+fn icross(a: &[BigInt; 3], b: &[BigInt; 3]) -> [BigInt; 3] {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+/// A plane's coefficients `[a, b, c, d]` in integers: a positive multiple of the exact
+/// rational coefficients ([`coefficients`]), computed from the definition with every
+/// defining value scaled by the same power of two `2^l`, so no gcd is ever taken. The
+/// normal computed so is `2^l` times too large relative to the offset (whose extra
+/// factor `p` carries), hence `n·2^l` in the row.
+pub fn integer_row(pl: &Plane) -> [BigInt; 4] {
+    let (n, p, l) = match pl.definition() {
+        PlaneDef::Through(pts) => {
+            let ([p, qq, r], l) = integer_values(pts);
+            (icross(&isub(&qq, &p), &isub(&r, &p)), p, l)
+        }
+        PlaneDef::Edge { p, q: qq, k, flip } => {
+            let ([p, qq], l) = integer_values([p, qq]);
+            let w = isub(&qq, &p);
+            let z = BigInt::zero();
+            let n = match k {
+                0 => [z, w[2].clone(), -&w[1]],
+                1 => [-&w[2], z, w[0].clone()],
+                _ => [w[1].clone(), -&w[0], z],
+            };
+            (if flip { n.map(|x| -x) } else { n }, p, l)
+        }
+        PlaneDef::PointNormal { p, n } => {
+            let ([p, n], l) = integer_values([p, n]);
+            (n, p, l)
+        }
     };
-    let m: [[BigRational; 3]; 3] = std::array::from_fn(|r| rows[r].0.clone());
-    let d = det3(m.clone());
+    let d = -(&n[0] * &p[0] + &n[1] * &p[1] + &n[2] * &p[2]);
+    let row = [
+        &n[0] << l as usize,
+        &n[1] << l as usize,
+        &n[2] << l as usize,
+        d,
+    ];
+    if pl.is_flipped() {
+        row.map(|x| -x)
+    } else {
+        row
+    }
+}
+
+fn det3(m: &[[BigInt; 3]; 3]) -> BigInt {
+    &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1])
+        - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
+        + &m[0][2] * (&m[1][0] * &m[2][1] - &m[1][1] * &m[2][0])
+}
+
+/// The intersection of three planes as exact homogeneous integer coordinates `(X, D)`
+/// (the point is `X / D`), by Cramer's rule; `None` if they do not meet in one point.
+pub fn intersect_homogeneous(planes: &[Plane; 3]) -> Option<([BigInt; 3], BigInt)> {
+    let rows = planes.each_ref().map(integer_row);
+    let m: [[BigInt; 3]; 3] = std::array::from_fn(|r| std::array::from_fn(|c| rows[r][c].clone()));
+    let d = det3(&m);
     if d.is_zero() {
         return None;
     }
-    Some(std::array::from_fn(|j| {
+    let x = std::array::from_fn(|j| {
         let mut mj = m.clone();
         for r in 0..3 {
-            mj[r][j] = rows[r].1.clone();
+            mj[r][j] = -&rows[r][3];
         }
-        det3(mj) / &d
-    }))
+        det3(&mj)
+    });
+    Some((x, d))
+}
+
+/// The intersection of three planes in rationals (`None` if they do not meet in one
+/// point).
+pub fn intersect(planes: &[Plane; 3]) -> Option<RPoint> {
+    let (x, d) = intersect_homogeneous(planes)?;
+    Some(x.map(|v| BigRational::new(v, d.clone())))
+}
+
+/// The exact side of `h` at the intersection of three planes (`None` if they do not meet
+/// in one point): the sign of `(n_h·X + d_h·D)·D`, in integers.
+pub fn implicit_side(planes: &[Plane; 3], h: &Plane) -> Option<Side> {
+    let (x, d) = intersect_homogeneous(planes)?;
+    let r = integer_row(h);
+    let v = &r[0] * &x[0] + &r[1] * &x[1] + &r[2] * &x[2] + &r[3] * &d;
+    let s = if d.is_negative() { -v } else { v };
+    Some(if s.is_positive() {
+        Side::Front
+    } else if s.is_negative() {
+        Side::Back
+    } else {
+        Side::On
+    })
 }
 
 /// The exact side of a plane at a rational point.
@@ -110,12 +205,31 @@ pub fn side_at(h: &Plane, p: &RPoint) -> Side {
 
 /// The reference side of `h` at vertex `i` of `poly`.
 pub fn vertex_side(poly: &ExactPolygon, i: usize, h: &Plane) -> Side {
-    side_at(h, &vertex(poly, i))
+    implicit_side(&poly.vertex_planes(i), h).expect("vertex planes meet in a point")
 }
 
 /// Vertex `i` of `poly` as a rational point.
 pub fn vertex(poly: &ExactPolygon, i: usize) -> RPoint {
     intersect(&poly.vertex_planes(i)).expect("vertex planes meet in a point")
+}
+
+/// The reference classification of `poly` against `h`.
+pub fn reference_classify(poly: &ExactPolygon, h: &Plane) -> PolygonSide {
+    let sides: Vec<Side> = (0..poly.len()).map(|i| vertex_side(poly, i, h)).collect();
+    match (sides.contains(&Side::Front), sides.contains(&Side::Back)) {
+        (true, true) => PolygonSide::Spanning,
+        (true, false) => PolygonSide::Front,
+        (false, true) => PolygonSide::Back,
+        _ if same_facing(&poly.support(), h) => PolygonSide::Coplanar,
+        _ => PolygonSide::CoplanarOpposite,
+    }
+}
+
+/// Whether the normals of two planes have a positive dot product (rationals).
+pub fn same_facing(a: &Plane, b: &Plane) -> bool {
+    let (n, _) = coefficients(a);
+    let (m, _) = coefficients(b);
+    (&n[0] * &m[0] + &n[1] * &m[1] + &n[2] * &m[2]).is_positive()
 }
 
 /// Twice the signed area of `poly` projected along axis `k` (exact).
