@@ -56,6 +56,19 @@ impl Dyadic {
         }
     }
 
+    /// `±m · 2^e` for a magnitude `m` given as little-endian 64-bit limbs.
+    pub(crate) fn from_limbs(neg: bool, limbs: &[u64], e: i64) -> Dyadic {
+        let digits: Vec<u32> = limbs
+            .iter()
+            .flat_map(|&l| [l as u32, (l >> 32) as u32])
+            .collect();
+        let sign = if neg { Sign::Minus } else { Sign::Plus };
+        Dyadic {
+            m: BigInt::from_slice(sign, &digits),
+            e,
+        }
+    }
+
     /// The sign as an ordering against zero.
     pub(crate) fn signum(&self) -> Ordering {
         match self.m.sign() {

@@ -23,7 +23,14 @@
 //! defined by input values. Its approximation comes from Cramer's rule in interval
 //! arithmetic on the planes' coefficient intervals; its exact side against `H` is the
 //! sign of `(n_H·X + d_H·D)·D` with `D = n₁·(n₂×n₃)`,
-//! `X = h₁(n₂×n₃) + h₂(n₃×n₁) + h₃(n₁×n₂)`, `hᵢ = −dᵢ`, evaluated in dyadic arithmetic.
+//! `X = h₁(n₂×n₃) + h₂(n₃×n₁) + h₃(n₁×n₂)`, `hᵢ = −dᵢ`, evaluated exactly.
+//!
+//! # Exact evaluation
+//!
+//! The exact path first scales the inputs of the predicate to integers by a common power
+//! of two and, when they span few enough bits that the result fits 1664 bits, evaluates
+//! in fixed-capacity integers on the stack (the `fast` module); otherwise in dyadic
+//! arithmetic on big integers ([`crate::dyadic`]). Both compute the same exact sign.
 
 use std::cmp::Ordering;
 
@@ -31,6 +38,14 @@ use crate::dyadic::{self, Dyadic};
 use crate::interval::{self, Interval};
 use crate::plane::Plane;
 use crate::side::Side;
+
+mod fast;
+mod wide;
+
+#[cfg(test)]
+mod tests;
+
+use fast::Fast;
 
 const U: f64 = 1.0 / 9_007_199_254_740_992.0; // 2^-53
 const FILTER_REL: f64 = 8.0 * U;
@@ -148,6 +163,14 @@ pub(crate) fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3
 /// Exact homogeneous coordinates `(X, D)` of the intersection of three planes: the
 /// point is `X / D`; `D = 0` when they do not meet in one point.
 pub(crate) fn homogeneous(p1: &Plane, p2: &Plane, p3: &Plane) -> ([Dyadic; 3], Dyadic) {
+    match fast::homogeneous(p1, p2, p3) {
+        Fast::Done(r) => r,
+        Fast::TooWide => homogeneous_dyadic(p1, p2, p3),
+    }
+}
+
+/// [`homogeneous`] in dyadic arithmetic.
+fn homogeneous_dyadic(p1: &Plane, p2: &Plane, p3: &Plane) -> ([Dyadic; 3], Dyadic) {
     let (n1, d1) = p1.exact();
     let (n2, d2) = p2.exact();
     let (n3, d3) = p3.exact();
@@ -166,17 +189,55 @@ pub(crate) fn side_of_intersection(p1: &Plane, p2: &Plane, p3: &Plane, h: &Plane
     if h.same_definition(p1) || h.same_definition(p2) || h.same_definition(p3) {
         return Some(Side::On);
     }
-    let (x, d) = homogeneous(p1, p2, p3);
+    let s = match fast::side_of_intersection(p1, p2, p3, h) {
+        Fast::Done(s) => s,
+        Fast::TooWide => side_of_intersection_dyadic(p1, p2, p3, h),
+    };
+    s.map(Side::from_ordering)
+}
+
+/// The sign of `(n_H·X + d_H·D)·D` in dyadic arithmetic, `None` when `D = 0`.
+fn side_of_intersection_dyadic(p1: &Plane, p2: &Plane, p3: &Plane, h: &Plane) -> Option<Ordering> {
+    let (x, d) = homogeneous_dyadic(p1, p2, p3);
     if d.is_zero() {
         return None;
     }
     let (n, e) = h.exact();
     let v = &dyadic::dot3(&n, &x) + &(&e * &d);
-    let s = match d.signum() {
+    Some(match d.signum() {
         Ordering::Less => v.signum().reverse(),
         _ => v.signum(),
-    };
-    Some(Side::from_ordering(s))
+    })
+}
+
+/// Which exact evaluation [`exact_side_of_intersection`] uses (for measurements).
+#[doc(hidden)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ExactPath {
+    /// Fixed-capacity integers, `None` when the inputs span too many bits.
+    Fast,
+    /// Dyadic big-integer arithmetic.
+    Dyadic,
+}
+
+/// The exact sign of `h` at the intersection of three planes, without filter or
+/// shortcut, through the given path: `Some(None)` when the planes do not meet in one
+/// point, `None` when the fast path cannot hold the inputs. For measurements and tests.
+#[doc(hidden)]
+pub fn exact_side_of_intersection(
+    p1: &Plane,
+    p2: &Plane,
+    p3: &Plane,
+    h: &Plane,
+    path: ExactPath,
+) -> Option<Option<Ordering>> {
+    match path {
+        ExactPath::Fast => match fast::side_of_intersection(p1, p2, p3, h) {
+            Fast::Done(s) => Some(s),
+            Fast::TooWide => None,
+        },
+        ExactPath::Dyadic => Some(side_of_intersection_dyadic(p1, p2, p3, h)),
+    }
 }
 
 /// The intersection of three planes rounded to f64 (each coordinate within a few ulps),
@@ -192,7 +253,8 @@ pub(crate) fn rounded_intersection(p1: &Plane, p2: &Plane, p3: &Plane) -> Option
 
 /// The exact sign of `robust::orient3d(a, b, c, d)`: `Greater` when `d` lies below the
 /// plane through `a`, `b`, `c` (counter-clockwise seen from above), for every finite
-/// input (Shewchuk's adaptive predicate where it is exact, dyadic arithmetic otherwise).
+/// input (Shewchuk's adaptive predicate where it is exact, exact integer arithmetic
+/// otherwise).
 pub fn orient3d(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
     if crate::plane::robust_safe(&[a, b, c, d]) {
         let p = |v: [f64; 3]| robust::Coord3D {
@@ -203,6 +265,14 @@ pub fn orient3d(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering 
         let o = robust::orient3d(p(a), p(b), p(c), p(d));
         return o.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
     }
+    match fast::orient3d(a, b, c, d) {
+        Fast::Done(s) => s,
+        Fast::TooWide => orient3d_dyadic(a, b, c, d),
+    }
+}
+
+/// [`orient3d`] in dyadic arithmetic.
+fn orient3d_dyadic(a: [f64; 3], b: [f64; 3], c: [f64; 3], d: [f64; 3]) -> Ordering {
     let dd = dyadic::point3(d);
     let row = |v: [f64; 3]| {
         let e = dyadic::point3(v);
