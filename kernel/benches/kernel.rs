@@ -1,5 +1,5 @@
 //! Kernel benchmarks: classification (naive f64, float kernel, exact with and without the
-//! filter) on random and near-degenerate inputs, and splitting. Each iteration processes
+//! filter) on random, near-degenerate and one-ulp inputs, and splitting. Each iteration processes
 //! a whole workload; divide by its size (printed by the `kernel_ratios` example, which
 //! also reports the per-operation ratios and fallback rates of one run).
 
@@ -13,48 +13,32 @@ fn main() {
     divan::main();
 }
 
-#[divan::bench(args = ["random", "degenerate"])]
+#[divan::bench(args = ["random", "degenerate", "ulp"])]
 fn classify_naive_f64(b: Bencher, set: &str) {
-    let s = if set == "random" {
-        ClassifySet::random()
-    } else {
-        ClassifySet::degenerate()
-    };
+    let s = ClassifySet::named(set);
     b.counter(divan::counter::ItemsCount::new(s.vertex_count))
         .bench(|| classify_naive(black_box(&s)));
 }
 
-#[divan::bench(args = ["random", "degenerate"])]
+#[divan::bench(args = ["random", "degenerate", "ulp"])]
 fn classify_float_kernel(b: Bencher, set: &str) {
-    let s = if set == "random" {
-        ClassifySet::random()
-    } else {
-        ClassifySet::degenerate()
-    };
+    let s = ClassifySet::named(set);
     let (_, f) = kernels();
     b.counter(divan::counter::ItemsCount::new(s.vertex_count))
         .bench(|| classify_float(&f, black_box(&s)));
 }
 
-#[divan::bench(args = ["random", "degenerate"])]
+#[divan::bench(args = ["random", "degenerate", "ulp"])]
 fn classify_exact_filtered(b: Bencher, set: &str) {
-    let s = if set == "random" {
-        ClassifySet::random()
-    } else {
-        ClassifySet::degenerate()
-    };
+    let s = ClassifySet::named(set);
     let (e, _) = kernels();
     b.counter(divan::counter::ItemsCount::new(s.vertex_count))
         .bench(|| classify_exact(&e, black_box(&s)));
 }
 
-#[divan::bench(args = ["random", "degenerate"])]
+#[divan::bench(args = ["random", "degenerate", "ulp"])]
 fn classify_exact_unfiltered(b: Bencher, set: &str) {
-    let s = if set == "random" {
-        ClassifySet::random()
-    } else {
-        ClassifySet::degenerate()
-    };
+    let s = ClassifySet::named(set);
     let e = kernels().0.without_filter();
     b.counter(divan::counter::ItemsCount::new(s.vertex_count))
         .bench(|| classify_exact(&e, black_box(&s)));

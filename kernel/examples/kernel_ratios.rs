@@ -1,6 +1,6 @@
 //! Measures, in one run, the cost of a vertex classification for the naive f64
 //! evaluation, the float kernel and the exact kernel (with and without its filter), on
-//! random and near-degenerate inputs, the filter's fallback rate, and splits per second.
+//! random, near-degenerate and one-ulp inputs, the filter's fallback rate, and splits per second.
 //! Prints a Markdown table. Run with `cargo run --release -p limn-kernel --example
 //! kernel_ratios`.
 
@@ -44,9 +44,13 @@ fn main() {
     let unfiltered = kernels().0.without_filter();
     println!("exact kernel on the raw f64 input (no grid); float kernel epsilon 1e-9 of the box");
     println!();
-    println!("| ns per vertex classification | random | near-degenerate |");
-    println!("|---|---:|---:|");
-    let sets = [ClassifySet::random(), ClassifySet::degenerate()];
+    println!("| ns per vertex classification | random | near-degenerate | one ulp |");
+    println!("|---|---:|---:|---:|");
+    let sets = [
+        ClassifySet::random(),
+        ClassifySet::degenerate(),
+        ClassifySet::ulp(),
+    ];
     let mut rows: Vec<(String, Vec<f64>)> = Vec::new();
     let mut rates = Vec::new();
     for s in &sets {
@@ -71,23 +75,28 @@ fn main() {
         classify_exact(&unfiltered, s)
     }));
     for (name, v) in &rows {
-        println!("| {name} | {:.2} | {:.2} |", v[0], v[1]);
+        println!("| {name} | {:.2} | {:.2} | {:.2} |", v[0], v[1], v[2]);
     }
-    let ratio = |a: usize, b: usize, i: usize| rows[a].1[i] / rows[b].1[i];
+    let ratio = |a: usize, b: usize| -> Vec<String> {
+        (0..sets.len())
+            .map(|i| format!("{:.2}×", rows[a].1[i] / rows[b].1[i]))
+            .collect()
+    };
     println!(
-        "| exact filtered / float kernel | {:.2}× | {:.2}× |",
-        ratio(2, 1, 0),
-        ratio(2, 1, 1)
+        "| exact filtered / float kernel | {} |",
+        ratio(2, 1).join(" | ")
     );
     println!(
-        "| exact filtered / exact filter off | {:.2}× | {:.2}× |",
-        ratio(2, 3, 0),
-        ratio(2, 3, 1)
+        "| exact filtered / exact filter off | {} |",
+        ratio(2, 3).join(" | ")
     );
+    let pct: Vec<String> = rates
+        .iter()
+        .map(|r| format!("{:.2} %", 100.0 * r))
+        .collect();
     println!(
-        "| filter fallback rate | {:.2} % | {:.2} % |",
-        100.0 * rates[0],
-        100.0 * rates[1]
+        "| filter fallbacks per vertex classified | {} |",
+        pct.join(" | ")
     );
     println!();
     let s = SplitSet::new();

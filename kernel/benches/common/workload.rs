@@ -163,6 +163,42 @@ impl ClassifySet {
             .collect();
         ClassifySet::build(pairs)
     }
+
+    /// One ulp: each triangle against the plane through two of its corners and its third
+    /// corner moved by one ulp on one axis (the third corner, and the new vertices of the
+    /// cut half of the triangles, are about 1e-16 from the plane: the filter cannot decide
+    /// and the exact path runs).
+    pub fn ulp() -> ClassifySet {
+        let mut rng = Rng::new(4);
+        let pairs = (0..PAIRS)
+            .map(|i| {
+                let t = triangle(&mut rng);
+                let mut c = t[2];
+                let axis = (rng.next_u64() % 3) as usize;
+                c[axis] = if rng.next_u64() & 1 == 0 {
+                    c[axis].next_up()
+                } else {
+                    c[axis].next_down()
+                };
+                let h = [t[0], t[1], c];
+                let cut = (i % 2 == 1).then(|| {
+                    let m = (t[0] + t[1] + t[2]) / 3.0;
+                    (m, (t[1] - t[0]).cross(rng.point()))
+                });
+                (t, h, cut)
+            })
+            .collect();
+        ClassifySet::build(pairs)
+    }
+
+    /// The workload of a benchmark argument: `"random"`, `"degenerate"` or `"ulp"`.
+    pub fn named(name: &str) -> ClassifySet {
+        match name {
+            "random" => ClassifySet::random(),
+            "degenerate" => ClassifySet::degenerate(),
+            _ => ClassifySet::ulp(),
+        }
+    }
 }
 
 /// The kernels of every workload (the float kernel's epsilon for the box [-1, 1]³).
