@@ -27,8 +27,10 @@ use super::wide::Wide;
 use crate::dyadic::Dyadic;
 use crate::plane::{Plane, PlaneDef};
 
-/// Small capacity: 12 limbs (768 bits), inputs spanning up to about 80 bits.
-const SMALL: usize = 12;
+/// Small capacity: 10 limbs (640 bits), inputs spanning up to about 68 bits.
+const SMALL: usize = 10;
+/// Medium capacity: 16 limbs (1024 bits), inputs spanning up to about 111 bits.
+const MEDIUM: usize = 16;
 /// Large capacity: 26 limbs (1664 bits), inputs spanning up to about 180 bits.
 const LARGE: usize = 26;
 
@@ -117,21 +119,21 @@ fn int3<const N: usize>(p: &[f64; 3], e: i32) -> [Wide<N>; 3] {
 
 #[inline]
 fn sub3<const N: usize>(a: &[Wide<N>; 3], b: &[Wide<N>; 3]) -> [Wide<N>; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
 }
 
 #[inline]
 fn cross<const N: usize>(a: &[Wide<N>; 3], b: &[Wide<N>; 3]) -> [Wide<N>; 3] {
     [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
+        &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
+        &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
+        &(&a[0] * &b[1]) - &(&a[1] * &b[0]),
     ]
 }
 
 #[inline]
 fn dot<const N: usize>(a: &[Wide<N>; 3], b: &[Wide<N>; 3]) -> Wide<N> {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    &(&(&a[0] * &b[0]) + &(&a[1] * &b[1])) + &(&a[2] * &b[2])
 }
 
 /// The points of a plane's definition and, for a point-normal plane, its normal.
@@ -238,7 +240,7 @@ fn homogeneous_in<const N: usize>(
     let c12 = cross(&n1, &n2);
     let d = dot(&n1, &c23);
     // h = −d, so X = −(d₁c₂₃ + d₂c₃₁ + d₃c₁₂).
-    let x = [0, 1, 2].map(|j| -(d1 * c23[j] + d2 * c31[j] + d3 * c12[j]));
+    let x = [0, 1, 2].map(|j| -(&(&(&d1 * &c23[j]) + &(&d2 * &c31[j])) + &(&d3 * &c12[j])));
     (x, d)
 }
 
@@ -250,7 +252,7 @@ fn side_in<const N: usize>(p: [&Plane; 4], e: i32) -> Option<Ordering> {
         return None;
     }
     let (n, o) = coefficients::<N>(p[3], e);
-    let v = dot(&n, &x) + o * d;
+    let v = &dot(&n, &x) + &(&o * &d);
     Some(if d.is_negative() {
         v.signum().reverse()
     } else {
@@ -283,6 +285,8 @@ pub(crate) fn side_of_intersection(
     let bits = (ah + xb + 2).max(bh + db) + 1;
     if bits <= 64 * SMALL as i32 {
         Fast::Done(side_in::<SMALL>(planes, e))
+    } else if bits <= 64 * MEDIUM as i32 {
+        Fast::Done(side_in::<MEDIUM>(planes, e))
     } else if bits <= 64 * LARGE as i32 {
         Fast::Done(side_in::<LARGE>(planes, e))
     } else {

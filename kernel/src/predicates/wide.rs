@@ -164,19 +164,19 @@ impl<const N: usize> Wide<N> {
     }
 }
 
-impl<const N: usize> Add for Wide<N> {
+impl<const N: usize> Add for &Wide<N> {
     type Output = Wide<N>;
     #[inline]
-    fn add(self, o: Wide<N>) -> Wide<N> {
-        Wide::add_signed(&self, &o, o.neg)
+    fn add(self, o: &Wide<N>) -> Wide<N> {
+        Wide::add_signed(self, o, o.neg)
     }
 }
 
-impl<const N: usize> Sub for Wide<N> {
+impl<const N: usize> Sub for &Wide<N> {
     type Output = Wide<N>;
     #[inline]
-    fn sub(self, o: Wide<N>) -> Wide<N> {
-        Wide::add_signed(&self, &o, !o.neg && o.len != 0)
+    fn sub(self, o: &Wide<N>) -> Wide<N> {
+        Wide::add_signed(self, o, !o.neg && o.len != 0)
     }
 }
 
@@ -189,27 +189,28 @@ impl<const N: usize> Neg for Wide<N> {
     }
 }
 
-impl<const N: usize> Mul for Wide<N> {
+impl<const N: usize> Mul for &Wide<N> {
     type Output = Wide<N>;
-    /// Schoolbook product. A partial product or carry beyond the capacity can only be
-    /// non-zero when the product itself does not fit, and then indexing panics.
+    /// Schoolbook product. A row or carry beyond the capacity can only be non-zero when
+    /// the product itself does not fit, and then indexing panics.
     #[inline]
-    fn mul(self, o: Wide<N>) -> Wide<N> {
+    fn mul(self, o: &Wide<N>) -> Wide<N> {
         let mut r = Wide::ZERO;
         if self.len == 0 || o.len == 0 {
             return r;
         }
         let (a, b) = if self.len >= o.len {
-            (&self, &o)
+            (self, o)
         } else {
-            (&o, &self)
+            (o, self)
         };
-        for j in 0..b.len {
-            let bj = b.mag[j] as u128;
+        let al = &a.mag[..a.len];
+        for (j, &bj) in b.mag[..b.len].iter().enumerate() {
+            let row = &mut r.mag[j..j + a.len];
             let mut carry: u64 = 0;
-            for i in 0..a.len {
-                let t = a.mag[i] as u128 * bj + r.mag[i + j] as u128 + carry as u128;
-                r.mag[i + j] = t as u64;
+            for (rk, &ai) in row.iter_mut().zip(al) {
+                let t = ai as u128 * bj as u128 + *rk as u128 + carry as u128;
+                *rk = t as u64;
                 carry = (t >> 64) as u64;
             }
             if carry != 0 {
@@ -234,7 +235,7 @@ mod tests {
 
     fn w(x: i128) -> W {
         let m = x.unsigned_abs();
-        W::from_shifted(m as u64, 0, x < 0) + W::from_shifted((m >> 64) as u64, 64, x < 0)
+        &W::from_shifted(m as u64, 0, x < 0) + &W::from_shifted((m >> 64) as u64, 64, x < 0)
     }
 
     fn to_i128(v: &W) -> i128 {
@@ -264,12 +265,12 @@ mod tests {
         for &x in &vals {
             for &y in &vals {
                 let (a, b) = (w(x), w(y));
-                assert_eq!(to_i128(&(a + b)), x + y, "{x} + {y}");
-                assert_eq!(to_i128(&(a - b)), x - y, "{x} - {y}");
+                assert_eq!(to_i128(&(&a + &b)), x + y, "{x} + {y}");
+                assert_eq!(to_i128(&(&a - &b)), x - y, "{x} - {y}");
                 if let Some(p) = x.checked_mul(y) {
-                    assert_eq!(to_i128(&(a * b)), p, "{x} * {y}");
+                    assert_eq!(to_i128(&(&a * &b)), p, "{x} * {y}");
                 }
-                assert_eq!((a - a).signum(), Ordering::Equal);
+                assert_eq!((&a - &a).signum(), Ordering::Equal);
                 assert_eq!((-a).signum(), x.cmp(&0).reverse());
             }
         }
@@ -278,8 +279,8 @@ mod tests {
     #[test]
     fn products_up_to_capacity() {
         // (2^128 − 1)² = 2^256 − 2^129 + 1 fits in four limbs exactly.
-        let m = w(-1) + W::from_shifted(1, 128, false);
-        let p = m * m;
+        let m = &w(-1) + &W::from_shifted(1, 128, false);
+        let p = &m * &m;
         assert_eq!(p.bits(), 256);
         assert_eq!(p.limbs()[0], 1);
         assert_eq!(p.limbs()[1], 0);
@@ -292,6 +293,6 @@ mod tests {
     #[should_panic]
     fn overflow_panics() {
         let m = W::from_shifted(1, 128, false);
-        let _ = m * m;
+        let _ = &m * &m;
     }
 }
