@@ -2,11 +2,25 @@
 //! whole-face covers and seam flaps, as the writers receive them) give every pixel centre
 //! the face exact ray casting sees, outside a 1/64-pixel band around the true edges.
 
-use limn_depthsort::{order, OrderOptions, SortMode};
+use limn_depthsort::{OrderOptions, SortMode};
 use limn_paint::{picture, seam_flaps, Style};
 use limn_scene::{shapes, Camera, Material, Scene};
 use limn_tests::corpus;
-use limn_zbuffer::{compare, edge_band, rasterize_ids, render, scene_edges, Method, RenderOptions};
+use limn_tests::reference::{paint, Painted};
+use limn_zbuffer::{compare, rasterize_ids, DepthFormat, IdImage, Method};
+
+/// The order, set up for comparison as `limn check` does, and exact ray casting's ids.
+fn ordered_and_raycast(scene: &Scene, camera: &Camera, sort: SortMode) -> (Painted, IdImage) {
+    let opts = OrderOptions {
+        sort,
+        ..OrderOptions::default()
+    };
+    let p = paint(scene, camera, &opts);
+    let reference = p
+        .reference(scene, Method::RayCast, DepthFormat::F64)
+        .expect("ray casting");
+    (p, reference)
+}
 
 const BAND_PX: f64 = 1.0 / 64.0;
 
@@ -18,12 +32,9 @@ const RASTER_BAND_PX: f64 = 1.0 / 32.0;
 /// Pixels outside the band where the default picture disagrees with ray casting, and
 /// the number of seam flaps the picture carries.
 fn wrong_pixels(scene: &Scene, camera: &Camera, sort: SortMode) -> (usize, usize) {
-    let opts = OrderOptions {
-        sort,
-        ..OrderOptions::default()
-    };
-    let o = order(scene, camera, &opts).expect("orderable");
-    let pic = picture(scene, &o, &Style::default());
+    let (p, reference) = ordered_and_raycast(scene, camera, sort);
+    let o = &p.ordered;
+    let pic = picture(scene, o, &Style::default());
     let flaps = pic.fragments.len() - o.fragments.len();
     let (w, h) = (o.camera.width, o.camera.height);
     let painted: Vec<(Vec<[f64; 2]>, u32)> = pic
@@ -31,21 +42,9 @@ fn wrong_pixels(scene: &Scene, camera: &Camera, sort: SortMode) -> (usize, usize
         .iter()
         .map(|f| (f.points.clone(), f.face))
         .collect();
-    let ropts = RenderOptions {
-        near_far: Some((o.near, o.far)),
-        ..RenderOptions::default()
-    };
-    let reference = render(scene, &o.camera, Method::RayCast, &ropts).expect("ray casting");
     // True edges: the scene's edges and where faces meet (the fragments' edges).
-    let mut edges = scene_edges(scene, &o.camera, &ropts).expect("edges");
-    for f in &o.fragments {
-        let n = f.points.len();
-        for i in 0..n {
-            edges.push((f.points[i], f.points[(i + 1) % n]));
-        }
-    }
-    let band = edge_band(&edges, w, h, BAND_PX);
-    let c = compare(&rasterize_ids(&painted, w, h), &reference.ids, Some(&band));
+    let band = p.band_with(BAND_PX);
+    let c = compare(&rasterize_ids(&painted, w, h), &reference, Some(&band));
     (c.mismatches_outside_band, flaps)
 }
 
@@ -122,8 +121,9 @@ fn flaps_go_only_under_later_opaque_faces_of_other_faces() {
 /// (pixels of translucent or smooth-shaded faces are not compared).
 fn svg_wrong_pixels(scene: &Scene, camera: &Camera) -> usize {
     use limn_paint::{Painter, SvgPainter};
-    let o = order(scene, camera, &OrderOptions::default()).expect("orderable");
-    let pic = picture(scene, &o, &Style::default());
+    let (p, reference) = ordered_and_raycast(scene, camera, SortMode::Adaptive);
+    let o = &p.ordered;
+    let pic = picture(scene, o, &Style::default());
     let mut svg = Vec::new();
     SvgPainter::default().paint(&pic, &mut svg).expect("svg");
     let svg = String::from_utf8(svg).expect("utf-8").replacen(
@@ -149,19 +149,7 @@ fn svg_wrong_pixels(scene: &Scene, camera: &Camera) -> usize {
         }
         colour[f.face as usize] = Some([c[0], c[1], c[2]]);
     }
-    let ropts = RenderOptions {
-        near_far: Some((o.near, o.far)),
-        ..RenderOptions::default()
-    };
-    let reference = render(scene, &o.camera, Method::RayCast, &ropts).expect("ray casting");
-    let mut edges = scene_edges(scene, &o.camera, &ropts).expect("edges");
-    for f in &o.fragments {
-        let n = f.points.len();
-        for i in 0..n {
-            edges.push((f.points[i], f.points[(i + 1) % n]));
-        }
-    }
-    let band = edge_band(&edges, w, h, RASTER_BAND_PX);
+    let band = p.band_with(RASTER_BAND_PX);
     let mut wrong = 0;
     for y in 0..h {
         for x in 0..w {
@@ -170,7 +158,7 @@ fn svg_wrong_pixels(scene: &Scene, camera: &Camera) -> usize {
             }
             let px = pixmap.pixel(x, y).expect("inside");
             let got = (px.alpha() > 0).then(|| [px.red(), px.green(), px.blue()]);
-            let id = reference.ids.get(x, y).expect("inside");
+            let id = reference.get(x, y).expect("inside");
             let want = if id == limn_zbuffer::NO_FACE {
                 None
             } else {
