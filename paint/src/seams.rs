@@ -41,9 +41,10 @@ pub fn seam_flaps(fragments: Vec<PaintFragment>, width: f64) -> Vec<PaintFragmen
                 .push(j);
         }
     }
-    let mut out = Vec::with_capacity(fragments.len());
+    // The flaps first (they read the later fragments), then the fragments moved into the
+    // output with their flaps after them: no fragment is copied.
+    let mut flaps: Vec<Vec<PaintFragment>> = vec![Vec::new(); fragments.len()];
     for (i, f) in fragments.iter().enumerate() {
-        out.push(f.clone());
         if !opaque(f) || f.vertex_colors.is_some() {
             continue;
         }
@@ -62,9 +63,14 @@ pub fn seam_flaps(fragments: Vec<PaintFragment>, width: f64) -> Vec<PaintFragmen
                 p.face = f.face;
                 p.object = f.object;
                 p.original_edges = vec![false; p.points.len()];
-                out.push(p);
+                flaps[i].push(p);
             }
         }
+    }
+    let mut out = Vec::with_capacity(fragments.len() + flaps.iter().map(Vec::len).sum::<usize>());
+    for (f, fl) in fragments.into_iter().zip(flaps) {
+        out.push(f);
+        out.extend(fl);
     }
     out
 }
