@@ -1,5 +1,5 @@
 //! Closed intervals of f64 with outward rounding: the rigorous error bounds of the
-//! kernel's approximations (plane coefficients, implicit vertices).
+//! kernel's plane coefficients and of the plane-level filters.
 //!
 //! Every operation rounds to nearest and then widens its result by one ulp outwards
 //! (`next_down` / `next_up`), which encloses the exact result for every finite input,
@@ -49,44 +49,6 @@ impl Interval {
         } else {
             None
         }
-    }
-
-    /// A midpoint and a radius with `[mid - rad, mid + rad] ⊇ self` (radius infinite when
-    /// a bound is not finite).
-    pub(crate) fn mid_rad(&self) -> (f64, f64) {
-        if !(self.lo.is_finite() && self.hi.is_finite()) {
-            let m = if self.lo.is_finite() {
-                self.lo
-            } else if self.hi.is_finite() {
-                self.hi
-            } else {
-                0.0
-            };
-            return (m, f64::INFINITY);
-        }
-        let mid = self.lo * 0.5 + self.hi * 0.5;
-        let rad = (self.hi - mid).max(mid - self.lo).next_up();
-        (mid, if self.lo == self.hi { 0.0 } else { rad })
-    }
-
-    /// Whether the interval contains zero (or is NaN).
-    #[inline]
-    pub(crate) fn may_be_zero(&self) -> bool {
-        !(self.lo > 0.0 || self.hi < 0.0)
-    }
-
-    /// `self / d` for an interval `d` that excludes zero; `None` otherwise.
-    pub(crate) fn div(self, d: Interval) -> Option<Interval> {
-        if d.may_be_zero() {
-            return None;
-        }
-        let q = [
-            self.lo / d.lo,
-            self.lo / d.hi,
-            self.hi / d.lo,
-            self.hi / d.hi,
-        ];
-        Some(hull(q))
     }
 }
 
@@ -165,15 +127,6 @@ impl Mul for Interval {
             self.hi * o.hi,
         ])
     }
-}
-
-/// The cross product of two interval vectors.
-pub(crate) fn cross(a: [Interval; 3], b: [Interval; 3]) -> [Interval; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
 }
 
 /// The dot product of two interval vectors.

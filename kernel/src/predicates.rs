@@ -20,8 +20,8 @@
 //! # Implicit vertices
 //!
 //! A vertex made by splitting is the intersection `P₁ ∩ P₂ ∩ P₃` of three planes, each
-//! defined by input values. Its approximation comes from Cramer's rule in interval
-//! arithmetic on the planes' coefficient intervals; its exact side against `H` is the
+//! defined by input values. Its approximation comes from Cramer's rule in f64 with a
+//! priori error bounds on the planes' coefficients; its exact side against `H` is the
 //! sign of `(n_H·X + d_H·D)·D` with `D = n₁·(n₂×n₃)`,
 //! `X = h₁(n₂×n₃) + h₂(n₃×n₁) + h₃(n₁×n₂)`, `hᵢ = −dᵢ`, evaluated exactly.
 //!
@@ -35,7 +35,6 @@
 use std::cmp::Ordering;
 
 use crate::dyadic::{self, Dyadic};
-use crate::interval::{self, Interval};
 use crate::plane::Plane;
 use crate::side::Side;
 
@@ -52,6 +51,8 @@ const FILTER_REL: f64 = 8.0 * U;
 const SAFETY: f64 = 1.0 + 1.0 / 1_073_741_824.0; // 1 + 2^-30
 /// Absolute slack for subnormal results: 2^-1060.
 const ETA: f64 = f64::from_bits(1 << 14);
+/// Least relative determinant error assumed in [`approximate`]: 2^-1000.
+const T_FLOOR: f64 = 9.332636185032189e-302;
 
 /// A plane's approximate coefficients prepared for the filter.
 #[derive(Debug, Clone, Copy)]
@@ -121,41 +122,141 @@ impl PlaneF {
     }
 }
 
-/// A plane's coefficients as intervals `(n, h)` with `h = −d`.
-fn plane_iv(p: &Plane) -> ([Interval; 3], Interval) {
+/// A value known to lie within `e` of `v` (midpoint and radius), propagated through
+/// Cramer's rule with a priori bounds: cheaper than outward-rounded intervals, which
+/// round every bound separately.
+///
+/// Each operation adds the data error (`|a|·e_b + |b|·e_a + e_a·e_b` for a product,
+/// `e_a + e_b` for a sum), the rounding of its own result (`u·|v|`, and `2η` for
+/// results and bound terms in the subnormal range), all computed in f64. The bounds are
+/// sums and products of non-negative terms, each rounded to nearest, so over the few
+/// levels of Cramer's rule they fall short of the true bound by a relative `O(30u)` at
+/// most; the result is multiplied by `1 + 2⁻³⁰`, far more than that. An overflow makes a
+/// value or a bound infinite or NaN, which [`approximate`] reports as no approximation.
+#[derive(Debug, Clone, Copy)]
+struct Mr {
+    v: f64,
+    e: f64,
+}
+
+impl Mr {
+    #[inline(always)]
+    fn mul(self, o: Mr) -> Mr {
+        let v = self.v * o.v;
+        Mr {
+            v,
+            e: self.v.abs() * o.e + o.v.abs() * self.e + self.e * o.e + U * v.abs() + 2.0 * ETA,
+        }
+    }
+
+    #[inline(always)]
+    fn add(self, o: Mr) -> Mr {
+        let v = self.v + o.v;
+        Mr {
+            v,
+            e: self.e + o.e + U * v.abs() + ETA,
+        }
+    }
+
+    #[inline(always)]
+    fn sub(self, o: Mr) -> Mr {
+        let v = self.v - o.v;
+        Mr {
+            v,
+            e: self.e + o.e + U * v.abs() + ETA,
+        }
+    }
+}
+
+#[inline(always)]
+fn cross_mr(a: [Mr; 3], b: [Mr; 3]) -> [Mr; 3] {
+    [
+        a[1].mul(b[2]).sub(a[2].mul(b[1])),
+        a[2].mul(b[0]).sub(a[0].mul(b[2])),
+        a[0].mul(b[1]).sub(a[1].mul(b[0])),
+    ]
+}
+
+/// A plane's coefficients with their bounds `(n, h)`, `h = −d`, all multiplied by the
+/// power of two that brings the largest normal component into `[1, 2)`: the plane and
+/// the intersection stay the same, and Cramer's rule neither overflows on huge scenes
+/// nor underflows on tiny ones. The scaling is exact except where a result is
+/// subnormal, which `η` covers.
+#[inline(always)]
+fn plane_mr(p: &Plane) -> ([Mr; 3], Mr) {
     let [a, b, c, d] = p.approx();
     let (en, ed) = p.error_bounds();
+    let m = a.abs().max(b.abs()).max(c.abs());
+    let exp = ((m.to_bits() >> 52) & 0x7ff) as i64 - 1023;
+    let scale = if exp >= -1022 {
+        // 2^-exp for exp in [-1022, 1023]: normal, or the subnormal 2^-1023.
+        if exp == 1023 {
+            f64::from_bits(1 << 51)
+        } else {
+            f64::from_bits(((1023 - exp) as u64) << 52)
+        }
+    } else {
+        // A subnormal largest component: 2^1022 brings it to at least 2^-52.
+        f64::from_bits(2045 << 52)
+    };
     (
-        [a, b, c].map(|x| Interval::around(x, en)),
-        Interval::around(-d, ed),
+        [a, b, c].map(|v| Mr {
+            v: v * scale,
+            e: en * scale + ETA,
+        }),
+        Mr {
+            v: -d * scale,
+            e: ed * scale + ETA,
+        },
     )
 }
 
 /// An approximation of the intersection of three planes with a bound on the error of
-/// every coordinate, from Cramer's rule in interval arithmetic. `None` when the
-/// determinant's interval contains zero (the planes are, or may be, parallel to a common
-/// line); the error bound is infinite when the quotient overflows.
+/// every coordinate, from Cramer's rule with a priori error bounds ([`Mr`]). `None` when
+/// the determinant's bound does not keep it at least half its magnitude away from zero
+/// (the planes are, or are nearly, parallel to a common line) or something overflows.
+///
+/// With `X = X̃ ± e_X`, `D = D̃ ± e_D` and `t = e_D / |D̃| ≤ ½`, each coordinate obeys
+/// `|X/D − X̃/D̃| ≤ (e_X/|D̃| + |X̃/D̃|·t) / (1 − t)`; the quotient's own rounding adds
+/// `u·|x̃| + η`. `t` is raised to at least `2⁻¹⁰⁰⁰` so that its underflow cannot hide
+/// error at huge coordinates.
 pub(crate) fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3], f64)> {
-    let (n1, h1) = plane_iv(p1);
-    let (n2, h2) = plane_iv(p2);
-    let (n3, h3) = plane_iv(p3);
-    let c23 = interval::cross(n2, n3);
-    let c31 = interval::cross(n3, n1);
-    let c12 = interval::cross(n1, n2);
-    let det = interval::dot(n1, c23);
-    if det.may_be_zero() {
+    let (n1, h1) = plane_mr(p1);
+    let (n2, h2) = plane_mr(p2);
+    let (n3, h3) = plane_mr(p3);
+    let c23 = cross_mr(n2, n3);
+    let c31 = cross_mr(n3, n1);
+    let c12 = cross_mr(n1, n2);
+    let det = n1[0]
+        .mul(c23[0])
+        .add(n1[1].mul(c23[1]))
+        .add(n1[2].mul(c23[2]));
+    let dabs = det.v.abs();
+    let ed = det.e * SAFETY;
+    if !(dabs.is_finite() && ed.is_finite()) || !(ed <= 0.5 * dabs) {
         return None;
     }
+    let t = if ed == 0.0 {
+        0.0
+    } else {
+        ((ed / dabs) * SAFETY).max(T_FLOOR)
+    };
+    let one_minus_t = 1.0 - t;
     let mut pos = [0.0; 3];
     let mut err: f64 = 0.0;
     for j in 0..3 {
-        let x = h1 * c23[j] + h2 * c31[j] + h3 * c12[j];
-        let (m, r) = x.div(det)?.mid_rad();
-        pos[j] = m;
-        err = err.max(r);
+        let x = h1.mul(c23[j]).add(h2.mul(c31[j])).add(h3.mul(c12[j]));
+        let q = x.v / det.v;
+        let data = (x.e * SAFETY / dabs + q.abs() * t + ETA) / one_minus_t;
+        let e = (data + U * q.abs() + ETA) * SAFETY;
+        pos[j] = q;
+        err = err.max(e);
     }
-    if err.is_nan() || pos.iter().any(|v| !v.is_finite()) {
+    if pos.iter().any(|v| !v.is_finite()) {
         return None;
+    }
+    if err.is_nan() {
+        err = f64::INFINITY;
     }
     Some((pos, err))
 }

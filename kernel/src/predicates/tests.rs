@@ -306,3 +306,69 @@ fn orient3d_fast_matches_dyadic() {
     }
     assert!(decided > 3000, "{decided}");
 }
+
+/// Whether `|X/D − pos| ≤ err` holds exactly.
+fn within(x: &Dyadic, d: &Dyadic, pos: f64, err: f64) -> bool {
+    let lo = &Dyadic::from_f64(pos) - &Dyadic::from_f64(err);
+    let hi = &Dyadic::from_f64(pos) + &Dyadic::from_f64(err);
+    let s = d.signum();
+    let above_lo = (x - &(&lo * d)).signum();
+    let below_hi = (&(&hi * d) - x).signum();
+    above_lo != s.reverse() && below_hi != s.reverse()
+}
+
+#[test]
+fn approximate_encloses_the_exact_intersection() {
+    let mut rng = Rng(0x5eed_0f_a990);
+    let mut counts = Vec::new();
+    for style in [
+        Style::Scaled(0),
+        Style::Scaled(-300),
+        Style::Scaled(300),
+        Style::Grid(0),
+        Style::Spread(0, 60),
+        Style::Spread(-200, 120),
+        Style::Spread(200, 120),
+        Style::Scaled(-1000),
+    ] {
+        let mut n = 0;
+        let mut tries = 0;
+        while n < 1500 && tries < 100_000 {
+            tries += 1;
+            let (Some(a), Some(b), Some(mut c)) = (
+                plane(&mut rng, style),
+                plane(&mut rng, style),
+                plane(&mut rng, style),
+            ) else {
+                continue;
+            };
+            // Every few cases a third plane nearly parallel to the line of the other two.
+            if rng.below(3) == 0 {
+                let [a0, a1, a2, _] = a.approx();
+                let [b0, b1, b2, _] = b.approx();
+                let m = [a0 + b0, a1 + b1, a2 + b2].map(|v| v * (1.0 + 1e-9 * rng.unit()));
+                if let Ok(p) = Plane::point_normal(point(&mut rng, style), m) {
+                    c = p;
+                }
+            }
+            let Some((pos, err)) = approximate(&a, &b, &c) else {
+                continue;
+            };
+            if !err.is_finite() {
+                continue;
+            }
+            let (x, d) = homogeneous_dyadic(&a, &b, &c);
+            assert!(!d.is_zero(), "{a:?} {b:?} {c:?}");
+            for j in 0..3 {
+                assert!(
+                    within(&x[j], &d, pos[j], err),
+                    "{style:?}: coordinate {j}: {} ± {err} misses the exact point of {a:?} {b:?} {c:?}",
+                    pos[j]
+                );
+            }
+            n += 1;
+        }
+        counts.push(n);
+    }
+    assert!(counts.iter().all(|&n| n == 1500), "{counts:?}");
+}
