@@ -233,7 +233,9 @@ pub(crate) fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3
         .add(n1[2].mul(c23[2]));
     let dabs = det.v.abs();
     let ed = det.e * SAFETY;
-    if !(dabs.is_finite() && ed.is_finite()) || !(ed <= 0.5 * dabs) {
+    // Finite, and the determinant at least twice its bound (false for NaN too).
+    let usable = dabs.is_finite() && ed.is_finite() && ed <= 0.5 * dabs;
+    if !usable {
         return None;
     }
     let t = if ed == 0.0 {
