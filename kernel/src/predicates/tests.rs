@@ -319,7 +319,7 @@ fn within(x: &Dyadic, d: &Dyadic, pos: f64, err: f64) -> bool {
 
 #[test]
 fn approximate_encloses_the_exact_intersection() {
-    let mut rng = Rng(0x5eed_0f_a990);
+    let mut rng = Rng(0x005e_ed0f_a990);
     let mut counts = Vec::new();
     for style in [
         Style::Scaled(0),
