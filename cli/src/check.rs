@@ -9,7 +9,7 @@ use limn_zbuffer::{default_band_tolerance, diff_png, DepthFormat, Method, NO_FAC
 use serde_json::json;
 
 use crate::args::{AgainstArg, CheckArgs};
-use crate::output::write_atomic;
+use crate::output::{check_writable, write_atomic};
 use crate::setup::{camera, load, order_options};
 
 /// Exit status when mismatches remain outside the edge band.
@@ -22,6 +22,9 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     let scene = &loaded.scene;
     let cam = camera(scene, &a.view, loaded.opts.size, &a.input)?;
     let oo = order_options(&a.view, &loaded.opts)?;
+    for path in a.diff.iter().chain(&a.view.stats) {
+        check_writable(path, &scene.files)?;
+    }
     let painted = paint(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
     let ordered = &painted.ordered;
     let (w, h) = (ordered.camera.width, ordered.camera.height);
@@ -36,7 +39,7 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     let cmp = painted.compare(&reference);
     if let Some(path) = &a.diff {
         let png = diff_png(&painted.ids, &reference, Some(&painted.band))?;
-        write_atomic(path, |out| {
+        write_atomic(path, &scene.files, |out| {
             out.write_all(&png)?;
             Ok(())
         })?;
@@ -72,7 +75,7 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     });
     let text = serde_json::to_string_pretty(&v)? + "\n";
     match &a.view.stats {
-        Some(p) => write_atomic(p, |out| {
+        Some(p) => write_atomic(p, &scene.files, |out| {
             out.write_all(text.as_bytes())?;
             Ok(())
         })?,

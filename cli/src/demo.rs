@@ -112,7 +112,7 @@ pub fn run(a: DemoArgs) -> Result<ExitCode> {
         }),
     };
     let pic = picture(&scene, &ordered, &style);
-    let ps = write_atomic(&output, |w| Ok(painter_for(format).paint(&pic, w)?))?;
+    let ps = write_atomic(&output, &[], |w| Ok(painter_for(format).paint(&pic, w)?))?;
     let t3 = Instant::now();
     let timing = Timing {
         load: (t1 - t0).as_secs_f64() * 1e3,

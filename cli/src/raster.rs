@@ -39,7 +39,7 @@ pub fn raster(
     };
     let r = render(scene, cam, method, &opts)?;
     let png = r.color.encode_png()?;
-    write_atomic(output, |w| {
+    write_atomic(output, &scene.files, |w| {
         w.write_all(&png)?;
         Ok(())
     })?;

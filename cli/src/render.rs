@@ -8,7 +8,7 @@ use limn_depthsort::order;
 use limn_paint::{painter_for, picture, Format, Outline, Style};
 
 use crate::args::{MethodArg, RenderArgs};
-use crate::output::write_atomic;
+use crate::output::{check_writable, write_atomic};
 use crate::progress::Progress;
 use crate::raster::raster;
 use crate::setup::{camera, format_of, load, order_options};
@@ -35,6 +35,10 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     } else {
         output
     };
+    check_writable(&output, &loaded.scene.files)?;
+    if let Some(stats) = &a.view.stats {
+        check_writable(stats, &loaded.scene.files)?;
+    }
     if !matches!(a.method, MethodArg::Painter) {
         if format != Format::Png {
             bail!("--method {:?} renders a raster: write a .png", a.method);
@@ -64,7 +68,11 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     };
     let pic = picture(&loaded.scene, &ordered, &style);
     let painter = painter_for(format);
-    let ps = write_atomic(&output, |w| Ok(painter.paint(&pic, w)?))?;
+    let ps = write_atomic(
+        &output,
+        &loaded.scene.files,
+        |w| Ok(painter.paint(&pic, w)?),
+    )?;
     let t3 = Instant::now();
     drop(progress);
     let timing = Timing {

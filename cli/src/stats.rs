@@ -68,7 +68,7 @@ pub fn write_stats(
         },
     });
     let text = serde_json::to_string_pretty(&v)? + "\n";
-    write_atomic(path, |w| {
+    write_atomic(path, &scene.files, |w| {
         w.write_all(text.as_bytes())?;
         Ok(())
     })

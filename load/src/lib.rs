@@ -92,7 +92,9 @@ pub fn load(path: &Path, opts: &LoadOptions) -> Result<Scene, LoadError> {
         return load_scene_file(path, opts).map(|(scene, _)| scene);
     }
     let bytes = refs::read(path)?;
-    load_bytes(&bytes, format, path, opts)
+    let mut scene = load_bytes(&bytes, format, path, opts)?;
+    scene.files.insert(0, path.to_path_buf());
+    Ok(scene)
 }
 
 /// Parses `bytes` as `format`. `path` names the data in messages, and its folder is

@@ -341,6 +341,7 @@ impl Obj<'_> {
             let file = refs::resolve(&name, &at, self.opts)?;
             match std::fs::read(&file) {
                 Ok(bytes) => {
+                    self.scene.files.push(file.clone());
                     mtl::parse(&bytes, &file, &mut self.library, &mut self.scene.warnings)?
                 }
                 Err(e) => self.scene.warnings.push(format!(

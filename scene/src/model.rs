@@ -177,6 +177,10 @@ pub struct Scene {
     pub camera: Option<Camera>,
     /// Warnings collected while loading (missing MTL, dropped faces, ...).
     pub warnings: Vec<String>,
+    /// The files the scene was read from: the input and every file it referenced
+    /// (material libraries, buffers, a scene file's meshes). A program writing a picture
+    /// must never write over one of them.
+    pub files: Vec<std::path::PathBuf>,
 }
 
 impl Scene {
@@ -366,5 +370,6 @@ impl Scene {
         }
         self.lights.extend_from_slice(&other.lights);
         self.warnings.extend(other.warnings.iter().cloned());
+        self.files.extend(other.files.iter().cloned());
     }
 }

@@ -98,12 +98,14 @@ pub(crate) fn split_glb<'a>(
     Ok((json, bin))
 }
 
-/// Loads every buffer of `doc`, each cut to its declared length.
+/// Loads every buffer of `doc`, each cut to its declared length, and records in `files`
+/// every external file read.
 pub(crate) fn buffers<'a>(
     doc: &Document,
     blob: Option<&'a [u8]>,
     path: &Path,
     opts: &LoadOptions,
+    files: &mut Vec<std::path::PathBuf>,
 ) -> Result<Vec<Cow<'a, [u8]>>, LoadError> {
     let mut out = Vec::new();
     for buffer in doc.buffers() {
@@ -127,7 +129,10 @@ pub(crate) fn buffers<'a>(
                             what: format!("remote buffer {uri:?}"),
                         });
                     }
-                    Cow::Owned(refs::read(&refs::resolve(&name, &at, opts)?)?)
+                    let file = refs::resolve(&name, &at, opts)?;
+                    let bytes = refs::read(&file)?;
+                    files.push(file);
+                    Cow::Owned(bytes)
                 }
             },
         };

@@ -70,11 +70,15 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
             });
         }
     }
-    let buffers = data::buffers(&doc, blob, path, opts)?;
+    let mut files = Vec::new();
+    let buffers = data::buffers(&doc, blob, path, opts, &mut files)?;
     let mut b = Builder {
         path,
         buffers: &buffers,
-        scene: Scene::default(),
+        scene: Scene {
+            files,
+            ..Scene::default()
+        },
         materials: HashMap::new(),
         skipped_modes: 0,
         triangles: 0,

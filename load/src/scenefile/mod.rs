@@ -93,7 +93,8 @@ pub fn load_scene_file(
             at: Location::file(path),
         });
     }
-    let (scene, options) = parse(&bytes, path, opts)?;
+    let (mut scene, options) = parse(&bytes, path, opts)?;
+    scene.files.insert(0, path.to_path_buf());
     let scene = super::checked(scene, path)?;
     Ok((scene, options))
 }
