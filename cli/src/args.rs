@@ -121,7 +121,7 @@ pub struct ViewArgs {
     #[arg(long, value_name = "X,Y,Z", value_parser = parse_vec3, allow_hyphen_values = true)]
     pub up: Option<[f64; 3]>,
     /// Vertical field of view in degrees [default: 45].
-    #[arg(long, value_name = "DEG", value_parser = parse_fov)]
+    #[arg(long, value_name = "DEG", value_parser = parse_fov, allow_negative_numbers = true)]
     pub fov: Option<f64>,
     /// Visibility ordering: adaptive (exact pairwise order, splitting only cycles), bsp,
     /// newell, or simple (one depth per polygon, a baseline) [default: adaptive, or the
@@ -136,6 +136,15 @@ pub struct ViewArgs {
     /// scene file's].
     #[arg(long, value_parser = cull_parser())]
     pub cull: Option<CullMode>,
+    /// Distance of the near clipping plane from the eye; geometry closer than this is
+    /// cut away (with a warning) [default: the scene file's, else just before the nearest
+    /// corner of the scene's bounds, but at least far / 10⁴].
+    #[arg(long, value_name = "DIST", value_parser = parse_distance, allow_negative_numbers = true)]
+    pub near: Option<f64>,
+    /// Distance of the far plane from the eye (only depth precision of image-space
+    /// methods depends on it) [default: just beyond the farthest corner of the bounds].
+    #[arg(long, value_name = "DIST", value_parser = parse_distance, allow_negative_numbers = true)]
+    pub far: Option<f64>,
     /// Follow references (MTL, buffers, meshes) that lead outside the input's folder.
     #[arg(long)]
     pub allow_outside: bool,
@@ -164,8 +173,18 @@ pub struct RenderArgs {
     /// Width in pixels of the seam flaps that close the hairlines viewers leave between
     /// adjacent faces: each opaque face is extended this far under the neighbours painted
     /// after it, which cover the flap, so the picture is unchanged (0 = none).
-    #[arg(long, value_name = "PX", default_value_t = 0.5, value_parser = parse_seams)]
+    #[arg(
+        long,
+        value_name = "PX",
+        default_value_t = 0.5,
+        value_parser = parse_seams,
+        allow_negative_numbers = true
+    )]
     pub seams: f64,
+    /// Background colour: #rrggbb, R,G,B in 0..1, or `none` (transparent) [default: the
+    /// scene file's, else none].
+    #[arg(long, value_name = "COLOUR", value_parser = parse_background)]
+    pub background: Option<Background>,
     /// How to render: painter's order (vector) or an image-space method (PNG only).
     #[arg(long, value_enum, default_value_t = MethodArg::Painter)]
     pub method: MethodArg,
@@ -247,6 +266,47 @@ fn parse_fov(s: &str) -> Result<f64, String> {
         return Err(format!("field of view `{s}` is outside (0, 180) degrees"));
     }
     Ok(f)
+}
+
+/// A `--background` value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Background {
+    /// Transparent: no background is painted.
+    None,
+    /// An opaque colour, channels in 0..1.
+    Colour([f64; 3]),
+}
+
+fn parse_background(s: &str) -> Result<Background, String> {
+    let t = s.trim();
+    if t.eq_ignore_ascii_case("none") {
+        return Ok(Background::None);
+    }
+    if let Some(h) = t.strip_prefix('#') {
+        let ch = |i: usize| h.get(i..i + 2).and_then(|c| u8::from_str_radix(c, 16).ok());
+        return match (h.len(), ch(0), ch(2), ch(4)) {
+            (6, Some(r), Some(g), Some(b)) => {
+                Ok(Background::Colour([r, g, b].map(|v| v as f64 / 255.0)))
+            }
+            _ => Err(format!("`{s}` is not a #rrggbb colour")),
+        };
+    }
+    let v = parse_vec3(t).map_err(|_| format!("`{s}` is not #rrggbb, R,G,B or none"))?;
+    if v.iter().any(|c| !(0.0..=1.0).contains(c)) {
+        return Err(format!("colour channels in `{s}` must be between 0 and 1"));
+    }
+    Ok(Background::Colour(v))
+}
+
+fn parse_distance(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if !(v.is_finite() && v > 0.0) {
+        return Err(format!("distance `{s}` must be a positive number"));
+    }
+    Ok(v)
 }
 
 fn parse_seams(s: &str) -> Result<f64, String> {

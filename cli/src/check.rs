@@ -72,7 +72,21 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         "fragments": ordered.fragments.len(),
         "splits": ordered.stats.splits,
         "per_face": per_face,
+        // Both sides draw through the same near plane: what it cuts away, neither shows,
+        // and the comparison cannot see it.
+        "near": ordered.near,
+        "faces_near_clipped_by_both": ordered.stats.faces_near_clipped,
     });
+    if ordered.stats.faces_near_clipped > 0 && !a.view.quiet {
+        eprintln!(
+            "limn: warning: {} faces come closer to the eye than the near plane ({:.6e}); the \
+             painter and {} both cut them there, so this comparison does not cover the cut \
+             parts (set --near to move it)",
+            ordered.stats.faces_near_clipped,
+            ordered.near,
+            method.name()
+        );
+    }
     let text = serde_json::to_string_pretty(&v)? + "\n";
     match &a.view.stats {
         Some(p) => write_atomic(p, &scene.files, |out| {

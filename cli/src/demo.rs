@@ -120,7 +120,7 @@ pub fn run(a: DemoArgs) -> Result<ExitCode> {
         write: (t3 - t2).as_secs_f64() * 1e3,
         total: t0.elapsed().as_secs_f64() * 1e3,
     };
-    write_stats(&a.stats, &scene, &ordered, &oo, ps.paths, ps.bytes, &timing)?;
+    write_stats(&a.stats, &scene, &ordered, &oo, &ps, &timing, &[])?;
     if !a.quiet && output.as_os_str() != "-" {
         eprintln!(
             "limn: wrote {} ({} faces, {} fragments, {} splits)",

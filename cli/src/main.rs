@@ -4,6 +4,7 @@
 mod args;
 mod check;
 mod demo;
+mod losses;
 mod output;
 mod progress;
 mod raster;

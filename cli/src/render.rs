@@ -7,7 +7,8 @@ use anyhow::{bail, Context, Result};
 use limn_depthsort::order;
 use limn_paint::{painter_for, picture, Format, Outline, Style};
 
-use crate::args::{MethodArg, RenderArgs};
+use crate::args::{Background, MethodArg, RenderArgs};
+use crate::losses::losses;
 use crate::output::{check_writable, write_atomic};
 use crate::progress::Progress;
 use crate::raster::raster;
@@ -57,7 +58,11 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         seamless: true,
         smooth: true,
         seams: a.seams,
-        background: fo.background.map(|c| [c[0], c[1], c[2], 1.0]),
+        background: match a.background {
+            Some(Background::None) => None,
+            Some(Background::Colour(c)) => Some([c[0], c[1], c[2], 1.0]),
+            None => fo.background.map(|c| [c[0], c[1], c[2], 1.0]),
+        },
         outline: (a.outline || fo.outline == Some(true)).then(|| {
             let c = fo.outline_color.unwrap_or([0.1, 0.1, 0.1]);
             Outline {
@@ -75,6 +80,13 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     )?;
     let t3 = Instant::now();
     drop(progress);
+    let lost = losses(&loaded.scene, &ordered, &ps, format, cam.near.is_some());
+    if !a.view.quiet {
+        for w in &lost {
+            eprintln!("limn: warning: {w}");
+        }
+    }
+    let warnings: Vec<String> = loaded.scene.warnings.iter().chain(&lost).cloned().collect();
     let timing = Timing {
         load: (t1 - t0).as_secs_f64() * 1e3,
         order: (t2 - t1).as_secs_f64() * 1e3,
@@ -86,9 +98,9 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         &loaded.scene,
         &ordered,
         &oo,
-        ps.paths,
-        ps.bytes,
+        &ps,
         &timing,
+        &warnings,
     )?;
     if !a.view.quiet && output.as_os_str() != "-" {
         eprintln!(

@@ -112,6 +112,12 @@ pub fn camera(
     if let Some(u) = view.up {
         cam.up = DVec3::from(u);
     }
+    if view.near.is_some() {
+        cam.near = view.near;
+    }
+    if view.far.is_some() {
+        cam.far = view.far;
+    }
     cam.validate()
         .with_context(|| format!("{}: invalid camera", at()))?;
     Ok(cam)

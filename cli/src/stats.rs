@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::Result;
 use limn_depthsort::{OrderOptions, Ordered};
+use limn_paint::PaintStats;
 use limn_scene::{Effects, Scene};
 use serde_json::json;
 
@@ -27,9 +28,9 @@ pub fn write_stats(
     scene: &Scene,
     ordered: &Ordered,
     oo: &OrderOptions,
-    paths_out: usize,
-    bytes: u64,
+    ps: &PaintStats,
     t: &Timing,
+    warnings: &[String],
 ) -> Result<()> {
     let Some(path) = path else { return Ok(()) };
     let s = &ordered.stats;
@@ -43,6 +44,7 @@ pub fn write_stats(
         "faces_culled": s.faces_culled,
         "faces_degenerate": s.faces_degenerate,
         "faces_clipped": s.faces_clipped,
+        "faces_near_clipped": s.faces_near_clipped,
         "polygons": s.polygons,
         "candidate_pairs": s.candidate_pairs,
         "constraints": s.constraints,
@@ -51,12 +53,13 @@ pub fn write_stats(
         "splits": s.splits,
         "fragments_before_merge": s.fragments_before_merge,
         "fragments_out": s.fragments_out,
-        "paths_out": paths_out,
-        "bytes_out": bytes,
+        "paths_out": ps.paths,
+        "bytes_out": ps.bytes,
         "filter_fallbacks": s.filter_fallbacks,
         "sort": oo.sort.name(),
         "arith": oo.arith.name(),
         "effects": effect_names,
+        "warnings": warnings,
         "ms": {
             "load": t.load,
             "order": t.order,

@@ -158,12 +158,15 @@ impl Default for OrderOptions {
 pub struct Stats {
     /// Faces in the scene.
     pub faces_in: usize,
-    /// Faces of zero area after quantisation (dropped).
+    /// Faces of zero area as given (collinear or repeated corners): dropped.
     pub faces_degenerate: usize,
     /// Faces culled as back faces or seen exactly edge-on.
     pub faces_culled: usize,
     /// Faces removed entirely by the near plane or outside the view.
     pub faces_clipped: usize,
+    /// Faces of which the near plane cut away a part in front of the eye (drawn only in
+    /// part, or not at all): geometry closer to the eye than the near plane is lost.
+    pub faces_near_clipped: usize,
     /// Convex polygons entering the ordering.
     pub polygons: usize,
     /// Pairs whose projections may overlap (after the float prefilter).

@@ -84,6 +84,10 @@ pub(crate) fn prepare<K: Kernel>(
     let eye_world = ctx.camera.eye;
     let fwd = ctx.camera.forward();
     let near_plane = ctx.k.plane_through(eye_world + fwd * near, fwd)?;
+    // The plane through the eye facing forward: what lies behind it is behind the camera
+    // (not in view at all); only what lies between it and the near plane is lost.
+    let eye_plane = ctx.k.plane_through(eye_world, fwd)?;
+    let frustum = view_sides(ctx)?;
     let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
     let mut items = Vec::new();
     let mut corners = Vec::new();
@@ -101,6 +105,7 @@ pub(crate) fn prepare<K: Kernel>(
         let mut culled_all = true;
         let mut intact = true;
         let mut facing = None;
+        let mut lost_to_near = false;
         for poly in polys {
             let plane = ctx.k.support(&poly);
             let side = ctx.k.side_of_point(&plane, &ctx.eye);
@@ -123,6 +128,7 @@ pub(crate) fn prepare<K: Kernel>(
                 PolygonSide::Front => poly,
                 PolygonSide::Spanning => {
                     intact = false;
+                    lost_to_near |= lost_in_view(ctx, &poly, &near_plane, &eye_plane, &frustum);
                     ctx.stats.splits += 1;
                     match ctx.k.split(&poly, &near_plane).0 {
                         Some(p) => p,
@@ -131,6 +137,7 @@ pub(crate) fn prepare<K: Kernel>(
                 }
                 _ => {
                     intact = false;
+                    lost_to_near |= lost_in_view(ctx, &poly, &near_plane, &eye_plane, &frustum);
                     continue;
                 }
             };
@@ -149,6 +156,7 @@ pub(crate) fn prepare<K: Kernel>(
             items.push(id);
         }
         whole[fi] = intact && kept_any;
+        ctx.stats.faces_near_clipped += lost_to_near as usize;
         if culled_all {
             ctx.stats.faces_culled += 1;
         } else if !kept_any {
@@ -157,4 +165,53 @@ pub(crate) fn prepare<K: Kernel>(
     }
     ctx.stats.polygons = items.len();
     Ok((items, whole))
+}
+
+/// The four side planes of the view pyramid through the eye, each facing inwards.
+fn view_sides<K: Kernel>(ctx: &Ctx<'_, K>) -> Result<[K::Plane; 4], OrderError> {
+    let cam = ctx.camera;
+    let f = cam.forward();
+    let r = f.cross(cam.up).normalize();
+    let u = r.cross(f);
+    let th = (cam.fov_deg.to_radians() * 0.5).tan();
+    let tw = th * cam.aspect();
+    let eye = cam.eye;
+    Ok([
+        ctx.k.plane_through(eye, f * tw + r)?,
+        ctx.k.plane_through(eye, f * tw - r)?,
+        ctx.k.plane_through(eye, f * th + u)?,
+        ctx.k.plane_through(eye, f * th - u)?,
+    ])
+}
+
+/// Whether the near plane cuts away a part of `poly` that the camera would see: some of
+/// what lies behind `near` is in front of the eye's plane and inside the view pyramid
+/// (clipped exactly, one plane after another). A warning depends on it, no picture does.
+fn lost_in_view<K: Kernel>(
+    ctx: &Ctx<'_, K>,
+    poly: &K::Polygon,
+    near: &K::Plane,
+    eye_plane: &K::Plane,
+    sides: &[K::Plane; 4],
+) -> bool {
+    let behind_near = match ctx.k.classify(poly, near) {
+        PolygonSide::Front => return false,
+        PolygonSide::Spanning => match ctx.k.split(poly, near).1 {
+            Some(p) => p,
+            None => return false,
+        },
+        _ => poly.clone(),
+    };
+    let mut part = behind_near;
+    for plane in std::iter::once(eye_plane).chain(sides) {
+        part = match ctx.k.classify(&part, plane) {
+            PolygonSide::Front => part,
+            PolygonSide::Spanning => match ctx.k.split(&part, plane).0 {
+                Some(p) => p,
+                None => return false,
+            },
+            _ => return false,
+        };
+    }
+    true
 }

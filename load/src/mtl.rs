@@ -1,8 +1,9 @@
 //! Wavefront MTL material libraries.
 //!
 //! Read: `newmtl`, `Kd`, `Ka`, `Ks` (RGB triples), `Ns`, `d` (opacity, also with
-//! `-halo`), `Tr` (= 1 − d), `illum` (0–10). Other statements (texture maps, `Ke`, `Ni`,
-//! PBR extensions) are ignored: limn draws flat colours. A material starts from
+//! `-halo`), `Tr` (= 1 − d), `illum` (0–10). Texture maps (`map_Kd`, `bump`, …) are not
+//! drawn, with one warning per library naming the first; other statements (`Ke`, `Ni`,
+//! PBR extensions) are ignored. A material starts from
 //! [`Material::default_grey`] and the statements override its fields. Colours outside
 //! [0, 1] are clamped with a warning; non-finite numbers are errors.
 //!
@@ -31,6 +32,8 @@ pub(crate) fn parse(
 ) -> Result<(), LoadError> {
     let mut lines = Lines::new(bytes, path, true);
     let mut current: Option<Material> = None;
+    // The first texture statement, reported once per library.
+    let mut textures: Option<(u64, String)> = None;
     while let Some(next) = lines.next_line() {
         let (n, line) = next?;
         let line = strip_comment(&line);
@@ -115,13 +118,28 @@ pub(crate) fn parse(
                 }
                 m.illum = v as u8;
             }
+            _ if is_texture(key) => {
+                textures.get_or_insert((n, lossy(key)));
+            }
             _ => {}
         }
     }
     if let Some(m) = current.take() {
         lib.materials.insert(m.name.clone(), m);
     }
+    if let Some((line, key)) = textures {
+        warnings.push(format!(
+            "{}:{line}: texture maps ({key} and any later ones) are not drawn; faces get \
+             their material's Kd colour",
+            path.display()
+        ));
+    }
     Ok(())
+}
+
+/// Texture and bump map statements.
+fn is_texture(key: &[u8]) -> bool {
+    key.starts_with(b"map_") || matches!(key, b"bump" | b"disp" | b"decal" | b"refl")
 }
 
 fn is_known(key: &[u8]) -> bool {
@@ -166,7 +184,9 @@ mod tests {
         assert_eq!((red.ns, red.illum, red.opacity), (20.0, 2, 0.75));
         let g = &lib.materials["unlit glass"];
         assert_eq!((g.kd, g.opacity, g.illum), ([0.2; 3], 0.5, 0));
-        assert!(w.is_empty());
+        // The texture map is the one thing not drawn: one warning at its line.
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(w[0].starts_with("a.mtl:12: texture maps (map_Kd"), "{w:?}");
     }
 
     #[test]

@@ -89,6 +89,8 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
     let mut scene = Scene::default();
     let object = scene.add_object(&stem(path));
     let mut vertex_colours: Vec<[f64; 4]> = Vec::new();
+    // Faces whose corners have different colours, drawn with their mean.
+    let mut averaged = 0usize;
     let mut has_normals = false;
     let mut seen_vertex = false;
     let mut materials: BitsMap<[u64; 4], u32> = BitsMap::default();
@@ -199,6 +201,11 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                     let rgba = match colour {
                         Some(c) => Some(c.read(el, &vals)),
                         None if !vertex_colours.is_empty() => {
+                            let first = vertex_colours[vertices[0] as usize];
+                            averaged += vertices
+                                .iter()
+                                .any(|&v| vertex_colours[v as usize] != first)
+                                as usize;
                             let mut sum = [0.0; 4];
                             for &v in &vertices {
                                 for (s, c) in sum.iter_mut().zip(vertex_colours[v as usize]) {
@@ -232,6 +239,13 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                 }
             }
         }
+    }
+    if averaged > 0 {
+        scene.warnings.push(format!(
+            "{}: {averaged} faces have corners of different colours; each is drawn in the \
+             mean of its corners' colours",
+            path.display()
+        ));
     }
     let trailing = src.trailing();
     if trailing > 0 {

@@ -1,0 +1,73 @@
+//! What the user gave that the picture does not show as given: one warning per kind,
+//! printed on standard error and listed in `--stats`.
+
+use limn_depthsort::Ordered;
+use limn_paint::{Format, PaintStats};
+use limn_scene::Scene;
+
+/// The warnings of one painter's run, after ordering and writing.
+///
+/// `near_given` says whether the near plane came from the user (flag or scene file): an
+/// automatic one gets advice to set `--near`.
+pub fn losses(
+    scene: &Scene,
+    ordered: &Ordered,
+    ps: &PaintStats,
+    format: Format,
+    near_given: bool,
+) -> Vec<String> {
+    let s = &ordered.stats;
+    let mut out = Vec::new();
+    if s.faces_near_clipped > 0 {
+        let advice = if near_given {
+            String::new()
+        } else {
+            format!(
+                " (the automatic near plane at {:.6e} from the eye; set a smaller --near or \
+                 move the eye)",
+                ordered.near
+            )
+        };
+        out.push(format!(
+            "{} faces come closer to the eye than the near plane and are cut there{advice}",
+            s.faces_near_clipped
+        ));
+    }
+    if s.faces_degenerate > 0 {
+        out.push(format!(
+            "{} faces have zero area as given (collinear or repeated corners) and are not drawn",
+            s.faces_degenerate
+        ));
+    }
+    if ps.approximated > 0 {
+        let what = match format {
+            Format::Eps => {
+                "translucent fills or outlines: EPS has no opacity, so they are \
+                            blended with the background instead"
+            }
+            Format::Svg => {
+                "smoothly shaded fragments: SVG has no mesh gradient, so each is \
+                            filled with the mean of its corner colours"
+            }
+            _ => "fragments the format can only approximate",
+        };
+        out.push(format!("{} {what}", ps.approximated));
+    }
+    if ps.skipped > 0 {
+        out.push(format!(
+            "{} fragments with invalid coordinates were not painted",
+            ps.skipped
+        ));
+    }
+    if ordered.fragments.is_empty() {
+        out.push(format!(
+            "the picture is empty: of {} faces, {} are back faces or edge-on, {} degenerate, \
+             {} outside the view or behind the near plane",
+            scene.faces.len(),
+            s.faces_culled,
+            s.faces_degenerate,
+            s.faces_clipped
+        ));
+    }
+    out
+}
