@@ -145,6 +145,11 @@ pub struct ViewArgs {
     /// methods depends on it) [default: just beyond the farthest corner of the bounds].
     #[arg(long, value_name = "DIST", value_parser = parse_distance, allow_negative_numbers = true)]
     pub far: Option<f64>,
+    /// Stop with an error (and no output) once ordering has made this many fragments
+    /// (every polygon and every piece of every split counts) [default: 50 per face +
+    /// 200,000].
+    #[arg(long, value_name = "N")]
+    pub max_fragments: Option<usize>,
     /// Follow references (MTL, buffers, meshes) that lead outside the input's folder.
     #[arg(long)]
     pub allow_outside: bool,

@@ -12,7 +12,7 @@ use crate::losses::losses;
 use crate::output::{check_writable, write_atomic};
 use crate::progress::Progress;
 use crate::raster::raster;
-use crate::setup::{camera, format_of, load, order_options};
+use crate::setup::{camera, explain_order, format_of, load, order_options};
 use crate::stats::{write_stats, Timing};
 
 /// Runs `limn render`.
@@ -49,8 +49,7 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     }
     let t1 = Instant::now();
     progress.phase("ordering");
-    let ordered =
-        order(&loaded.scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
+    let ordered = order(&loaded.scene, &cam, &oo).map_err(|e| explain_order(e, &a.input))?;
     let t2 = Instant::now();
     progress.phase("writing");
     let fo = &loaded.opts;

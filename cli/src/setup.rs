@@ -5,7 +5,7 @@ use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 use glam::DVec3;
-use limn_depthsort::{Arith, CullMode, OrderOptions, SortMode};
+use limn_depthsort::{Arith, CullMode, OrderError, OrderOptions, SortMode};
 use limn_load::{load_scene_file, LoadError, LoadOptions, SceneOptions};
 use limn_paint::Format;
 use limn_scene::{Camera, Scene};
@@ -153,6 +153,7 @@ pub fn order_options(view: &ViewArgs, file: &SceneOptions) -> Result<OrderOption
         sort,
         arith,
         cull,
+        max_fragments: view.max_fragments,
         ..OrderOptions::default()
     })
 }
@@ -174,4 +175,14 @@ pub fn format_of(output: &Path, flag: Option<Format>) -> Result<Format> {
         }),
         None => Ok(Format::Svg),
     }
+}
+
+/// An ordering error, with the flag that lifts a fragment limit.
+pub fn explain_order(e: OrderError, input: &Path) -> anyhow::Error {
+    let hint = match e {
+        OrderError::TooManyFragments { .. } => " (raise --max-fragments to go on)",
+        _ => "",
+    };
+    let text = format!("{}{hint}", input.display());
+    anyhow::Error::new(e).context(text)
 }

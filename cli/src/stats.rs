@@ -53,6 +53,8 @@ pub fn write_stats(
         "splits": s.splits,
         "fragments_before_merge": s.fragments_before_merge,
         "fragments_out": s.fragments_out,
+        "fragments_made": s.fragments_made,
+        "fragment_limit": s.fragment_limit,
         "paths_out": ps.paths,
         "bytes_out": ps.bytes,
         "filter_fallbacks": s.filter_fallbacks,

@@ -49,7 +49,9 @@ use glam::DVec3;
 use limn_kernel::{ExactKernel, FloatKernel, Kernel};
 use limn_scene::{Camera, Scene};
 
-pub use crate::options::{Arith, CullMode, OrderError, OrderOptions, SortMode, Stats};
+pub use crate::options::{
+    default_max_fragments, Arith, CullMode, OrderError, OrderOptions, SortMode, Stats,
+};
 use crate::pieces::Ctx;
 
 /// One output fragment: a convex piece of one input face.
@@ -152,9 +154,21 @@ fn ordered<K: Kernel>(
     let (near, far) = camera.near_far(scene);
     let vp = camera.view_projection(near, far);
     let mut ctx = Ctx::new(kernel, eye, *camera, vp, far, opts.seed);
+    let limit = opts
+        .max_fragments
+        .unwrap_or_else(|| default_max_fragments(scene.faces.len()));
+    ctx.limit = limit;
     let (items, whole_faces) = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
     let t1 = Instant::now();
     let order = sort(&mut ctx, items, opts);
+    if ctx.exceeded {
+        return Err(OrderError::TooManyFragments {
+            limit,
+            faces: scene.faces.len(),
+        });
+    }
+    ctx.stats.fragments_made = ctx.pieces.len();
+    ctx.stats.fragment_limit = limit;
     let t2 = Instant::now();
     ctx.stats.fragments_before_merge = order.len();
     let order = if opts.merge {

@@ -44,6 +44,11 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     pub margin: f64,
     /// Depth margin of the float prefilters.
     pub dmargin: f64,
+    /// Pieces at most (faces' polygons and every piece a split makes); beyond it splits
+    /// stop, `exceeded` is set, and the ordering reports an error instead of a result.
+    pub limit: usize,
+    /// Whether a split was refused because of `limit`.
+    pub exceeded: bool,
     rng: SplitMix,
     scratch: Vec<DVec3>,
 }
@@ -60,6 +65,8 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             stats: Stats::default(),
             margin: 1e-7 * size + 1e-9,
             dmargin: 1e-9 * far.abs().max(1e-300),
+            limit: usize::MAX,
+            exceeded: false,
             rng: SplitMix::new(seed),
             scratch: Vec::new(),
         }
@@ -131,6 +138,12 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         match self.k.classify(&piece.poly, plane) {
             PolygonSide::Front | PolygonSide::Coplanar => (Some(id), None),
             PolygonSide::Back | PolygonSide::CoplanarOpposite => (None, Some(id)),
+            PolygonSide::Spanning if self.pieces.len() + 2 > self.limit => {
+                // Over the limit: the result is discarded, so any side will do; the
+                // orderings still terminate (no piece is ever split again).
+                self.exceeded = true;
+                (Some(id), None)
+            }
             PolygonSide::Spanning => {
                 let (f, b) = self.k.split(&piece.poly, plane);
                 let face = piece.face;
