@@ -10,6 +10,7 @@ use serde_json::json;
 
 use crate::args::{AgainstArg, CheckArgs};
 use crate::output::{check_writable, write_atomic};
+use crate::progress::Progress;
 use crate::setup::{camera, load, order_options};
 
 /// Exit status when mismatches remain outside the edge band.
@@ -18,6 +19,7 @@ const MISMATCH: u8 = 3;
 /// Orders the scene, resolves which fragment covers each pixel centre, and compares the
 /// face ids with a reference.
 pub fn check(a: CheckArgs) -> Result<ExitCode> {
+    let progress = Progress::start(a.view.quiet);
     let loaded = load(&a.input, &a.view)?;
     let scene = &loaded.scene;
     let cam = camera(scene, &a.view, loaded.opts.size, &a.input)?;
@@ -25,6 +27,7 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     for path in a.diff.iter().chain(&a.view.stats) {
         check_writable(path, &scene.files)?;
     }
+    progress.phase("ordering");
     let painted = paint(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
     let ordered = &painted.ordered;
     let (w, h) = (ordered.camera.width, ordered.camera.height);
@@ -34,7 +37,9 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         AgainstArg::Warnock => Method::Warnock,
         AgainstArg::Scanline => Method::ScanLine,
     };
+    progress.phase("rendering the reference");
     let reference = painted.reference(scene, method, DepthFormat::F64)?;
+    progress.phase("comparing");
     let tol = default_band_tolerance(w, h);
     let cmp = painted.compare(&reference);
     if let Some(path) = &a.diff {
@@ -87,6 +92,7 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
             method.name()
         );
     }
+    drop(progress);
     let text = serde_json::to_string_pretty(&v)? + "\n";
     match &a.view.stats {
         Some(p) => write_atomic(p, &scene.files, |out| {

@@ -44,8 +44,10 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         if format != Format::Png {
             bail!("--method {:?} renders a raster: write a .png", a.method);
         }
+        progress.phase("rendering");
+        let done = raster(&loaded.scene, &cam, a.method, &output, &a.view, &oo);
         drop(progress);
-        return raster(&loaded.scene, &cam, a.method, &output, &a.view, &oo);
+        return done;
     }
     let t1 = Instant::now();
     progress.phase("ordering");
