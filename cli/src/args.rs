@@ -11,7 +11,7 @@ use limn_paint::Format;
 /// Draw 3D polygon scenes as resolution-independent pictures with hidden surfaces
 /// removed exactly.
 #[derive(Debug, Parser)]
-#[command(name = "limn", version, about, long_about = None)]
+#[command(name = "limn", version, about, long_about = None, after_help = MAIN_HELP)]
 pub struct Cli {
     /// What to do.
     #[command(subcommand)]
@@ -48,16 +48,49 @@ impl Cli {
     }
 }
 
+/// Exit statuses, shown under every help text.
+const EXIT_CODES: &str = "Exit status: 0 done (warnings go to standard error), 1 error (bad \
+input, refused output, limit reached; no output file is left), 2 usage error, 3 `check` \
+found pixels that disagree with the reference.";
+
+const MAIN_HELP: &str = "Examples:
+  limn demo                              # the built-in scene to demo.svg
+  limn render bunny.obj -o bunny.pdf     # any mesh or scene file, framed automatically
+  limn check bunny.obj --against raycast # the painter's picture against ray casting
+
+Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
+limit reached; no output file is left), 2 usage error, 3 `check` found pixels that \
+disagree with the reference.";
+
+const RENDER_HELP: &str = "Examples:
+  limn render scene.obj                          # scene.svg beside the input
+  limn render scene.toml -o fig.pdf --size 1200x900
+  limn render mesh.stl -o m.svg --eye 3,2,5 --target 0,0,0 --fov 30 --outline
+  limn render soup.obj -o s.png --method raycast # an image-space picture
+
+Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
+limit reached; no output file is left), 2 usage error.";
+
+const CHECK_HELP: &str = "Examples:
+  limn check scene.obj                            # against exact ray casting
+  limn check scene.obj --against raycast --diff d.png --stats report.json
+
+Exit status: 0 the pictures agree outside the edge band, 1 error, 2 usage error, 3 pixels \
+disagree (the report says where).";
+
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Render a scene file (OBJ, STL, PLY, glTF/GLB, or a TOML scene) to SVG, PDF, EPS or
     /// PNG.
+    #[command(after_help = RENDER_HELP)]
     Render(RenderArgs),
     /// Render the built-in demo scene (a cyclic overlap, two interpenetrating boxes and a
     /// shaded sphere) to demo.svg or OUTPUT.
+    #[command(after_help = EXIT_CODES)]
     Demo(DemoArgs),
     /// Compare the painter's result pixel by pixel with an image-space reference.
+    #[command(after_help = CHECK_HELP)]
     Check(CheckArgs),
 }
 

@@ -146,6 +146,20 @@ fn coordinate_overflowing_f64() {
 }
 
 #[test]
+fn twenty_digit_index_is_too_large_not_a_non_integer() {
+    let d = tempdir();
+    put(
+        d.path(),
+        "a.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n",
+    );
+    let e = fails(d.path(), "a.obj", &["a.obj:4", "too large"]);
+    assert!(!e.contains("not an integer"), "{e}");
+    put(d.path(), "b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x3\n");
+    fails(d.path(), "b.obj", &["b.obj:4", "not an integer"]);
+}
+
+#[test]
 fn face_index_out_of_range() {
     let d = tempdir();
     put(d.path(), "a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");

@@ -248,10 +248,16 @@ impl Obj<'_> {
     fn index(&self, n: u64, tok: &[u8], count: u64, what: &'static str) -> Result<u32, LoadError> {
         let at = || Location::line(self.path, n);
         let i = parse_i64(tok).ok_or_else(|| {
+            let digits = tok.strip_prefix(b"-").unwrap_or(tok);
+            let problem = if !digits.is_empty() && digits.iter().all(u8::is_ascii_digit) {
+                "is too large"
+            } else {
+                "is not an integer"
+            };
             LoadError::syntax(
                 self.path,
                 n,
-                format!("{what} index {:?} is not an integer", lossy(tok)),
+                format!("{what} index {:?} {problem}", lossy(tok)),
             )
         })?;
         let out = || LoadError::IndexOutOfRange {
