@@ -44,6 +44,7 @@ pub fn write_stats(
         "faces_culled": s.faces_culled,
         "faces_degenerate": s.faces_degenerate,
         "faces_clipped": s.faces_clipped,
+        "faces_coincident": s.faces_coincident,
         "faces_near_clipped": s.faces_near_clipped,
         "polygons": s.polygons,
         "candidate_pairs": s.candidate_pairs,

@@ -33,6 +33,7 @@
 
 mod adaptive;
 mod bsp;
+mod coincident;
 mod geom;
 mod merge;
 mod newell;

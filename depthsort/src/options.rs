@@ -174,6 +174,9 @@ pub struct Stats {
     pub faces_in: usize,
     /// Faces of zero area as given (collinear or repeated corners): dropped.
     pub faces_degenerate: usize,
+    /// Faces drawn over entirely by an identical later opaque face (same corners in the
+    /// same order): not ordered, and nothing of them would show.
+    pub faces_coincident: usize,
     /// Faces culled as back faces or seen exactly edge-on.
     pub faces_culled: usize,
     /// Faces removed entirely by the near plane or outside the view.

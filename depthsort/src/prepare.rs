@@ -6,31 +6,17 @@ use limn_kernel::Kernel;
 use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
+use crate::coincident::{canonical_vertices, hidden_by_later_copies};
 use crate::options::{CullMode, OrderError};
 use crate::pieces::{Ctx, NONE};
 
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
 /// (between vertex positions) must be used exactly once in each direction within the
 /// object.
-pub(crate) fn closed_opaque_objects(scene: &Scene) -> Vec<bool> {
+pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
     let n = scene.objects.len();
     let mut ok = vec![true; n];
     let mut has_faces = vec![false; n];
-    // Canonical vertex ids: vertices at the same position (bit for bit) share one.
-    let key = |v: usize| {
-        let p = scene.vertices[v];
-        [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
-    };
-    let mut by_pos: Vec<u32> = (0..scene.vertices.len() as u32).collect();
-    by_pos.sort_unstable_by_key(|&v| key(v as usize));
-    let mut canon = vec![0u32; scene.vertices.len()];
-    for (i, &v) in by_pos.iter().enumerate() {
-        canon[v as usize] = if i > 0 && key(by_pos[i - 1] as usize) == key(v as usize) {
-            canon[by_pos[i - 1] as usize]
-        } else {
-            v
-        };
-    }
     // Directed edges (object, from, to).
     let mut edges: Vec<(u32, u32, u32)> = Vec::new();
     for f in &scene.faces {
@@ -76,11 +62,13 @@ pub(crate) fn prepare<K: Kernel>(
     near: f64,
 ) -> Result<(Vec<u32>, Vec<bool>), OrderError> {
     let mut whole = vec![false; scene.faces.len()];
+    let canon = canonical_vertices(scene);
     let closed = match cull {
-        CullMode::Auto => closed_opaque_objects(scene),
+        CullMode::Auto => closed_opaque_objects(scene, &canon),
         CullMode::On => vec![true; scene.objects.len()],
         CullMode::Off => vec![false; scene.objects.len()],
     };
+    let hidden = hidden_by_later_copies(scene, &canon, &closed);
     let eye_world = ctx.camera.eye;
     let fwd = ctx.camera.forward();
     let near_plane = ctx.k.plane_through(eye_world + fwd * near, fwd)?;
@@ -93,6 +81,10 @@ pub(crate) fn prepare<K: Kernel>(
     let mut corners = Vec::new();
     for (fi, face) in scene.faces.iter().enumerate() {
         ctx.stats.faces_in += 1;
+        if hidden[fi] {
+            ctx.stats.faces_coincident += 1;
+            continue;
+        }
         corners.clear();
         corners.extend(face.vertices.iter().map(|&v| scene.vertices[v as usize]));
         let polys = ctx.k.face_polygons(&corners)?;

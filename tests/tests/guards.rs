@@ -49,3 +49,55 @@ fn hard_cases_stay_far_below_the_default_limit() {
     let bound = order(&case.scene, &case.camera, &tight).unwrap();
     assert_eq!(bound.fragments.len(), free.fragments.len());
 }
+
+/// `copies` copies of the corpus' woven grid, appended one after another.
+fn copies_of(case: &corpus::Case, copies: usize) -> limn_scene::Scene {
+    let mut s = limn_scene::Scene::default();
+    for _ in 0..copies {
+        s.append(&case.scene);
+    }
+    s
+}
+
+#[test]
+fn identical_copies_are_ordered_once() {
+    let case = corpus::woven_grid();
+    let one = order(&case.scene, &case.camera, &OrderOptions::default()).unwrap();
+    let many = copies_of(&case, 300);
+    for sort in [SortMode::Adaptive, SortMode::Bsp, SortMode::Newell] {
+        let opts = OrderOptions {
+            sort,
+            ..OrderOptions::default()
+        };
+        let o = order(&many, &case.camera, &opts).unwrap();
+        assert_eq!(
+            o.stats.faces_coincident,
+            299 * case.scene.faces.len(),
+            "{sort:?}"
+        );
+        // Only the last copy is ordered: as many fragments as one copy alone, and every
+        // fragment belongs to the last copy.
+        let first_of_last = 299 * case.scene.faces.len() as u32;
+        assert!(o.fragments.iter().all(|f| f.face >= first_of_last));
+        if sort == SortMode::Adaptive {
+            assert_eq!(o.fragments.len(), one.fragments.len());
+        }
+    }
+}
+
+#[test]
+fn a_translucent_later_copy_hides_nothing() {
+    let case = corpus::woven_grid();
+    let mut two = copies_of(&case, 2);
+    let glass = two.add_material(limn_scene::Material {
+        opacity: 0.5,
+        ..limn_scene::Material::default_grey()
+    });
+    let n = case.scene.faces.len();
+    for f in &mut two.faces[n..] {
+        f.material = glass;
+    }
+    let o = order(&two, &case.camera, &OrderOptions::default()).unwrap();
+    assert_eq!(o.stats.faces_coincident, 0);
+    assert!(o.fragments.iter().any(|f| (f.face as usize) < n));
+}
