@@ -95,8 +95,7 @@ pub fn run(a: DemoArgs) -> Result<ExitCode> {
         .clone()
         .unwrap_or_else(|| PathBuf::from("demo.svg"));
     let format = format_of(&output, None)?;
-    let mut cam = Camera::framing(&scene, 960, 540)?;
-    cam.eye = cam.target + (cam.eye - cam.target) * 0.8;
+    let cam = Camera::framing(&scene, 960, 540)?;
     let t1 = Instant::now();
     let oo = OrderOptions::default();
     let ordered = order(&scene, &cam, &oo)?;

@@ -85,10 +85,10 @@ pub fn camera(
         (None, None) => {
             let frame_error = || format!("{}: cannot frame the scene (try --eye)", at());
             let mut c = Camera::framing(scene, w, h).with_context(frame_error)?;
-            if let (Some(fov), Some((lo, hi))) = (view.fov, scene.bounds()) {
+            if let Some(fov) = view.fov {
                 // Re-frame for the new field of view, from the same direction.
                 let dir = c.eye - c.target;
-                c = Camera::framing_bounds(lo, hi, dir, fov, w, h).with_context(frame_error)?;
+                c = Camera::framing_scene(scene, dir, fov, w, h).with_context(frame_error)?;
             }
             if let Some(t) = view.target {
                 let t = DVec3::from(t);

@@ -96,11 +96,56 @@ impl Camera {
 
     /// A camera that frames the whole scene: it looks at the centre of the scene's
     /// bounding box from the direction [`DEFAULT_VIEW_DIRECTION`] (right, above, in
-    /// front), far enough that the bounding sphere fits the picture with a 5 % margin.
+    /// front), as close as the projected scene fits the picture with a 5 % margin (see
+    /// [`Camera::framing_scene`]).
     pub fn framing(scene: &Scene, width: u32, height: u32) -> Result<Camera, CameraError> {
+        let dir = DVec3::from(DEFAULT_VIEW_DIRECTION);
+        Camera::framing_scene(scene, dir, 45.0, width, height)
+    }
+
+    /// A camera looking at the centre of the scene's bounding box from direction `dir`
+    /// (target to eye), as close as every vertex of a face projects inside the picture
+    /// with a 5 % margin on each side, and never closer than a twentieth of the bounding
+    /// sphere's radius in front of the nearest vertex. The projected extent decides, not
+    /// the bounding sphere (which leaves most of the frame empty for flat or elongated
+    /// scenes).
+    pub fn framing_scene(
+        scene: &Scene,
+        dir: DVec3,
+        fov_deg: f64,
+        width: u32,
+        height: u32,
+    ) -> Result<Camera, CameraError> {
         let (lo, hi) = scene.bounds().ok_or(CameraError::EmptyScene)?;
-        let dir = DVec3::from(DEFAULT_VIEW_DIRECTION).normalize();
-        Camera::framing_bounds(lo, hi, dir, 45.0, width, height)
+        let mut cam = Camera::framing_bounds(lo, hi, dir, fov_deg, width, height)?;
+        let back = (cam.eye - cam.target).normalize();
+        let right = (-back).cross(cam.up).normalize();
+        let up = right.cross(-back);
+        let th = (fov_deg.to_radians() * 0.5).tan() / 1.05;
+        let tw = th * cam.aspect();
+        let radius = (hi - lo).length() * 0.5;
+        let mut dist: f64 = 0.0;
+        let mut nearest: f64 = f64::NEG_INFINITY;
+        for f in &scene.faces {
+            for &v in &f.vertices {
+                let w = scene.vertices[v as usize] - cam.target;
+                let along = w.dot(back);
+                nearest = nearest.max(along);
+                let need = along + (w.dot(right).abs() / tw).max(w.dot(up).abs() / th);
+                dist = dist.max(need);
+            }
+        }
+        let dist = dist.max(nearest + 0.05 * radius);
+        let eye = cam.target + back * dist;
+        if dist.is_finite()
+            && dist > 0.0
+            && dist < (cam.eye - cam.target).length()
+            && eye != cam.target
+        {
+            cam.eye = eye;
+        }
+        cam.validate()?;
+        Ok(cam)
     }
 
     /// A camera looking at the centre of `lo..hi` from direction `dir` (target to eye),
@@ -278,6 +323,56 @@ impl Camera {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The share of the picture's width and height the scene's projection spans, and
+    /// whether every vertex lies inside.
+    fn coverage(scene: &Scene, cam: &Camera) -> (f64, f64, bool) {
+        let (near, far) = cam.near_far(scene);
+        let vp = cam.view_projection(near, far);
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for f in &scene.faces {
+            for &v in &f.vertices {
+                let p = cam.project_with(&vp, scene.vertices[v as usize]);
+                lo = [lo[0].min(p.x), lo[1].min(p.y)];
+                hi = [hi[0].max(p.x), hi[1].max(p.y)];
+            }
+        }
+        let (w, h) = (cam.width as f64, cam.height as f64);
+        let inside = lo[0] >= 0.0 && lo[1] >= 0.0 && hi[0] <= w && hi[1] <= h;
+        ((hi[0] - lo[0]) / w, (hi[1] - lo[1]) / h, inside)
+    }
+
+    #[test]
+    fn framing_fits_the_projected_extent_not_the_bounding_sphere() {
+        let mut flat = Scene::default();
+        let m = flat.add_material(crate::Material::default_grey());
+        let o = flat.add_object("strip");
+        let pts = [
+            [-5.0, 0.0, -0.5],
+            [5.0, 0.0, -0.5],
+            [5.0, 0.0, 0.5],
+            [-5.0, 0.0, 0.5],
+        ];
+        flat.add_polygon(&pts.map(DVec3::from), m, o).unwrap();
+        for (w, h) in [(800, 600), (300, 900), (1920, 1080)] {
+            let cam = Camera::framing(&flat, w, h).unwrap();
+            let (cw, ch, inside) = coverage(&flat, &cam);
+            assert!(inside, "{w}x{h}: {cw} {ch}");
+            // Fills most of the frame in one direction.
+            assert!(cw.max(ch) > 0.75, "{w}x{h}: {cw} {ch}");
+            // Fitting the bounding sphere instead leaves much of it empty.
+            let (lo, hi) = flat.bounds().unwrap();
+            let dir = DVec3::from(DEFAULT_VIEW_DIRECTION);
+            let sphere = Camera::framing_bounds(lo, hi, dir, 45.0, w, h).unwrap();
+            let (sw, sh, _) = coverage(&flat, &sphere);
+            // (In a tall frame the sphere was already limited by the width.)
+            let gain = if w > h { 1.2 } else { 1.0 };
+            assert!(
+                cw.max(ch) > gain * sw.max(sh),
+                "{w}x{h}: {cw} {ch} vs {sw} {sh}"
+            );
+        }
+    }
 
     #[test]
     fn target_projects_to_picture_centre() {

@@ -137,12 +137,8 @@ pub(super) fn camera(
             Camera::new(eye, target, width, height)
         }
         None => {
-            let (lo, hi) = scene
-                .bounds()
-                .ok_or_else(|| cam_err(limn_scene::CameraError::EmptyScene))?;
             let dir = DVec3::from(DEFAULT_VIEW_DIRECTION);
-            let mut cam =
-                Camera::framing_bounds(lo, hi, dir, fov, width, height).map_err(cam_err)?;
+            let mut cam = Camera::framing_scene(scene, dir, fov, width, height).map_err(cam_err)?;
             if let Some(t) = target {
                 cam.eye = t + (cam.eye - cam.target);
                 cam.target = t;
