@@ -442,3 +442,27 @@ fn scene_file_with_an_unusable_camera() {
     let err = fails(d.path(), "s.toml", &["s.toml:1", "coincide"]);
     assert_eq!(err.matches("coincide").count(), 1, "repeated: {err}");
 }
+
+#[test]
+fn oversized_pictures_are_refused_without_internal_names() {
+    let d = tempdir();
+    put(d.path(), "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    for method in ["painter", "zbuffer"] {
+        let e = fails_with(
+            d.path(),
+            &[
+                "render",
+                "t.obj",
+                "-o",
+                "big.png",
+                "--size",
+                "60000x60000",
+                "--method",
+                method,
+            ],
+            "big.png",
+            &["60000x60000", "268,435,456"],
+        );
+        assert!(!e.contains("::") && !e.contains("max_pixels"), "{e}");
+    }
+}

@@ -113,7 +113,7 @@ impl PngPainter {
             return Err(PaintError::Size {
                 width,
                 height,
-                reason: "more pixels than PngOptions::max_pixels",
+                reason: "more pixels than PNG output allows (268,435,456 by default)",
             });
         }
         let mut pixmap = Pixmap::new(width, height).ok_or(PaintError::Size {

@@ -34,7 +34,9 @@ pub enum ZError {
     #[error("the A-buffer needs more than 2^32 - 1 fragments")]
     TooManyFragments,
     /// The picture has more pixels than [`crate::MAX_PIXELS`].
-    #[error("picture of {0}x{1} pixels is larger than the references render")]
+    #[error(
+        "picture of {0}x{1} pixels: the image-space methods render at most 268,435,456 pixels"
+    )]
     TooManyPixels(u32, u32),
     /// Two images that must have the same size do not.
     #[error("image sizes differ: {0}x{1} and {2}x{3}")]
