@@ -184,10 +184,15 @@ fn scene(case: &Case, cam: &Camera) -> Scene {
     s
 }
 
+/// The scene and camera a case describes (for turning a case into a regression test).
+pub fn scene_and_camera(case: &Case) -> (Scene, Camera) {
+    let cam = camera(case);
+    (scene(case, &cam), cam)
+}
+
 /// Orders the case's scene with every mode and checks the exact ones.
 pub fn run_case(case: &Case) {
-    let cam = camera(case);
-    let scene = scene(case, &cam);
+    let (scene, cam) = scene_and_camera(case);
     let cull = CullMode::ALL[case.cull as usize % 3];
     let kernel = ExactKernel::new();
     for sort in SortMode::ALL {
