@@ -249,9 +249,15 @@ pub fn run_case(case: &Case) {
     }
 }
 
+/// The [`Case`] that `data` decodes to, as [`run`] decodes it (`None`: skipped).
+/// Its `Debug` form is Rust source for a regression test.
+pub fn decode(data: &[u8]) -> Option<Case> {
+    Case::arbitrary_take_rest(Unstructured::new(data)).ok()
+}
+
 /// Decodes a [`Case`] from `data` and runs it; undecodable bytes are skipped.
 pub fn run(data: &[u8]) {
-    if let Ok(case) = Case::arbitrary_take_rest(Unstructured::new(data)) {
+    if let Some(case) = decode(data) {
         run_case(&case);
     }
 }
