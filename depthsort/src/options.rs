@@ -136,7 +136,8 @@ pub struct OrderOptions {
     pub seed: u64,
     /// Number of random splitter candidates tried per BSP node. Default: 5.
     pub candidates: usize,
-    /// Merge fragments of one face that are adjacent in the order. Default: true.
+    /// Merge fragments of one face and one plane that are adjacent in the order. Default:
+    /// true.
     pub merge: bool,
 }
 
