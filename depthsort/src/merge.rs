@@ -7,16 +7,23 @@ use std::collections::HashSet;
 
 use limn_kernel::Kernel;
 
+use crate::occlusion::Rel;
 use crate::pieces::{Ctx, NONE};
 
-/// Joins sibling pieces inside each run of consecutive pieces of the same face.
+/// Joins sibling pieces inside each run of consecutive pieces of the same face lying in
+/// the same plane. A non-planar face is triangulated into polygons of different planes,
+/// which may hide each other: a run never crosses from one such plane to another, or a
+/// join could move a piece across one it must be painted before or after.
 pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
     let mut out = Vec::with_capacity(order.len());
     let mut i = 0;
     while i < order.len() {
         let face = ctx.pieces[order[i] as usize].face;
         let mut j = i + 1;
-        while j < order.len() && ctx.pieces[order[j] as usize].face == face {
+        while j < order.len()
+            && ctx.pieces[order[j] as usize].face == face
+            && ctx.rel(order[j], order[i]) == Rel::Coplanar
+        {
             j += 1;
         }
         if j - i == 1 {
@@ -29,7 +36,7 @@ pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
     out
 }
 
-/// Pieces of one face never overlap each other in projection, so any order within the
+/// Pieces of one face in one plane never overlap each other in projection, so any order within the
 /// run is valid: join every pair of siblings present until none is left.
 fn merge_run<K: Kernel>(ctx: &Ctx<'_, K>, run: &[u32], out: &mut Vec<u32>) {
     let mut present: HashSet<u32> = run.iter().copied().collect();

@@ -136,7 +136,8 @@ pub struct OrderOptions {
     pub seed: u64,
     /// Number of random splitter candidates tried per BSP node. Default: 5.
     pub candidates: usize,
-    /// Merge fragments of one face that are adjacent in the order. Default: true.
+    /// Merge fragments of one face and one plane that are adjacent in the order. Default:
+    /// true.
     pub merge: bool,
     /// Most fragments the ordering may make, counting every polygon of a face and every
     /// piece a split makes (also those split again); `None` = [`default_max_fragments`]

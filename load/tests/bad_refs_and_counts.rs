@@ -345,3 +345,22 @@ fn gltf_invalid_documents() {
     assert!(matches!(e, LoadError::Syntax { .. }), "{e}");
     assert_at(&e, &p, Some(2));
 }
+
+#[test]
+fn gltf_position_accessor_out_of_range_is_an_error_not_a_panic() {
+    // `gltf-json` indexes the POSITION accessor while validating, unchecked (found by
+    // the `gltf` fuzz target); in a GLB as in JSON.
+    let d = dir();
+    let json =
+        quad_gltf(&data_uri(&quad_buffer()), 4).replace(r#""POSITION": 0"#, r#""POSITION": 5"#);
+    assert!(json.contains(r#""POSITION": 5"#));
+    let p = write(d.path(), "a.gltf", &json);
+    let e = err(&p);
+    assert!(matches!(e, LoadError::Invalid { .. }), "{e}");
+    assert!(e.to_string().contains("POSITION"), "{e}");
+    assert_at(&e, &p, None);
+    let glb_json = quad_gltf("", 4).replace(r#""POSITION": 0"#, r#""POSITION": 2"#);
+    let p = write(d.path(), "a.glb", glb(&glb_json, &quad_buffer()));
+    let e = err(&p);
+    assert!(matches!(e, LoadError::Invalid { .. }), "{e}");
+}

@@ -58,6 +58,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
     };
     let root: ::gltf::json::Root =
         ::gltf::json::deserialize::from_slice(json).map_err(|e| json_error(&e, path, glb))?;
+    check_position_accessors(&root, path)?;
     let doc = Document::from_json(root).map_err(|e| LoadError::Invalid {
         at: Location::file(path),
         message: validation_message(&e),
@@ -97,6 +98,33 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
             .push(format!("{}: no faces", path.display()));
     }
     Ok(b.scene)
+}
+
+/// `gltf-json` 1.4 reads the accessor of every primitive's `POSITION` attribute while
+/// validating, without checking that it exists (and panics when it does not): refuse
+/// such a reference before validation.
+fn check_position_accessors(root: &::gltf::json::Root, path: &Path) -> Result<(), LoadError> {
+    use ::gltf::json::mesh::Semantic;
+    use ::gltf::json::validation::Checked;
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, prim) in mesh.primitives.iter().enumerate() {
+            let Some(i) = prim.attributes.get(&Checked::Valid(Semantic::Positions)) else {
+                continue;
+            };
+            if i.value() >= root.accessors.len() {
+                return Err(LoadError::Invalid {
+                    at: Location::file(path),
+                    message: format!(
+                        "invalid glTF: meshes[{m}].primitives[{p}].attributes.POSITION: \
+                         accessor {} does not exist ({} accessors)",
+                        i.value(),
+                        root.accessors.len()
+                    ),
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 fn json_error(e: &::gltf::json::Error, path: &Path, glb: bool) -> LoadError {
