@@ -40,7 +40,21 @@ impl<K: Kernel> Ctx<'_, K> {
     /// Where piece `q` lies with respect to the plane of piece `p`.
     pub fn rel(&self, q: u32, p: u32) -> Rel {
         let pp = &self.pieces[p as usize];
-        let side = self.k.classify(&self.pieces[q as usize].poly, &pp.plane);
+        self.rel_of(p, self.k.classify(&self.pieces[q as usize].poly, &pp.plane))
+    }
+
+    /// [`Ctx::rel`] when the kernel can tell it cheaply.
+    fn rel_if_cheap(&self, q: u32, p: u32) -> Option<Rel> {
+        let pp = &self.pieces[p as usize];
+        let side = self
+            .k
+            .classify_if_cheap(&self.pieces[q as usize].poly, &pp.plane)?;
+        Some(self.rel_of(p, side))
+    }
+
+    /// The relation to `p`'s plane that a classification against it means.
+    fn rel_of(&self, p: u32, side: PolygonSide) -> Rel {
+        let pp = &self.pieces[p as usize];
         match side {
             PolygonSide::Front => {
                 if pp.eye_front {
@@ -65,11 +79,33 @@ impl<K: Kernel> Ctx<'_, K> {
     /// may overlap. Coplanar pieces of different faces: the later face in input order is
     /// painted last (it wins); pieces of one face never constrain each other.
     pub fn pair(&self, p: u32, q: u32) -> Pair {
-        let q_rel_p = self.rel(q, p);
+        // Neighbours in a mesh share a vertex and usually only touch on screen. When a
+        // plane side would need exact evaluation (nearly coplanar neighbours), the sector
+        // test at the shared vertex, made of well-conditioned orientations through the
+        // eye, is tried first.
+        let touching = self.share_projected_corner(p, q);
+        let mut sectors_tried = false;
+        let costly_rel = |a: u32, b: u32, tried: &mut bool| -> Option<Rel> {
+            if let Some(r) = self.rel_if_cheap(a, b) {
+                return Some(r);
+            }
+            if touching && !*tried {
+                *tried = true;
+                if self.only_touch(p, q) {
+                    return None;
+                }
+            }
+            Some(self.rel(a, b))
+        };
+        let Some(q_rel_p) = costly_rel(q, p, &mut sectors_tried) else {
+            return Pair::Free;
+        };
         if q_rel_p == Rel::Coplanar {
             return self.coplanar_rule(p, q);
         }
-        let p_rel_q = self.rel(p, q);
+        let Some(p_rel_q) = costly_rel(p, q, &mut sectors_tried) else {
+            return Pair::Free;
+        };
         if p_rel_q == Rel::Coplanar {
             return self.coplanar_rule(p, q);
         }
@@ -81,10 +117,18 @@ impl<K: Kernel> Ctx<'_, K> {
             (false, true) => Pair::FirstBefore,
             (false, false) => self.resolve_spanning(p, q),
         };
-        if pair != Pair::Free && self.only_touch(p, q) {
+        if pair != Pair::Free && touching && !sectors_tried && self.only_touch(p, q) {
             return Pair::Free;
         }
         pair
+    }
+
+    /// Whether some corner of `p` projects to exactly the same screen point as a corner
+    /// of `q`: necessary for them to share a vertex (one input point always projects to
+    /// the same f64 values), and cheap enough to screen every pair.
+    fn share_projected_corner(&self, p: u32, q: u32) -> bool {
+        let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
+        pp.pts.iter().any(|a| qq.pts.contains(a))
     }
 
     /// Whether `p` and `q` share a vertex at which their projections lie in disjoint
@@ -93,23 +137,29 @@ impl<K: Kernel> Ctx<'_, K> {
     pub fn only_touch(&self, p: u32, q: u32) -> bool {
         let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
         let (np, nq) = (self.k.vertex_count(&pp.poly), self.k.vertex_count(&qq.poly));
-        let qv: Vec<Option<K::ExactPoint>> =
-            (0..nq).map(|j| self.k.vertex_exact(&qq.poly, j)).collect();
         let e = self.k.point_exact(&self.eye);
         for i in 0..np {
+            // A shared vertex projects to the same screen point: only such corners are
+            // compared exactly.
+            let Some(j) = qq.pts.iter().position(|w| Some(w) == pp.pts.get(i)) else {
+                continue;
+            };
             let Some(v) = self.k.vertex_exact(&pp.poly, i) else {
                 continue;
             };
-            let Some(j) = qv.iter().position(|w| *w == Some(v)) else {
+            if self.k.vertex_exact(&qq.poly, j) != Some(v) {
                 continue;
-            };
+            }
             let (Some(p1), Some(p2)) = (
                 self.k.vertex_exact(&pp.poly, (i + np - 1) % np),
                 self.k.vertex_exact(&pp.poly, (i + 1) % np),
             ) else {
                 continue;
             };
-            let (Some(q1), Some(q2)) = (qv[(j + nq - 1) % nq], qv[(j + 1) % nq]) else {
+            let (Some(q1), Some(q2)) = (
+                self.k.vertex_exact(&qq.poly, (j + nq - 1) % nq),
+                self.k.vertex_exact(&qq.poly, (j + 1) % nq),
+            ) else {
                 continue;
             };
             let o = |a: &K::ExactPoint, b: &K::ExactPoint| self.k.orientation(&e, &v, a, b);

@@ -150,6 +150,13 @@ impl Kernel for ExactKernel {
         r
     }
 
+    fn classify_if_cheap(&self, poly: &ExactPolygon, plane: &Plane) -> Option<PolygonSide> {
+        if !self.filter {
+            return Some(self.classify(poly, plane));
+        }
+        poly.classify_filtered(plane)
+    }
+
     fn split(
         &self,
         poly: &ExactPolygon,

@@ -159,29 +159,72 @@ impl ExactPolygon {
     /// the exact evaluation (counted in `fallbacks`).
     #[inline]
     fn fine_side(&self, i: usize, h: &Plane, hf: &PlaneF, fallbacks: &mut u64) -> Side {
+        if let Some(s) = self.filtered_side(i, h, hf) {
+            return s;
+        }
+        *fallbacks += 1;
+        self.side_exact(i, h)
+    }
+
+    /// The side of vertex `i` by the per-vertex filter and the combinatorial shortcut,
+    /// or `None` when only exact evaluation can tell.
+    #[inline]
+    fn filtered_side(&self, i: usize, h: &Plane, hf: &PlaneF) -> Option<Side> {
         let c = &self.corners[i];
         if let Some(s) = hf.side(&c.pos, c.err as f64) {
-            return s;
+            return Some(s);
         }
         // The combinatorial shortcut: a vertex that defines the plane, or is defined by
         // it, lies on it (neighbouring faces share vertices; split vertices lie on their
         // cut).
         if c.err == 0.0 {
             if h.defined_by(&c.pos) {
-                return Side::On;
+                return Some(Side::On);
             }
         } else {
             let n = self.corners.len();
             let (a, b) = (&self.edges[(i + n - 1) % n], &self.edges[i]);
             if h.same_definition(&self.support) || h.same_definition(a) || h.same_definition(b) {
-                return Side::On;
+                return Some(Side::On);
             }
             if on_common_line(h, [&self.support, a, b]) {
-                return Side::On;
+                return Some(Side::On);
             }
         }
-        *fallbacks += 1;
-        self.side_exact(i, h)
+        None
+    }
+
+    /// Classification against `h` when the filters and shortcuts decide it (`None` when
+    /// some vertex needs exact evaluation and the answer is still open).
+    pub(crate) fn classify_filtered(&self, h: &Plane) -> Option<PolygonSide> {
+        let hf = PlaneF::new(h);
+        let coarse = self.coarse_bound(&hf);
+        let (mut front, mut back, mut unsure) = (false, false, false);
+        for (i, c) in self.corners.iter().enumerate() {
+            let side = match Self::coarse_sign(c, &hf, coarse) {
+                1 => Some(Side::Front),
+                -1 => Some(Side::Back),
+                _ => self.filtered_side(i, h, &hf),
+            };
+            match side {
+                Some(Side::Front) => front = true,
+                Some(Side::Back) => back = true,
+                Some(Side::On) => {}
+                None => unsure = true,
+            }
+            if front && back {
+                return Some(PolygonSide::Spanning);
+            }
+        }
+        if unsure {
+            return None;
+        }
+        Some(match (front, back) {
+            (true, _) => PolygonSide::Front,
+            (_, true) => PolygonSide::Back,
+            _ if self.support.same_facing(h) => PolygonSide::Coplanar,
+            _ => PolygonSide::CoplanarOpposite,
+        })
     }
 
     #[inline]

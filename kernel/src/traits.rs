@@ -37,13 +37,13 @@ pub trait Kernel: Sync {
     /// Converts a world point (the eye) for use in [`Kernel::side_of_point`].
     fn point(&self, p: DVec3) -> Result<Self::Point, KernelError>;
 
-    /// The world position a converted point stands for (the exact kernel snaps points to
-    /// its grid; projections should use this position so they agree with the decisions).
+    /// The world position a converted point stands for (the f64 point itself in both
+    /// kernels; projections use this position).
     fn point_world(&self, p: &Self::Point) -> DVec3;
 
-    /// A plane through (approximately) `point` with (approximately) `normal`; its front
-    /// side is the side `normal` points to. The exact kernel rounds to an integer plane;
-    /// every later decision about this plane is exact.
+    /// The plane through `point` with normal `normal` (both taken as the given f64
+    /// values); its front side is the side `normal` points to. Every later decision of the
+    /// exact kernel about this plane is exact.
     fn plane_through(&self, point: DVec3, normal: DVec3) -> Result<Self::Plane, KernelError>;
 
     /// The supporting plane of a polygon; its normal points to the polygon's front.
@@ -54,6 +54,13 @@ pub trait Kernel: Sync {
 
     /// Where `poly` lies with respect to `plane`.
     fn classify(&self, poly: &Self::Polygon, plane: &Self::Plane) -> PolygonSide;
+
+    /// [`Kernel::classify`] when it comes cheap (the exact kernel: without exact
+    /// evaluation); `None` when only a costly evaluation can tell, so that a caller with a
+    /// cheaper way to the answer it needs can try that first.
+    fn classify_if_cheap(&self, poly: &Self::Polygon, plane: &Self::Plane) -> Option<PolygonSide> {
+        Some(self.classify(poly, plane))
+    }
 
     /// Splits `poly` by `plane` into its part in front and its part behind. A polygon on
     /// one side is returned whole on that side; a coplanar polygon goes to the front when
