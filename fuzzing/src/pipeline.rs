@@ -10,11 +10,9 @@ use std::fmt;
 
 use arbitrary::{Arbitrary, Unstructured};
 use glam::DVec3;
-use limn_depthsort::{order, order_polygons, Arith, CullMode, OrderOptions, SortMode};
-use limn_kernel::ExactKernel;
+use limn_depthsort::{order, Arith, CullMode, OrderOptions, SortMode};
 use limn_scene::{Camera, Material, Scene};
-use limn_tests::checker::{q, Checker, ExactFragment, P3};
-use limn_tests::exact::exact_vertices;
+use limn_tests::exact::try_exact_run;
 
 use crate::VecLit;
 
@@ -194,7 +192,6 @@ pub fn scene_and_camera(case: &Case) -> (Scene, Camera) {
 pub fn run_case(case: &Case) {
     let (scene, cam) = scene_and_camera(case);
     let cull = CullMode::ALL[case.cull as usize % 3];
-    let kernel = ExactKernel::new();
     for sort in SortMode::ALL {
         let opts = OrderOptions {
             sort,
@@ -214,26 +211,20 @@ pub fn run_case(case: &Case) {
             },
         );
         // Invalid scenes and cameras are refused with a typed error.
-        let Ok((ordered, polys)) = order_polygons(&kernel, &scene, &cam, &opts) else {
+        let Ok(run) = try_exact_run(&scene, &cam, &opts) else {
             continue;
         };
-        assert_eq!(ordered.fragments.len(), polys.len(), "{}", sort.name());
+        assert_eq!(
+            run.ordered.fragments.len(),
+            run.fragments.len(),
+            "{}",
+            sort.name()
+        );
         if sort == SortMode::Simple {
             // One depth per polygon: wrong on hard cases by design.
             continue;
         }
-        let fragments: Vec<ExactFragment> = ordered
-            .fragments
-            .iter()
-            .zip(&polys)
-            .map(|(f, p)| ExactFragment {
-                face: f.face,
-                verts: exact_vertices(p),
-            })
-            .collect();
-        let eye: P3 = cam.eye.to_array().map(q);
-        let checker = Checker::new(eye, ordered.camera.forward().to_array());
-        let v = checker.violations(&fragments);
+        let v = run.checker.violations(&run.fragments);
         assert!(
             v.is_empty(),
             "{}: painted in the wrong order: {v:?}\ncase {case:?}",

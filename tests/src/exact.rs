@@ -2,7 +2,7 @@
 //! rational polygons for the [`crate::checker`].
 
 use glam::DVec3;
-use limn_depthsort::{order_polygons, OrderOptions, Ordered};
+use limn_depthsort::{order_polygons, OrderError, OrderOptions, Ordered};
 use limn_kernel::{ExactKernel, ExactPolygon, Plane, PlaneDef};
 use limn_scene::{Camera, Scene};
 use num_traits::Zero;
@@ -121,10 +121,20 @@ pub struct ExactRun {
     pub checker: Checker,
 }
 
-/// Orders `scene` with the exact kernel and prepares the exact check.
+/// Orders `scene` with the exact kernel and prepares the exact check; panics when the
+/// scene cannot be ordered (see [`try_exact_run`]).
 pub fn exact_run(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> ExactRun {
+    try_exact_run(scene, camera, opts).expect("orderable")
+}
+
+/// [`exact_run`], returning the ordering's error for scenes or cameras it refuses.
+pub fn try_exact_run(
+    scene: &Scene,
+    camera: &Camera,
+    opts: &OrderOptions,
+) -> Result<ExactRun, OrderError> {
     let kernel = ExactKernel::new();
-    let (ordered, polys) = order_polygons(&kernel, scene, camera, opts).expect("orderable");
+    let (ordered, polys) = order_polygons(&kernel, scene, camera, opts)?;
     let fragments = ordered
         .fragments
         .iter()
@@ -137,9 +147,9 @@ pub fn exact_run(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> ExactRu
     let eye: P3 = qp(camera.eye.to_array());
     let fwd: DVec3 = ordered.camera.forward();
     let checker = Checker::new(eye, fwd.to_array());
-    ExactRun {
+    Ok(ExactRun {
         ordered,
         fragments,
         checker,
-    }
+    })
 }
