@@ -1,0 +1,69 @@
+//! limn's own rows: every ordering with both arithmetics, ordered and written as SVG in
+//! this process, timed as the median of several runs.
+
+use std::time::Instant;
+
+use limn_depthsort::{order, Arith, OrderOptions, SortMode};
+use limn_paint::{picture, Painter, Style, SvgPainter};
+
+use crate::scenes::BenchScene;
+
+/// One measured run of a program on a scene.
+pub struct Measured {
+    /// Median milliseconds.
+    pub ms: f64,
+    /// Fragments (limn) or primitives (peers) written.
+    pub primitives: usize,
+    /// Output bytes.
+    pub bytes: usize,
+    /// The SVG.
+    pub svg: Vec<u8>,
+    /// The picture before writing (limn only): each fragment's outline and face.
+    pub picture: Vec<(Vec<[f64; 2]>, u32)>,
+}
+
+/// Orders and writes `s` with `sort` and `arith`, `runs` times; the median time.
+pub fn measure(s: &BenchScene, sort: SortMode, arith: Arith, runs: usize) -> anyhow::Result<Measured> {
+    let opts = OrderOptions {
+        sort,
+        arith,
+        ..OrderOptions::default()
+    };
+    let mut times = Vec::with_capacity(runs);
+    let mut last = None;
+    for _ in 0..runs.max(1) {
+        let t0 = Instant::now();
+        let ordered = order(&s.scene, &s.camera, &opts)?;
+        let pic = picture(&s.scene, &ordered, &Style::default());
+        let mut svg = Vec::new();
+        SvgPainter::default().paint(&pic, &mut svg)?;
+        times.push(t0.elapsed().as_secs_f64() * 1e3);
+        last = Some((ordered.fragments.len(), svg, pic));
+    }
+    let (primitives, svg, pic) = last.expect("at least one run");
+    Ok(Measured {
+        ms: median(&mut times),
+        primitives,
+        bytes: svg.len(),
+        svg,
+        picture: pic
+            .fragments
+            .iter()
+            .map(|f| (f.points.clone(), f.face))
+            .collect(),
+    })
+}
+
+/// The median (the mean of the middle two for an even count).
+pub fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n == 0 {
+        return f64::NAN;
+    }
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
