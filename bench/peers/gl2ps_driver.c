@@ -33,10 +33,9 @@
  *   - the usual loop: on GL2PS_OVERFLOW the feedback buffer is doubled and
  *     the page drawn again.
  *
- * Colours: the OpenGL feedback buffer returns colours as floats r/255 and
- * gl2ps writes them as (int)(255 * f), which can truncate r to r - 1.  The
- * driver therefore passes each channel as glColor3f((r + 0.5) / 255) so
- * that the truncation lands exactly on r (checked by check.sh).
+ * Colours: glColor3ub; OpenGL feedback returns r/255 as a float and gl2ps
+ * writes "#rrggbb" from (int)(255 * f).  check.sh verifies that every
+ * value 0..255 comes back exact in each channel (it does with Mesa 22).
  *
  * Output: the SVG (gl2ps writes OUT.svg.tmp; it is copied to OUT.svg with
  * the root's width="Wpt" height="Hpt" rewritten as width="W" height="H",
@@ -107,8 +106,7 @@ static void draw(const Poly *polys, long n)
 {
     for (long i = 0; i < n; i++) {
         const Poly *p = &polys[i];
-        glColor3f((p->rgb[0] + 0.5f) / 255.0f, (p->rgb[1] + 0.5f) / 255.0f,
-                  (p->rgb[2] + 0.5f) / 255.0f);
+        glColor3ub(p->rgb[0], p->rgb[1], p->rgb[2]);
         glBegin(GL_POLYGON);
         for (int j = 0; j < p->k; j++)
             glVertex3d(p->xyz[3 * j], p->xyz[3 * j + 1], p->xyz[3 * j + 2]);
