@@ -137,6 +137,30 @@ for drv in DRIVERS:
     want = {"%02x%02x%02x" % rgb for rgb, _ in cells}
     check(fills == want, f"{drv} colours: SVG fills differ: {len(fills ^ want)} mismatches")
 
+# Scene 4: clipping. A 3 x 3 grid of quads, 8 of them crossing the picture's
+# edges; the parts inside must keep their exact colours (OpenGL clipping
+# makes new vertices whose colours gl2ps reads back).
+xs, ys = (-28, 12, 52, 92), (-24, 8, 40, 72)
+probe_x, probe_y = (4, 32, 58), (3, 24, 44)
+grid = []
+for j in range(3):
+    for i in range(3):
+        rgb = ((37 * (3 * j + i) + 11) % 256, (91 * (3 * j + i) + 5) % 256, (53 * (3 * j + i) + 200) % 256)
+        z = 0.1 * (3 * j + i) - 0.4
+        grid.append((rgb, [(xs[i], ys[j], z), (xs[i + 1], ys[j], z), (xs[i + 1], ys[j + 1], z), (xs[i], ys[j + 1], z)]))
+s4 = write_scene("clipped", 64, 48, grid)
+for drv in DRIVERS:
+    img, text, _ = run(drv, s4, "clipped", 64, 48)
+    if img is None:
+        continue
+    for j in range(3):
+        for i in range(3):
+            got, rgb = px(img, probe_x[i], probe_y[j]), grid[3 * j + i][0]
+            check(got == rgb + (255,), f"{drv} clipped: cell ({i},{j}) at ({probe_x[i]},{probe_y[j]}) is {got}, want {rgb}")
+    fills = set(re.findall(r'fill[=:]\s*"?#([0-9a-f]{6})', text))
+    want = {"%02x%02x%02x" % rgb for rgb, _ in grid}
+    check(fills == want, f"{drv} clipped: SVG fills {sorted(fills - want)} not in the scene, {sorted(want - fills)} missing")
+
 # Error path: bad input -> exit 1, message on stderr, no output file.
 bad_in = os.path.join(work, "bad.txt")
 with open(bad_in, "w") as f:

@@ -188,7 +188,7 @@ int main(int argc, char **argv)
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glDisable(GL_DITHER);
-    glShadeModel(GL_FLAT);
+    glShadeModel(GL_SMOOTH); /* GL_FLAT gives black clip vertices in feedback */
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
