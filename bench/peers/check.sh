@@ -19,6 +19,9 @@ fi
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
+# Run from the empty work directory: a script read from stdin imports from
+# the current directory first.
+cd "$work"
 "$PY" - "$here" "$work" <<'EOF'
 import os, re, subprocess, sys
 from PIL import Image
