@@ -22,8 +22,10 @@
  *     smaller z is the nearer one, as OpenGL and gl2ps both expect.  The
  *     depth range is twice the exchange range so that a vertex at exactly
  *     z = +-1 (or a hair outside, after rounding) is never clipped.
- *   - each polygon is one GL_POLYGON with glColor3ub, no lighting, flat
- *     shading, no culling, no lines drawn at all.
+ *   - each polygon is one GL_POLYGON with glColor3ub, no lighting, smooth
+ *     shading (GL_FLAT would blacken the vertices clipping creates; all
+ *     vertices carry the same colour, so every face stays flat), no
+ *     culling, no lines drawn at all.
  *   - gl2psBeginPage(GL2PS_SVG, SORT, GL2PS_NO_PS3_SHADING | GL2PS_SILENT |
  *     GL2PS_USE_CURRENT_VIEWPORT | GL2PS_NO_BLENDING | GL2PS_NO_TEXT |
  *     GL2PS_NO_PIXMAP). GL2PS_DRAW_BACKGROUND is NOT set: the SVG has no
