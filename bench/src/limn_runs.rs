@@ -23,7 +23,12 @@ pub struct Measured {
 }
 
 /// Orders and writes `s` with `sort` and `arith`, `runs` times; the median time.
-pub fn measure(s: &BenchScene, sort: SortMode, arith: Arith, runs: usize) -> anyhow::Result<Measured> {
+pub fn measure(
+    s: &BenchScene,
+    sort: SortMode,
+    arith: Arith,
+    runs: usize,
+) -> anyhow::Result<Measured> {
     let opts = OrderOptions {
         sort,
         arith,

@@ -93,10 +93,12 @@ fn main() -> Result<()> {
     std::fs::write(&empty, "limn-projected 1\n16 16\n0\n")?;
     let startup: Vec<f64> = peers
         .iter()
-        .map(|p| match peers::run(p, &empty, work.path(), 3, timeout, a.mem_mb, 0.0) {
-            Outcome::Done(m) => m.ms,
-            _ => 0.0,
-        })
+        .map(
+            |p| match peers::run(p, &empty, work.path(), 3, timeout, a.mem_mb, 0.0) {
+                Outcome::Done(m) => m.ms,
+                _ => 0.0,
+            },
+        )
         .collect();
 
     let mut out = String::new();
@@ -151,7 +153,8 @@ fn main() -> Result<()> {
             let o = &painted.ordered;
             peers::write_projected(&s, &o.camera, o.near, o.far, &input)?;
             for (p, &start) in peers.iter().zip(&startup) {
-                let cell = match peers::run(p, &input, work.path(), runs, timeout, a.mem_mb, start) {
+                let cell = match peers::run(p, &input, work.path(), runs, timeout, a.mem_mb, start)
+                {
                     Outcome::Done(m) => {
                         let bad = wrong(&m.svg)?;
                         line += &format!("; {} {} {} ms, {bad} wrong", p.name, p.sort, ms(m.ms));

@@ -73,7 +73,13 @@ pub fn find(dir: &Path) -> (Vec<Peer>, Vec<String>) {
 /// Writes the scene, projected by `camera` with `near` and `far`, in the exchange
 /// format; faces with a corner at or behind the eye's plane are left out (none in the
 /// table's scenes).
-pub fn write_projected(s: &BenchScene, camera: &Camera, near: f64, far: f64, out: &Path) -> std::io::Result<()> {
+pub fn write_projected(
+    s: &BenchScene,
+    camera: &Camera,
+    near: f64,
+    far: f64,
+    out: &Path,
+) -> std::io::Result<()> {
     let vp = camera.view_projection(near, far);
     let mut text = String::new();
     let mut polys = Vec::new();
@@ -91,7 +97,12 @@ pub fn write_projected(s: &BenchScene, camera: &Camera, near: f64, far: f64, out
             polys.push(line);
         }
     }
-    text += &format!("limn-projected 1\n{} {}\n{}\n", camera.width, camera.height, polys.len());
+    text += &format!(
+        "limn-projected 1\n{} {}\n{}\n",
+        camera.width,
+        camera.height,
+        polys.len()
+    );
     for p in polys {
         text += &p;
         text.push('\n');
@@ -101,7 +112,15 @@ pub fn write_projected(s: &BenchScene, camera: &Camera, near: f64, far: f64, out
 
 /// Runs `peer` on `input`, `runs` times, each capped at `timeout` and `mem_mb`; the
 /// median wall time minus `startup` (the peer's time on an empty scene).
-pub fn run(peer: &Peer, input: &Path, dir: &Path, runs: usize, timeout: Duration, mem_mb: u64, startup: f64) -> Outcome {
+pub fn run(
+    peer: &Peer,
+    input: &Path,
+    dir: &Path,
+    runs: usize,
+    timeout: Duration,
+    mem_mb: u64,
+    startup: f64,
+) -> Outcome {
     let out: PathBuf = dir.join(format!("{}-{}.svg", peer.name, peer.sort));
     let mut times = Vec::new();
     let mut primitives = 0;
@@ -128,7 +147,13 @@ pub fn run(peer: &Peer, input: &Path, dir: &Path, runs: usize, timeout: Duration
 }
 
 /// One run: wall milliseconds and the primitives the peer reports.
-fn once(peer: &Peer, input: &Path, out: &Path, timeout: Duration, mem_mb: u64) -> Result<(f64, usize), Outcome> {
+fn once(
+    peer: &Peer,
+    input: &Path,
+    out: &Path,
+    timeout: Duration,
+    mem_mb: u64,
+) -> Result<(f64, usize), Outcome> {
     let mut line = format!("ulimit -v {} && exec", mem_mb * 1024);
     for a in &peer.command {
         line += &format!(" '{a}'");
@@ -154,7 +179,9 @@ fn once(peer: &Peer, input: &Path, out: &Path, timeout: Duration, mem_mb: u64) -
         }
     }
     let ms = t0.elapsed().as_secs_f64() * 1e3;
-    let output = child.wait_with_output().map_err(|e| Outcome::Failed(e.to_string()))?;
+    let output = child
+        .wait_with_output()
+        .map_err(|e| Outcome::Failed(e.to_string()))?;
     if !output.status.success() {
         let err = String::from_utf8_lossy(&output.stderr);
         let first = err.lines().next().unwrap_or("failed").to_string();

@@ -18,10 +18,8 @@ pub fn faces_shown(svg: &[u8], w: u32, h: u32) -> Result<Vec<Option<u32>>, Strin
         resvg::tiny_skia::Pixmap::new(w, h).ok_or_else(|| "no pixel buffer".to_string())?;
     // Scale the SVG's own size to the picture (peers may write pt or another size).
     let size = tree.size();
-    let t = resvg::tiny_skia::Transform::from_scale(
-        w as f32 / size.width(),
-        h as f32 / size.height(),
-    );
+    let t =
+        resvg::tiny_skia::Transform::from_scale(w as f32 / size.width(), h as f32 / size.height());
     resvg::render(&tree, t, &mut pixmap.as_mut());
     Ok(pixmap
         .pixels()
@@ -37,7 +35,12 @@ pub fn faces_shown(svg: &[u8], w: u32, h: u32) -> Result<Vec<Option<u32>>, Strin
 
 /// Pixels outside `band` where `shown` differs from ray casting's `reference`; faces
 /// at or above `faces` count as unknown colours.
-pub fn wrong_pixels(shown: &[Option<u32>], reference: &IdImage, band: &Mask, faces: usize) -> usize {
+pub fn wrong_pixels(
+    shown: &[Option<u32>],
+    reference: &IdImage,
+    band: &Mask,
+    faces: usize,
+) -> usize {
     let (w, h) = (reference.width, reference.height);
     let mut wrong = 0;
     for y in 0..h {

@@ -129,9 +129,17 @@ pub fn all(quick: bool) -> Vec<BenchScene> {
     let cyclic = corpus::cyclic_quads();
     out.push(with_camera("cyclic triple", &cyclic.scene, &cyclic.camera));
     let pierce = corpus::interpenetrating_triangles();
-    out.push(with_camera("interpenetration", &pierce.scene, &pierce.camera));
+    out.push(with_camera(
+        "interpenetration",
+        &pierce.scene,
+        &pierce.camera,
+    ));
     let cross = near_parallel::crossing(1e-7);
-    out.push(with_camera("crossing 1e-7 rad", &cross.scene, &cross.camera));
+    out.push(with_camera(
+        "crossing 1e-7 rad",
+        &cross.scene,
+        &cross.camera,
+    ));
     let stack = near_parallel::stack(12, 1e-8, 1e-7);
     out.push(with_camera("stack 1e-8 apart", &stack.scene, &stack.camera));
     if let Some(far) = corpus::cyclic_far_and_small().into_iter().next() {
