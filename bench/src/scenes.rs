@@ -45,9 +45,10 @@ fn identified(scene: &Scene) -> Scene {
 }
 
 fn framed(name: &str, scene: Scene) -> BenchScene {
+    let name = format!("{name} ({} faces)", scene.faces.len());
     let camera = Camera::framing(&scene, SIZE.0, SIZE.1).expect("a framable scene");
     BenchScene {
-        name: name.into(),
+        name,
         scene: identified(&scene),
         camera,
     }
@@ -87,7 +88,7 @@ fn sphere(rings: u32, segments: u32) -> Scene {
 
 fn torus() -> Scene {
     one_object(|s, m, o| {
-        shapes::torus(s, DVec3::ZERO, 1.0, 0.35, 100, 50, m, o).expect("valid torus");
+        shapes::torus(s, DVec3::ZERO, 1.0, 0.35, 100, 100, m, o).expect("valid torus");
     })
 }
 
@@ -116,14 +117,14 @@ fn surfaces(n: usize) -> Scene {
 pub fn all(quick: bool) -> Vec<BenchScene> {
     let mut out = vec![
         framed("soup 1k", soup(1_000, 0.3)),
-        framed("sphere 10k", sphere(70, 70)),
+        framed("sphere 10k", sphere(50, 100)),
         framed("torus 10k", torus()),
         framed("surfaces 2×40²", surfaces(40)),
     ];
     if !quick {
         out.push(framed("soup 10k", soup(10_000, 0.14)));
         out.push(framed("soup 10k dense", soup(10_000, 0.3)));
-        out.push(framed("sphere 100k", sphere(224, 224)));
+        out.push(framed("sphere 100k", sphere(160, 316)));
         out.push(framed("surfaces 2×100²", surfaces(100)));
     }
     let cyclic = corpus::cyclic_quads();
