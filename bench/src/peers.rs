@@ -184,7 +184,14 @@ fn once(
         .map_err(|e| Outcome::Failed(e.to_string()))?;
     if !output.status.success() {
         let err = String::from_utf8_lossy(&output.stderr);
-        let first = err.lines().next().unwrap_or("failed").to_string();
+        let status = match output.status.code() {
+            Some(c) => format!("exit status {c}"),
+            None => "killed by a signal".to_string(),
+        };
+        let first = match err.lines().find(|l| !l.trim().is_empty()) {
+            Some(l) => format!("{status}: {}", l.trim()),
+            None => format!("{status}, nothing said (out of memory under the {mem_mb} MB cap?)"),
+        };
         return Err(Outcome::Failed(first));
     }
     let text = String::from_utf8_lossy(&output.stdout);
