@@ -5,20 +5,9 @@
 
 use limn_load::Format;
 
-use crate::sound::load_and_check;
-use crate::split_nul;
+use crate::sound::load_with_companion;
 
 /// Loads the OBJ part of `data` (with the MTL part as `m.mtl`) and checks the scene.
 pub fn run(data: &[u8]) {
-    let (obj, mtl) = split_nul(data);
-    // A failure to make the folder is the machine's, not the loader's: skip the case.
-    let Ok(dir) = tempfile::tempdir() else {
-        return;
-    };
-    if let Some(mtl) = mtl {
-        if std::fs::write(dir.path().join("m.mtl"), mtl).is_err() {
-            return;
-        }
-    }
-    load_and_check(obj, Format::Obj, &dir.path().join("f.obj"));
+    load_with_companion(data, Format::Obj, "f.obj", "m.mtl");
 }

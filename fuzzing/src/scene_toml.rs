@@ -5,20 +5,9 @@
 
 use limn_load::Format;
 
-use crate::sound::load_and_check;
-use crate::split_nul;
+use crate::sound::load_with_companion;
 
 /// Loads the TOML part of `data` (with the OBJ part as `m.obj`) and checks the scene.
 pub fn run(data: &[u8]) {
-    let (toml, mesh) = split_nul(data);
-    // A failure to make the folder is the machine's, not the loader's: skip the case.
-    let Ok(dir) = tempfile::tempdir() else {
-        return;
-    };
-    if let Some(mesh) = mesh {
-        if std::fs::write(dir.path().join("m.obj"), mesh).is_err() {
-            return;
-        }
-    }
-    load_and_check(toml, Format::Toml, &dir.path().join("s.toml"));
+    load_with_companion(data, Format::Toml, "s.toml", "m.obj");
 }

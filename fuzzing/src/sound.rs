@@ -61,3 +61,20 @@ pub(crate) fn assert_sound(scene: &Scene) {
 pub(crate) fn nowhere(name: &str) -> std::path::PathBuf {
     Path::new("/nonexistent-limn-fuzz").join(name)
 }
+
+/// Loads a file that refers to one other: `data` holds the main file, then (after the
+/// first NUL byte, if any) the referred file, written as `companion` in a fresh
+/// temporary folder beside the main file `main`; then [`load_and_check`].
+pub(crate) fn load_with_companion(data: &[u8], format: Format, main: &str, companion: &str) {
+    let (head, tail) = crate::split_nul(data);
+    // A failure to make the folder is the machine's, not the loader's: skip the case.
+    let Ok(dir) = tempfile::tempdir() else {
+        return;
+    };
+    if let Some(tail) = tail {
+        if std::fs::write(dir.path().join(companion), tail).is_err() {
+            return;
+        }
+    }
+    load_and_check(head, format, &dir.path().join(main));
+}
