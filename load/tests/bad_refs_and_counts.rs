@@ -7,16 +7,6 @@ mod common;
 use common::*;
 use limn_load::{load, LoadError, LoadOptions};
 
-const TRI_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
-
-fn ascii_stl(body: &str) -> String {
-    format!("solid t\nfacet normal 0 0 1\nouter loop\n{body}endloop\nendfacet\nendsolid t\n")
-}
-
-const PLY_TRI_HEADER: &str =
-    "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n\
-                              element face 1\nproperty list uchar int vertex_indices\n";
-
 // ---------------------------------------------------------------- bad indices
 
 #[test]

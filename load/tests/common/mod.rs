@@ -264,3 +264,16 @@ pub fn glb(json: &str, bin: &[u8]) -> Vec<u8> {
     }
     out
 }
+
+/// The three vertices of a unit triangle in OBJ (no face line).
+pub const TRI_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+/// An ASCII STL solid with one facet around `body` (its `vertex` lines).
+pub fn ascii_stl(body: &str) -> String {
+    format!("solid t\nfacet normal 0 0 1\nouter loop\n{body}endloop\nendfacet\nendsolid t\n")
+}
+
+/// PLY element declarations for three vertices and one face.
+pub const PLY_TRI_HEADER: &str =
+    "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n\
+                              element face 1\nproperty list uchar int vertex_indices\n";
