@@ -29,13 +29,19 @@ const PALETTE: [[f64; 3]; 8] = [
 ];
 
 fn scene_with_palette() -> (Scene, Vec<u32>, u32) {
+    palette_scene("case")
+}
+
+/// An empty scene with the eight unlit palette materials and one object named `object`:
+/// (scene, material ids, object id).
+pub(crate) fn palette_scene(object: &str) -> (Scene, Vec<u32>, u32) {
     let mut s = Scene::default();
     let mats = PALETTE
         .iter()
         .enumerate()
         .map(|(i, &c)| s.add_material(Material::unlit(&format!("c{i}"), c)))
         .collect();
-    let o = s.add_object("case");
+    let o = s.add_object(object);
     (s, mats, o)
 }
 

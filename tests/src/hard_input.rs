@@ -10,7 +10,7 @@
 //! (the two corners on each side of the tilt axis share their tilted coordinate).
 
 use glam::DVec3;
-use limn_scene::{Camera, Material, Scene};
+use limn_scene::{Camera, Scene};
 use limn_zbuffer::{edge_band, Mask, Segment2};
 use num_bigint::{BigInt, Sign};
 use num_rational::BigRational;
@@ -31,26 +31,8 @@ pub struct Scenario {
     pub offset: DVec3,
 }
 
-const PALETTE: [[f64; 3]; 8] = [
-    [0.85, 0.2, 0.2],
-    [0.2, 0.65, 0.3],
-    [0.2, 0.35, 0.85],
-    [0.9, 0.75, 0.2],
-    [0.6, 0.3, 0.7],
-    [0.2, 0.7, 0.75],
-    [0.9, 0.5, 0.2],
-    [0.5, 0.5, 0.5],
-];
-
 fn start() -> (Scene, Vec<u32>, u32) {
-    let mut s = Scene::default();
-    let mats = PALETTE
-        .iter()
-        .enumerate()
-        .map(|(i, &c)| s.add_material(Material::unlit(&format!("c{i}"), c)))
-        .collect();
-    let o = s.add_object("near_parallel");
-    (s, mats, o)
+    crate::corpus::palette_scene("near_parallel")
 }
 
 fn v(x: f64, y: f64, z: f64) -> DVec3 {
