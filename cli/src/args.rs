@@ -67,6 +67,8 @@ const RENDER_HELP: &str = "Examples:
   limn render scene.toml -o fig.pdf --size 1200x900
   limn render mesh.stl -o m.svg --eye 3,2,5 --target 0,0,0 --fov 30 --outline
   limn render soup.obj -o s.png --method raycast # an image-space picture
+  limn render scene.obj -o fig.tikz              # \\input{fig.tikz} in a LaTeX document
+  limn render scene.obj -o fig.tex --format tikz --standalone   # pdflatex fig.tex
 
 Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
 limit reached; no output file is left), 2 usage error.";
@@ -81,7 +83,7 @@ disagree (the report says where).";
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Render a scene file (OBJ, STL, PLY, glTF/GLB, or a TOML scene) to SVG, PDF, EPS or
+    /// Render a scene file (OBJ, STL, PLY, glTF/GLB, or a TOML scene) to SVG, PDF, EPS, TikZ or
     /// PNG.
     #[command(after_help = RENDER_HELP)]
     Render(RenderArgs),
@@ -226,6 +228,10 @@ pub struct RenderArgs {
     /// How to render: painter's order (vector) or an image-space method (PNG only).
     #[arg(long, value_enum, default_value_t = MethodArg::Painter)]
     pub method: MethodArg,
+    /// TikZ output: wrap the picture in a complete LaTeX document (`standalone` class)
+    /// that pdflatex compiles as it is, instead of a bare `tikzpicture` for `\input`.
+    #[arg(long)]
+    pub standalone: bool,
     /// Camera, ordering and reporting flags.
     #[command(flatten)]
     pub view: ViewArgs,

@@ -49,6 +49,10 @@ pub fn losses(
                 "smoothly shaded fragments: SVG has no mesh gradient, so each is \
                             filled with the mean of its corner colours"
             }
+            Format::Tikz => {
+                "smoothly shaded fragments: TikZ has no triangle-mesh shading, so each \
+                            is filled with the mean of its corner colours"
+            }
             _ => "fragments the format can only approximate",
         };
         out.push(format!("{} {what}", ps.approximated));

@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use limn_depthsort::order;
-use limn_paint::{painter_for, picture, Format, Outline, Style};
+use limn_paint::{painter_for, picture, Format, Outline, Painter, Style, TikzOptions, TikzPainter};
 
 use crate::args::{Background, MethodArg, RenderArgs};
 use crate::losses::losses;
@@ -36,6 +36,9 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     } else {
         output
     };
+    if a.standalone && format != Format::Tikz {
+        bail!("--standalone applies to TikZ output only (the format is {format})");
+    }
     check_writable(&output, &loaded.scene.files)?;
     if let Some(stats) = &a.view.stats {
         check_writable(stats, &loaded.scene.files)?;
@@ -73,7 +76,13 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         }),
     };
     let pic = picture(&loaded.scene, &ordered, &style);
-    let painter = painter_for(format);
+    let painter: Box<dyn Painter> = match format {
+        Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
+            standalone: a.standalone,
+            ..TikzOptions::default()
+        })),
+        _ => painter_for(format),
+    };
     let ps = write_atomic(
         &output,
         &loaded.scene.files,

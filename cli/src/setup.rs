@@ -169,7 +169,7 @@ pub fn format_of(output: &Path, flag: Option<Format>) -> Result<Format> {
     match output.extension().and_then(|e| e.to_str()) {
         Some(ext) => Format::from_extension(ext).with_context(|| {
             format!(
-                "{}: unknown output extension `.{ext}` (use .svg, .pdf, .eps, .png or --format)",
+                "{}: unknown output extension `.{ext}` (use .svg, .pdf, .eps, .png, .tikz or --format)",
                 output.display()
             )
         }),

@@ -220,6 +220,10 @@ fn check_output(format: Format, picture: &Picture, out: &[u8]) {
             assert!(text.starts_with("%!PS-Adobe"), "EPS header: {text}");
             assert!(text.trim_end().ends_with("%%EOF"), "EPS trailer: {text}");
         }
+        Format::Tikz => {
+            let text = std::str::from_utf8(out).expect("TikZ is UTF-8");
+            check_tikz(text);
+        }
         Format::Png => {
             let mut reader = png::Decoder::new(out)
                 .read_info()
@@ -231,6 +235,40 @@ fn check_output(format: Format, picture: &Picture, out: &[u8]) {
                 (picture.width, picture.height),
                 "PNG size"
             );
+        }
+    }
+}
+
+/// Checks the structure of a TikZ picture: one environment, every command on its own
+/// line and ended, brackets balanced, numbers plain.
+fn check_tikz(text: &str) {
+    assert!(text.starts_with("% limn picture"), "TikZ header: {text}");
+    assert!(
+        text.ends_with("\\end{tikzpicture}\n"),
+        "TikZ trailer: {text}"
+    );
+    assert_eq!(text.matches("\\begin{tikzpicture}").count(), 1, "{text}");
+    for line in text.lines() {
+        if line.starts_with('%') {
+            continue;
+        }
+        assert!(!line.contains("NaN") && !line.contains("inf") && !line.contains("e+"));
+        let mut depth = [0i32; 3];
+        for c in line.chars() {
+            match c {
+                '{' => depth[0] += 1,
+                '}' => depth[0] -= 1,
+                '[' => depth[1] += 1,
+                ']' => depth[1] -= 1,
+                '(' => depth[2] += 1,
+                ')' => depth[2] -= 1,
+                _ => {}
+            }
+            assert!(depth.iter().all(|&d| d >= 0), "unbalanced: {line}");
+        }
+        assert_eq!(depth, [0; 3], "unbalanced: {line}");
+        if line.starts_with("\\fill") || line.starts_with("\\draw") || line.starts_with("\\use") {
+            assert!(line.ends_with(';'), "unended command: {line}");
         }
     }
 }

@@ -13,23 +13,34 @@ pub enum Format {
     Eps,
     /// Portable Network Graphics (a raster).
     Png,
+    /// A TikZ picture for LaTeX (extensions `.tikz` and `.pgf`).
+    Tikz,
 }
 
 impl Format {
     /// Every format, in a fixed order.
-    pub const ALL: [Format; 4] = [Format::Svg, Format::Pdf, Format::Eps, Format::Png];
+    pub const ALL: [Format; 5] = [
+        Format::Svg,
+        Format::Pdf,
+        Format::Eps,
+        Format::Png,
+        Format::Tikz,
+    ];
 
-    /// The format of a file extension (`"svg"`, `".PDF"`, `"eps"`, `"ps"`, `"png"`; any case,
-    /// with or without the dot).
+    /// The format of a file extension (`"svg"`, `".PDF"`, `"eps"`, `"ps"`, `"png"`, `"tikz"`,
+    /// `"pgf"`; any case, with or without the dot).
     pub fn from_extension(ext: &str) -> Option<Format> {
         let ext = ext.strip_prefix('.').unwrap_or(ext);
         if ext.eq_ignore_ascii_case("ps") {
             return Some(Format::Eps);
         }
+        if ext.eq_ignore_ascii_case("pgf") {
+            return Some(Format::Tikz);
+        }
         Format::from_name(ext)
     }
 
-    /// The format called `name` (`"svg"`, `"pdf"`, `"eps"` or `"png"`, any case).
+    /// The format called `name` (`"svg"`, `"pdf"`, `"eps"`, `"png"` or `"tikz"`, any case).
     pub fn from_name(name: &str) -> Option<Format> {
         Format::ALL
             .into_iter()
@@ -43,6 +54,7 @@ impl Format {
             Format::Pdf => "pdf",
             Format::Eps => "eps",
             Format::Png => "png",
+            Format::Tikz => "tikz",
         }
     }
 }
@@ -62,6 +74,8 @@ mod tests {
         assert_eq!(Format::from_extension(".SVG"), Some(Format::Svg));
         assert_eq!(Format::from_extension("ps"), Some(Format::Eps));
         assert_eq!(Format::from_extension("Png"), Some(Format::Png));
+        assert_eq!(Format::from_extension("PGF"), Some(Format::Tikz));
+        assert_eq!(Format::from_extension(".tikz"), Some(Format::Tikz));
         assert_eq!(Format::from_extension("jpg"), None);
         assert_eq!(Format::from_name("ps"), None);
         for f in Format::ALL {

@@ -1,5 +1,5 @@
 //! limn's painters: the picture model, shading of ordered fragments, and the writers that
-//! turn it into SVG, PDF, EPS or PNG.
+//! turn it into SVG, PDF, EPS, PNG or TikZ.
 //!
 //! [`picture()`] turns the fragments `limn-depthsort` ordered into a [`Picture`] (flat or
 //! Gouraud shading per face, only the effects the scene asks for, whole-face covers and
@@ -15,6 +15,7 @@
 //! | [`PdfPainter`] | `pdf-writer` | type-4 free-form triangle-mesh shading | `ExtGState` `/ca` |
 //! | [`EpsPainter`] | text written directly | `shfill` with a type-4 shading | blended with the backdrop (approximated) |
 //! | [`PngPainter`] | tiny-skia, anti-aliased | interpolated per pixel | source-over blending |
+//! | [`TikzPainter`] | text written directly | average colour (counted as approximated) | `fill opacity` |
 //!
 //! # Rules shared by every backend
 //!
@@ -80,6 +81,7 @@ mod png;
 mod runs;
 mod seams;
 mod svg;
+mod tikz;
 
 pub use compose::{picture, Style};
 pub use covers::covers;
@@ -92,3 +94,4 @@ pub use pdf::{PdfOptions, PdfPainter};
 pub use png::{PngOptions, PngPainter};
 pub use seams::seam_flaps;
 pub use svg::{SvgOptions, SvgPainter};
+pub use tikz::{TikzOptions, TikzPainter, MAX_TIKZ_SIDE, MAX_TIKZ_STROKE};

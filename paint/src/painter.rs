@@ -2,7 +2,9 @@
 
 use std::io::Write;
 
-use crate::{EpsPainter, Format, PaintError, PdfPainter, Picture, PngPainter, SvgPainter};
+use crate::{
+    EpsPainter, Format, PaintError, PdfPainter, Picture, PngPainter, SvgPainter, TikzPainter,
+};
 
 /// What a painter did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -19,7 +21,7 @@ pub struct PaintStats {
     /// Fragments clipped to the guard box or dropped outside it.
     pub clipped: usize,
     /// Fragments (and outline paths) the format could only approximate: translucency in
-    /// EPS, Gouraud shading in SVG.
+    /// EPS, Gouraud shading in SVG and TikZ.
     pub approximated: usize,
 }
 
@@ -36,5 +38,6 @@ pub fn painter_for(format: Format) -> Box<dyn Painter> {
         Format::Pdf => Box::new(PdfPainter::default()),
         Format::Eps => Box::new(EpsPainter::default()),
         Format::Png => Box::new(PngPainter::default()),
+        Format::Tikz => Box::new(TikzPainter::default()),
     }
 }
