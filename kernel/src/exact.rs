@@ -143,6 +143,10 @@ impl Kernel for ExactKernel {
         s
     }
 
+    fn side_of_direction(&self, plane: &Plane, d: DVec3) -> Side {
+        plane.side_of_direction(d.to_array())
+    }
+
     fn classify(&self, poly: &ExactPolygon, plane: &Plane) -> PolygonSide {
         let mut fb = 0;
         let r = poly.classify(plane, self.filter, &mut fb);
@@ -195,6 +199,25 @@ impl Kernel for ExactKernel {
 
     fn orientation(&self, e: &[f64; 3], a: &[f64; 3], b: &[f64; 3], c: &[f64; 3]) -> Orientation {
         Orientation::from_ordering(crate::predicates::orient3d(*e, *a, *b, *c))
+    }
+
+    fn orientation_toward(
+        &self,
+        d: DVec3,
+        a: &[f64; 3],
+        b: &[f64; 3],
+        c: &[f64; 3],
+    ) -> Orientation {
+        // The plane through c, a, b has normal (a − c) × (b − c); collinear points (no
+        // plane) are coplanar with any direction.
+        match Plane::through(*c, *a, *b) {
+            Ok(plane) => match plane.side_of_direction(d.to_array()) {
+                Side::Front => Orientation::Positive,
+                Side::Back => Orientation::Negative,
+                Side::On => Orientation::Coplanar,
+            },
+            Err(_) => Orientation::Coplanar,
+        }
     }
 
     fn vertex_world_approx(&self, poly: &ExactPolygon, i: usize) -> Option<DVec3> {

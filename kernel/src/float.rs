@@ -238,6 +238,18 @@ impl Kernel for FloatKernel {
         self.side(plane, *p)
     }
 
+    fn side_of_direction(&self, plane: &FloatPlane, d: DVec3) -> Side {
+        // The plane's normal is a unit vector: compare the cosine with the epsilon.
+        let t = plane.normal.dot(d.normalize_or_zero());
+        if t > self.eps {
+            Side::Front
+        } else if t < -self.eps {
+            Side::Back
+        } else {
+            Side::On
+        }
+    }
+
     fn classify(&self, poly: &FloatPolygon, plane: &FloatPlane) -> PolygonSide {
         let (mut front, mut back) = (false, false);
         for c in &poly.corners {
@@ -355,6 +367,26 @@ impl Kernel for FloatKernel {
         };
         let o = robust::orient3d(pt(e), pt(a), pt(b), pt(c));
         Orientation::from_ordering(o.partial_cmp(&0.0).unwrap_or(std::cmp::Ordering::Equal))
+    }
+
+    /// The sign of `d · ((a − c) × (b − c))` in f64, with the epsilon on the unit vectors.
+    fn orientation_toward(
+        &self,
+        d: DVec3,
+        a: &[f64; 3],
+        b: &[f64; 3],
+        c: &[f64; 3],
+    ) -> Orientation {
+        let c = DVec3::from_array(*c);
+        let n = (DVec3::from_array(*a) - c).cross(DVec3::from_array(*b) - c);
+        let t = n.normalize_or_zero().dot(d.normalize_or_zero());
+        Orientation::from_ordering(if t > self.eps {
+            std::cmp::Ordering::Greater
+        } else if t < -self.eps {
+            std::cmp::Ordering::Less
+        } else {
+            std::cmp::Ordering::Equal
+        })
     }
 
     fn vertex_world_approx(&self, poly: &FloatPolygon, i: usize) -> Option<DVec3> {

@@ -461,6 +461,29 @@ impl Plane {
         dyadic::dot3(&n, &m).signum() == Ordering::Greater
     }
 
+    /// The exact side of the point at infinity in direction `d` (the eye of a parallel
+    /// projection): the sign of `n·d`, `On` when the plane is parallel to `d`.
+    pub fn side_of_direction(&self, d: [f64; 3]) -> Side {
+        let s = self.normal_dot(d);
+        match if self.neg { s.reverse() } else { s } {
+            Ordering::Greater => Side::Front,
+            Ordering::Less => Side::Back,
+            Ordering::Equal => Side::On,
+        }
+    }
+
+    /// The exact sign of the definition's normal dotted with `d` (orientation ignored).
+    fn normal_dot(&self, d: [f64; 3]) -> Ordering {
+        let (e, _) = self.error_bounds();
+        let a = self.data.approx;
+        let n = [0, 1, 2].map(|i| Interval::around(a[i], e));
+        if let Some(s) = interval::dot(n, d.map(Interval::point)).sign() {
+            return s;
+        }
+        let (n, _) = self.data.def.exact();
+        dyadic::dot3(&n, &dyadic::point3(d)).signum()
+    }
+
     /// The exact sign of normal component `k`.
     pub(crate) fn normal_sign(&self, k: usize) -> Ordering {
         let a = self.approx()[k];

@@ -52,6 +52,11 @@ pub trait Kernel: Sync {
     /// The side of `plane` that `p` lies on.
     fn side_of_point(&self, plane: &Self::Plane, p: &Self::Point) -> Side;
 
+    /// The side of `plane` on which the point at infinity in direction `d` lies (the eye
+    /// of a parallel projection, `d` pointing from the scene towards it): the sign of the
+    /// plane's normal dotted with `d`, [`Side::On`] when the plane is parallel to `d`.
+    fn side_of_direction(&self, plane: &Self::Plane, d: DVec3) -> Side;
+
     /// Where `poly` lies with respect to `plane`.
     fn classify(&self, poly: &Self::Polygon, plane: &Self::Plane) -> PolygonSide;
 
@@ -98,6 +103,17 @@ pub trait Kernel: Sync {
     fn orientation(
         &self,
         e: &Self::ExactPoint,
+        a: &Self::ExactPoint,
+        b: &Self::ExactPoint,
+        c: &Self::ExactPoint,
+    ) -> Orientation;
+
+    /// [`Kernel::orientation`] with `e` the point at infinity in direction `d`: the sign
+    /// of `d · ((a − c) × (b − c))`, which `orientation(e, a, b, c)` takes for `e = c + t·d`
+    /// and every large enough `t`. Exact in the exact kernel.
+    fn orientation_toward(
+        &self,
+        d: DVec3,
         a: &Self::ExactPoint,
         b: &Self::ExactPoint,
         c: &Self::ExactPoint,
