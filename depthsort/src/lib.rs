@@ -43,6 +43,7 @@ mod pieces;
 mod prepare;
 mod rng;
 mod simple;
+mod view;
 
 use std::time::Instant;
 
@@ -151,10 +152,12 @@ fn ordered<K: Kernel>(
 ) -> Result<(Ordered, Vec<K::Polygon>), OrderError> {
     let t0 = Instant::now();
     let fallbacks0 = kernel.fallbacks();
-    let eye = kernel.point(camera.eye)?;
+    let eye = view::Eye::of(kernel, camera)?;
     let (near, far) = camera.near_far(scene);
     let vp = camera.view_projection(near, far);
-    let mut ctx = Ctx::new(kernel, eye, *camera, vp, far, opts.seed);
+    // The depth margin's scale: the far distance, or device depth's range.
+    let depth_scale = if camera.is_perspective() { far } else { 1.0 };
+    let mut ctx = Ctx::new(kernel, eye, *camera, vp, depth_scale, opts.seed);
     let limit = opts
         .max_fragments
         .unwrap_or_else(|| default_max_fragments(scene.faces.len()));

@@ -137,7 +137,6 @@ impl<K: Kernel> Ctx<'_, K> {
     pub fn only_touch(&self, p: u32, q: u32) -> bool {
         let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
         let (np, nq) = (self.k.vertex_count(&pp.poly), self.k.vertex_count(&qq.poly));
-        let e = self.k.point_exact(&self.eye);
         for i in 0..np {
             // A shared vertex projects to the same screen point: only such corners are
             // compared exactly.
@@ -162,7 +161,7 @@ impl<K: Kernel> Ctx<'_, K> {
             ) else {
                 continue;
             };
-            let o = |a: &K::ExactPoint, b: &K::ExactPoint| self.k.orientation(&e, &v, a, b);
+            let o = |a: &K::ExactPoint, b: &K::ExactPoint| self.eye_orientation(&v, a, b);
             // Orient both sectors the same way (as seen from the eye).
             let (p1, p2) = match o(&p1, &p2) {
                 Orientation::Positive => (p1, p2),

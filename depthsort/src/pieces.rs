@@ -9,6 +9,7 @@ use limn_scene::Camera;
 use crate::geom::{bbox, Box2};
 use crate::options::Stats;
 use crate::rng::SplitMix;
+use crate::view::Eye;
 
 /// No piece.
 pub(crate) const NONE: u32 = u32::MAX;
@@ -27,7 +28,8 @@ pub(crate) struct Piece<K: Kernel> {
     /// Projected vertices in pixels.
     pub pts: Vec<[f64; 2]>,
     pub bbox: Box2,
-    /// Range of view depth (clip w) over the vertices.
+    /// Range of view depth over the vertices (clip w for a perspective camera, device
+    /// depth otherwise).
     pub dmin: f64,
     pub dmax: f64,
     pub dmean: f64,
@@ -35,7 +37,7 @@ pub(crate) struct Piece<K: Kernel> {
 
 pub(crate) struct Ctx<'a, K: Kernel> {
     pub k: &'a K,
-    pub eye: K::Point,
+    pub eye: Eye<K::Point>,
     pub vp: DMat4,
     pub camera: Camera,
     pub pieces: Vec<Piece<K>>,
@@ -54,7 +56,14 @@ pub(crate) struct Ctx<'a, K: Kernel> {
 }
 
 impl<'a, K: Kernel> Ctx<'a, K> {
-    pub fn new(k: &'a K, eye: K::Point, camera: Camera, vp: DMat4, far: f64, seed: u64) -> Self {
+    pub fn new(
+        k: &'a K,
+        eye: Eye<K::Point>,
+        camera: Camera,
+        vp: DMat4,
+        far: f64,
+        seed: u64,
+    ) -> Self {
         let size = (camera.width + camera.height) as f64;
         Ctx {
             k,
@@ -86,8 +95,10 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         eye_front: Option<bool>,
     ) -> u32 {
         let plane = self.k.support(&poly);
-        let eye_front =
-            eye_front.unwrap_or_else(|| self.k.side_of_point(&plane, &self.eye) == Side::Front);
+        let eye_front = eye_front.unwrap_or_else(|| self.eye_side(&plane) == Side::Front);
+        // Depth: clip w (the distance along the view axis) for a perspective camera,
+        // normalised device depth for any other.
+        let by_w = self.camera.is_perspective();
         self.scratch.clear();
         self.k.vertices_world(&poly, &mut self.scratch);
         let mut pts = Vec::with_capacity(self.scratch.len());
@@ -95,9 +106,10 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         for &p in &self.scratch {
             let pr = self.camera.project_with(&self.vp, p);
             pts.push([pr.x, pr.y]);
-            dmin = dmin.min(pr.w);
-            dmax = dmax.max(pr.w);
-            dsum += pr.w;
+            let d = if by_w { pr.w } else { pr.z };
+            dmin = dmin.min(d);
+            dmax = dmax.max(d);
+            dsum += d;
         }
         let dmean = dsum / pts.len().max(1) as f64;
         let bbox = bbox(&pts);

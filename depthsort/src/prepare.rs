@@ -9,6 +9,7 @@ use limn_scene::Scene;
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
 use crate::options::{CullMode, OrderError};
 use crate::pieces::{Ctx, NONE};
+use crate::view::view_planes;
 
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
 /// (between vertex positions) must be used exactly once in each direction within the
@@ -69,13 +70,10 @@ pub(crate) fn prepare<K: Kernel>(
         CullMode::Off => vec![false; scene.objects.len()],
     };
     let hidden = hidden_by_later_copies(scene, &canon, &closed);
-    let eye_world = ctx.camera.eye;
-    let fwd = ctx.camera.forward();
-    let near_plane = ctx.k.plane_through(eye_world + fwd * near, fwd)?;
     // The plane through the eye facing forward: what lies behind it is behind the camera
     // (not in view at all); only what lies between it and the near plane is lost.
-    let eye_plane = ctx.k.plane_through(eye_world, fwd)?;
-    let frustum = view_sides(ctx)?;
+    let planes = view_planes(ctx, near)?;
+    let (near_plane, eye_plane, frustum) = (&planes.near, planes.eye.as_ref(), &planes.sides);
     let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
     let mut items = Vec::new();
     let mut corners = Vec::new();
@@ -100,7 +98,7 @@ pub(crate) fn prepare<K: Kernel>(
         let mut lost_to_near = false;
         for poly in polys {
             let plane = ctx.k.support(&poly);
-            let side = ctx.k.side_of_point(&plane, &ctx.eye);
+            let side = ctx.eye_side(&plane);
             if *facing.get_or_insert(side) != side {
                 intact = false;
             }
@@ -116,20 +114,20 @@ pub(crate) fn prepare<K: Kernel>(
                 _ => {}
             }
             culled_all = false;
-            let poly = match ctx.k.classify(&poly, &near_plane) {
+            let poly = match ctx.k.classify(&poly, near_plane) {
                 PolygonSide::Front => poly,
                 PolygonSide::Spanning => {
                     intact = false;
-                    lost_to_near |= lost_in_view(ctx, &poly, &near_plane, &eye_plane, &frustum);
+                    lost_to_near |= lost_in_view(ctx, &poly, near_plane, eye_plane, frustum);
                     ctx.stats.splits += 1;
-                    match ctx.k.split(&poly, &near_plane).0 {
+                    match ctx.k.split(&poly, near_plane).0 {
                         Some(p) => p,
                         None => continue,
                     }
                 }
                 _ => {
                     intact = false;
-                    lost_to_near |= lost_in_view(ctx, &poly, &near_plane, &eye_plane, &frustum);
+                    lost_to_near |= lost_in_view(ctx, &poly, near_plane, eye_plane, frustum);
                     continue;
                 }
             };
@@ -159,23 +157,6 @@ pub(crate) fn prepare<K: Kernel>(
     Ok((items, whole))
 }
 
-/// The four side planes of the view pyramid through the eye, each facing inwards.
-fn view_sides<K: Kernel>(ctx: &Ctx<'_, K>) -> Result<[K::Plane; 4], OrderError> {
-    let cam = ctx.camera;
-    let f = cam.forward();
-    let r = f.cross(cam.up).normalize();
-    let u = r.cross(f);
-    let th = (cam.fov_deg.to_radians() * 0.5).tan();
-    let tw = th * cam.aspect();
-    let eye = cam.eye;
-    Ok([
-        ctx.k.plane_through(eye, f * tw + r)?,
-        ctx.k.plane_through(eye, f * tw - r)?,
-        ctx.k.plane_through(eye, f * th + u)?,
-        ctx.k.plane_through(eye, f * th - u)?,
-    ])
-}
-
 /// Whether the near plane cuts away a part of `poly` that the camera would see: some of
 /// what lies behind `near` is in front of the eye's plane and inside the view pyramid
 /// (clipped exactly, one plane after another). A warning depends on it, no picture does.
@@ -183,7 +164,7 @@ fn lost_in_view<K: Kernel>(
     ctx: &Ctx<'_, K>,
     poly: &K::Polygon,
     near: &K::Plane,
-    eye_plane: &K::Plane,
+    eye_plane: Option<&K::Plane>,
     sides: &[K::Plane; 4],
 ) -> bool {
     let behind_near = match ctx.k.classify(poly, near) {
@@ -195,7 +176,7 @@ fn lost_in_view<K: Kernel>(
         _ => poly.clone(),
     };
     let mut part = behind_near;
-    for plane in std::iter::once(eye_plane).chain(sides) {
+    for plane in eye_plane.into_iter().chain(sides) {
         part = match ctx.k.classify(&part, plane) {
             PolygonSide::Front => part,
             PolygonSide::Spanning => match ctx.k.split(&part, plane).0 {

@@ -1,7 +1,8 @@
-//! The camera: look-at plus OpenGL perspective, and the pixel conventions.
+//! The camera: look-at plus an OpenGL projection (perspective, orthographic, or any 4×4
+//! view-projection matrix), and the pixel conventions.
 //!
-//! The matrices are exactly those of `gluLookAt` and `gluPerspective` (right-handed, the
-//! camera looks down its −z axis, clip z in [−1, 1]). Pixel coordinates are
+//! The matrices are exactly those of `gluLookAt` and `gluPerspective` or `glOrtho`
+//! (right-handed, the camera looks down its −z axis, clip z in [−1, 1]). Pixel coordinates are
 //! `px = (ndc.x + 1) / 2 · W`, `py = (1 − ndc.y) / 2 · H` (y down); pixel (i, j) covers
 //! [i, i+1) × [j, j+1) and is sampled at its centre.
 
@@ -32,6 +33,13 @@ pub enum CameraError {
     /// Near/far planes are not 0 < near < far.
     #[error("near {0} and far {1} planes must satisfy 0 < near < far")]
     BadClip(f64, f64),
+    /// The orthographic view height is not a positive finite number.
+    #[error("orthographic view height {0} must be positive and finite")]
+    BadViewHeight(f64),
+    /// A view-projection matrix has a NaN or infinite entry, or sees nothing (its x, y
+    /// and w rows are linearly dependent: no centre of projection).
+    #[error("the view-projection matrix is not finite or has no centre of projection")]
+    BadMatrix,
     /// The scene has no faces to frame.
     #[error("the scene has no faces to frame")]
     EmptyScene,
@@ -41,7 +49,39 @@ pub enum CameraError {
     OutOfRange,
 }
 
-/// A perspective camera.
+/// How a camera projects the world onto the picture.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Projection {
+    /// `gluPerspective` with the camera's `fov_deg`: the eye is the camera's `eye`.
+    Perspective,
+    /// `glOrtho`: parallel projection along the view direction, `height` world units
+    /// visible vertically (`height · W/H` horizontally), centred on the view axis. The
+    /// eye lies at infinity in the direction from `target` to `eye`; `eye` still fixes
+    /// where depth (and so the near and far planes) is measured from.
+    Orthographic {
+        /// The visible height in world units.
+        height: f64,
+    },
+    /// Any 4×4 view-projection matrix from world to OpenGL clip coordinates; pixels follow
+    /// from it as for the others, and `eye`, `target`, `up`, `fov_deg`, `near` and `far`
+    /// play no part in projecting. Its centre of projection (the point with clip
+    /// `x = y = w = 0`) is the eye of the orderings: a finite point, or a direction when
+    /// the matrix is affine (a parallel projection); it is computed once in f64 from the
+    /// matrix (see [`Camera::viewpoint`]), and every decision is exact for that eye.
+    /// Clipping keeps what lies in `−w ≤ z ≤ w`.
+    Matrix(DMat4),
+}
+
+/// Where the eye is, as the orderings see it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Viewpoint {
+    /// A finite eye point (perspective).
+    At(DVec3),
+    /// An eye at infinity (parallel projection), in this direction from the scene.
+    Toward(DVec3),
+}
+
+/// A camera: look-at and a [`Projection`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Camera {
     /// Eye position.
@@ -60,6 +100,8 @@ pub struct Camera {
     pub near: Option<f64>,
     /// Far plane distance; chosen from the scene bounds when `None`.
     pub far: Option<f64>,
+    /// How the camera projects (perspective unless set otherwise).
+    pub projection: Projection,
 }
 
 /// A point after projection.
@@ -71,7 +113,8 @@ pub struct Projected {
     pub y: f64,
     /// Normalised device depth in [−1, 1] for points between near and far.
     pub z: f64,
-    /// Clip-space w (the distance in front of the eye along the view axis).
+    /// Clip-space w (the distance in front of the eye along the view axis for a
+    /// perspective camera; 1 for an orthographic one).
     pub w: f64,
 }
 
@@ -91,6 +134,65 @@ impl Camera {
             height,
             near: None,
             far: None,
+            projection: Projection::Perspective,
+        }
+    }
+
+    /// An orthographic camera with the given eye, target, visible height (world units)
+    /// and size; up +Y, automatic clipping.
+    pub fn orthographic(eye: DVec3, target: DVec3, height: f64, width: u32, h: u32) -> Self {
+        Camera {
+            projection: Projection::Orthographic { height },
+            ..Camera::new(eye, target, width, h)
+        }
+    }
+
+    /// A camera from a view-projection matrix (world to OpenGL clip coordinates) and a
+    /// picture size. `eye` and `target` are set to the matrix's centre of projection and
+    /// a point in front of it (they serve shading and reports only).
+    pub fn from_matrix(m: DMat4, width: u32, height: u32) -> Result<Camera, CameraError> {
+        let mut cam = Camera::new(DVec3::Z, DVec3::ZERO, width, height);
+        cam.projection = Projection::Matrix(m);
+        let (eye, fwd) = match matrix_viewpoint(&m)? {
+            Viewpoint::At(e) => (e, matrix_forward(&m)),
+            Viewpoint::Toward(d) => {
+                // A stand-in eye in front of everything the matrix keeps (z = −w).
+                let inv = m.inverse();
+                let c = inv * DVec4::new(0.0, 0.0, -1.0, 1.0);
+                let near = c.truncate() / c.w;
+                let d = d.normalize();
+                (near + d, -d)
+            }
+        };
+        if !eye.is_finite() || !fwd.is_finite() || fwd == DVec3::ZERO {
+            return Err(CameraError::BadMatrix);
+        }
+        cam.eye = eye;
+        cam.target = eye + fwd;
+        cam.up = if fwd.cross(DVec3::Y).length_squared() < 1e-12 {
+            DVec3::Z
+        } else {
+            DVec3::Y
+        };
+        cam.validate()?;
+        Ok(cam)
+    }
+
+    /// Whether this is the `gluPerspective` camera (the one whose clipping and depth
+    /// are measured by clip w).
+    pub fn is_perspective(&self) -> bool {
+        matches!(self.projection, Projection::Perspective)
+    }
+
+    /// The eye the orderings classify against: the eye point of a perspective camera,
+    /// the direction from `target` to `eye` of an orthographic one, a matrix's centre of
+    /// projection (computed in f64 from the matrix: the null vector of its x, y and w
+    /// rows, by cofactors).
+    pub fn viewpoint(&self) -> Result<Viewpoint, CameraError> {
+        match self.projection {
+            Projection::Perspective => Ok(Viewpoint::At(self.eye)),
+            Projection::Orthographic { .. } => Ok(Viewpoint::Toward(self.eye - self.target)),
+            Projection::Matrix(m) => matrix_viewpoint(&m),
         }
     }
 
@@ -193,7 +295,42 @@ impl Camera {
             height,
             near: None,
             far: None,
+            projection: Projection::Perspective,
         };
+        cam.validate()?;
+        Ok(cam)
+    }
+
+    /// An orthographic camera looking at the centre of the scene's bounding box from
+    /// direction `dir` (target to eye), its view height fitting every vertex of a face
+    /// inside the picture with a 5 % margin on each side, its eye outside the bounding
+    /// sphere (so nothing is clipped).
+    pub fn framing_orthographic(
+        scene: &Scene,
+        dir: DVec3,
+        width: u32,
+        height: u32,
+    ) -> Result<Camera, CameraError> {
+        let (lo, hi) = scene.bounds().ok_or(CameraError::EmptyScene)?;
+        let mut cam = Camera::framing_bounds(lo, hi, dir, 45.0, width, height)?;
+        let back = (cam.eye - cam.target).normalize();
+        let right = (-back).cross(cam.up).normalize();
+        let up = right.cross(-back);
+        let (mut half_w, mut half_h) = (0.0f64, 0.0f64);
+        for f in &scene.faces {
+            for &v in &f.vertices {
+                let w = scene.vertices[v as usize] - cam.target;
+                half_w = half_w.max(w.dot(right).abs());
+                half_h = half_h.max(w.dot(up).abs());
+            }
+        }
+        let mut h = 2.0 * half_h.max(half_w / cam.aspect()) * 1.05;
+        if !(h > 0.0 && h.is_finite()) {
+            h = ((hi - lo).length()).max(1.0);
+        }
+        let radius = (hi - lo).length() * 0.5;
+        cam.eye = cam.target + back * (radius * 2.0).max(1.0);
+        cam.projection = Projection::Orthographic { height: h };
         cam.validate()?;
         Ok(cam)
     }
@@ -228,6 +365,17 @@ impl Camera {
         if self.width == 0 || self.height == 0 || self.width > 65536 || self.height > 65536 {
             return Err(CameraError::BadSize(self.width, self.height));
         }
+        match self.projection {
+            Projection::Perspective => {}
+            Projection::Orthographic { height } => {
+                if !(height > 0.0 && height.is_finite()) {
+                    return Err(CameraError::BadViewHeight(height));
+                }
+            }
+            Projection::Matrix(m) => {
+                matrix_viewpoint(&m)?;
+            }
+        }
         if let (Some(n), Some(fa)) = (self.near, self.far) {
             if !(n > 0.0 && n < fa && fa.is_finite()) {
                 return Err(CameraError::BadClip(n, fa));
@@ -251,14 +399,24 @@ impl Camera {
         glam::dcamera::rh::view::look_at_mat4(self.eye, self.target, self.up)
     }
 
-    /// The projection matrix of `gluPerspective(fov, W/H, near, far)`.
+    /// The projection matrix: `gluPerspective(fov, W/H, near, far)`, or
+    /// `glOrtho(−h·W/H/2, h·W/H/2, −h/2, h/2, near, far)` for an orthographic camera of
+    /// height `h`. For a matrix camera the view matrix is the identity and this is the
+    /// matrix itself.
     pub fn projection(&self, near: f64, far: f64) -> DMat4 {
-        glam::dcamera::rh::proj::opengl::perspective(
-            self.fov_deg.to_radians(),
-            self.aspect(),
-            near,
-            far,
-        )
+        match self.projection {
+            Projection::Perspective => glam::dcamera::rh::proj::opengl::perspective(
+                self.fov_deg.to_radians(),
+                self.aspect(),
+                near,
+                far,
+            ),
+            Projection::Orthographic { height } => {
+                let (hh, hw) = (height * 0.5, height * 0.5 * self.aspect());
+                glam::dcamera::rh::proj::opengl::orthographic(-hw, hw, -hh, hh, near, far)
+            }
+            Projection::Matrix(m) => m,
+        }
     }
 
     /// Near and far distances: the given ones, or chosen from the scene's bounds. The far
@@ -299,9 +457,12 @@ impl Camera {
         (near, far)
     }
 
-    /// `projection(near, far) · view()`.
+    /// `projection(near, far) · view()` (the matrix itself for a matrix camera).
     pub fn view_projection(&self, near: f64, far: f64) -> DMat4 {
-        self.projection(near, far) * self.view()
+        match self.projection {
+            Projection::Matrix(m) => m,
+            _ => self.projection(near, far) * self.view(),
+        }
     }
 
     /// Projects a world point with the given view-projection matrix into pixel
@@ -318,6 +479,49 @@ impl Camera {
             w: c.w,
         }
     }
+}
+
+/// The centre of projection of a view-projection matrix: the homogeneous point on which
+/// its x, y and w rows vanish (their cross product in four dimensions, by cofactors),
+/// finite or at infinity. A direction is oriented towards the viewer: the side where
+/// clip depth `z/w` decreases.
+fn matrix_viewpoint(m: &DMat4) -> Result<Viewpoint, CameraError> {
+    if !m.is_finite() {
+        return Err(CameraError::BadMatrix);
+    }
+    let (rx, ry, rz, rw) = (m.row(0), m.row(1), m.row(2), m.row(3));
+    let rows = [rx.to_array(), ry.to_array(), rw.to_array()];
+    // Cofactor k: the determinant of the 3×3 minor without column k, signed.
+    let minor = |skip: usize| {
+        let cols: Vec<usize> = (0..4).filter(|&c| c != skip).collect();
+        let a = |r: usize, c: usize| rows[r][cols[c]];
+        a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1))
+            - a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0))
+            + a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0))
+    };
+    let n = DVec4::new(-minor(0), minor(1), -minor(2), minor(3));
+    if !n.is_finite() || n.truncate() == DVec3::ZERO {
+        return Err(CameraError::BadMatrix);
+    }
+    if n.w != 0.0 {
+        let e = n.truncate() / n.w;
+        if !e.is_finite() {
+            return Err(CameraError::BadMatrix);
+        }
+        return Ok(Viewpoint::At(e));
+    }
+    // At infinity: moving along d must bring points nearer (clip z / w decreasing).
+    let d = n.truncate();
+    let dz = rz.truncate().dot(d) * rw.w.signum();
+    if dz == 0.0 || !dz.is_finite() {
+        return Err(CameraError::BadMatrix);
+    }
+    Ok(Viewpoint::Toward(if dz > 0.0 { -d } else { d }))
+}
+
+/// The viewing direction of a perspective matrix: the direction in which clip w grows.
+fn matrix_forward(m: &DMat4) -> DVec3 {
+    m.row(3).truncate().normalize_or_zero()
 }
 
 #[cfg(test)]
@@ -409,5 +613,101 @@ mod tests {
         cam.fov_deg = 30.0;
         cam.eye.x = f64::NAN;
         assert_eq!(cam.validate(), Err(CameraError::NonFinite("eye")));
+    }
+}
+
+#[cfg(test)]
+mod projection_tests {
+    use super::*;
+
+    fn square() -> Scene {
+        let mut s = Scene::default();
+        let m = s.add_material(crate::Material::default_grey());
+        let o = s.add_object("square");
+        let pts = [
+            [-1.0, -1.0, 0.0],
+            [1.0, -1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [-1.0, 1.0, 0.0],
+        ];
+        s.add_polygon(&pts.map(DVec3::from), m, o).unwrap();
+        s
+    }
+
+    #[test]
+    fn orthographic_keeps_sizes_at_every_depth() {
+        let cam = Camera::orthographic(DVec3::new(0.0, 0.0, 10.0), DVec3::ZERO, 4.0, 100, 100);
+        cam.validate().unwrap();
+        let vp = cam.view_projection(1.0, 20.0);
+        for z in [-5.0, 0.0, 5.0] {
+            let a = cam.project_with(&vp, DVec3::new(1.0, 0.0, z));
+            // Height 4 over 100 pixels: one unit is 25 pixels, whatever the depth.
+            assert!((a.x - 75.0).abs() < 1e-9, "{z}: {}", a.x);
+            assert_eq!(a.w, 1.0);
+        }
+        assert_eq!(
+            cam.viewpoint(),
+            Ok(Viewpoint::Toward(DVec3::new(0.0, 0.0, 10.0)))
+        );
+    }
+
+    #[test]
+    fn framing_orthographic_fits_the_scene() {
+        let s = square();
+        let cam = Camera::framing_orthographic(&s, DVec3::Z, 200, 100).unwrap();
+        let (n, f) = cam.near_far(&s);
+        let vp = cam.view_projection(n, f);
+        let xs: Vec<f64> = [-1.0, 1.0]
+            .iter()
+            .map(|&x| cam.project_with(&vp, DVec3::new(x, 1.0, 0.0)).y)
+            .collect();
+        // The square's height (2) fills the picture's height up to the 5 % margins.
+        let top = cam.project_with(&vp, DVec3::new(0.0, 1.0, 0.0)).y;
+        assert!(
+            (top - 100.0 * (1.0 - 1.0 / 1.05) / 2.0).abs() < 1e-6,
+            "{top} {xs:?}"
+        );
+        assert!(n > 0.0 && n < f);
+    }
+
+    #[test]
+    fn a_matrix_camera_finds_its_centre_of_projection() {
+        let persp = Camera::new(DVec3::new(3.0, 2.0, 5.0), DVec3::ZERO, 80, 60);
+        let m = persp.view_projection(0.5, 50.0);
+        let cam = Camera::from_matrix(m, 80, 60).unwrap();
+        match cam.viewpoint().unwrap() {
+            Viewpoint::At(e) => assert!((e - persp.eye).length() < 1e-12, "{e}"),
+            v => panic!("{v:?}"),
+        }
+        let p = DVec3::new(0.3, -0.2, 0.1);
+        let a = persp.project_with(&m, p);
+        let b = cam.project_with(&cam.view_projection(9.0, 10.0), p);
+        assert_eq!((a.x, a.y), (b.x, b.y));
+
+        let ortho = Camera::orthographic(DVec3::new(1.0, 2.0, 3.0), DVec3::ZERO, 2.0, 80, 60);
+        let m = ortho.view_projection(0.5, 10.0);
+        let cam = Camera::from_matrix(m, 80, 60).unwrap();
+        match cam.viewpoint().unwrap() {
+            Viewpoint::Toward(d) => {
+                let want = DVec3::new(1.0, 2.0, 3.0).normalize();
+                assert!((d.normalize() - want).length() < 1e-12, "{d}");
+            }
+            v => panic!("{v:?}"),
+        }
+    }
+
+    #[test]
+    fn bad_projections_are_rejected() {
+        let mut cam = Camera::orthographic(DVec3::Z, DVec3::ZERO, 0.0, 10, 10);
+        assert_eq!(cam.validate(), Err(CameraError::BadViewHeight(0.0)));
+        cam.projection = Projection::Orthographic { height: f64::NAN };
+        assert!(matches!(cam.validate(), Err(CameraError::BadViewHeight(_))));
+        assert_eq!(
+            Camera::from_matrix(DMat4::ZERO, 10, 10),
+            Err(CameraError::BadMatrix)
+        );
+        let mut m = DMat4::IDENTITY;
+        m.x_axis.x = f64::NAN;
+        assert_eq!(Camera::from_matrix(m, 10, 10), Err(CameraError::BadMatrix));
     }
 }

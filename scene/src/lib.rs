@@ -27,6 +27,6 @@ mod model;
 mod shade;
 pub mod shapes;
 
-pub use camera::{Camera, CameraError, Projected, DEFAULT_VIEW_DIRECTION};
+pub use camera::{Camera, CameraError, Projected, Projection, Viewpoint, DEFAULT_VIEW_DIRECTION};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
 pub use shade::{interpolated_normal, polygon_normal, shade_face, shade_point, Effects, Rgb};

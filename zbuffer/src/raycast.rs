@@ -134,7 +134,7 @@ pub(crate) fn raycast(scene: &Scene, frame: &Frame, cull: bool) -> Result<Output
     let mut local = Vec::new();
     let mut culled_faces = 0;
     for f in 0..scene.faces.len() {
-        if cull && is_back_face(scene, f, frame.camera.eye) {
+        if cull && is_back_face(scene, f, frame.viewpoint) {
             culled_faces += 1;
             continue;
         }

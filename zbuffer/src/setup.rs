@@ -1,7 +1,8 @@
 //! From a scene to screen-space triangles: culling, triangulation, clipping in
 //! homogeneous clip space, projection.
 //!
-//! Clipping happens before the perspective divide against `w ≥ near` (the near plane of
+//! Clipping happens before the perspective divide against `w ≥ near` (for any camera but
+//! a perspective one, against `−w ≤ z ≤ w` as OpenGL clips; the near plane of
 //! `gluPerspective`: clip-space `w` is the distance in front of the eye along the view
 //! axis), `w ≤ far`, and a guard band `|x|, |y| ≤ GUARD · w` (`GUARD` screen half-widths
 //! around the picture), so nothing is ever projected through the eye and projected
@@ -10,7 +11,7 @@
 //! new vertices and stay watertight.
 
 use glam::{DMat4, DVec3, DVec4};
-use limn_scene::{polygon_normal, Camera, Scene};
+use limn_scene::{polygon_normal, Camera, Scene, Viewpoint};
 use robust::{orient3d, Coord3D};
 
 use crate::triangulate::triangulate;
@@ -28,6 +29,11 @@ pub(crate) struct Frame {
     pub vp: DMat4,
     pub width: u32,
     pub height: u32,
+    /// Near and far clipping by clip w (perspective); by clip z otherwise
+    /// (`−w ≤ z ≤ w`, as OpenGL clips).
+    pub depth_by_w: bool,
+    /// The eye as the back-face test sees it.
+    pub viewpoint: Viewpoint,
 }
 
 impl Frame {
@@ -58,6 +64,8 @@ impl Frame {
             vp: camera.view_projection(near, far),
             width: camera.width,
             height: camera.height,
+            depth_by_w: camera.is_perspective(),
+            viewpoint: camera.viewpoint()?,
         })
     }
 
@@ -97,8 +105,10 @@ impl Frame {
     #[inline]
     fn plane_dist(&self, plane: Plane, c: DVec4) -> f64 {
         match plane {
-            Plane::Near => c.w - self.near,
-            Plane::Far => self.far - c.w,
+            Plane::Near if self.depth_by_w => c.w - self.near,
+            Plane::Far if self.depth_by_w => self.far - c.w,
+            Plane::Near => c.w + c.z,
+            Plane::Far => c.w - c.z,
             Plane::Left => c.x + GUARD * c.w,
             Plane::Right => GUARD * c.w - c.x,
             Plane::Bottom => c.y + GUARD * c.w,
@@ -168,10 +178,18 @@ pub(crate) enum EdgeKind {
 }
 
 /// Whether the eye lies strictly behind the plane of face `f` (exact `orient3d` for
-/// triangles; the sign of the Newell normal against the centroid for larger faces).
-pub(crate) fn is_back_face(scene: &Scene, f: usize, eye: DVec3) -> bool {
+/// triangles; the sign of the Newell normal against the centroid for larger faces; for
+/// an eye at infinity, the sign of the Newell normal dotted with its direction).
+pub(crate) fn is_back_face(scene: &Scene, f: usize, eye: Viewpoint) -> bool {
     let vs = &scene.faces[f].vertices;
     let p = |k: usize| scene.vertices[vs[k] as usize];
+    let eye = match eye {
+        Viewpoint::At(e) => e,
+        Viewpoint::Toward(d) => {
+            let pts: Vec<DVec3> = (0..vs.len()).map(p).collect();
+            return polygon_normal(&pts).dot(d) < 0.0;
+        }
+    };
     if vs.len() == 3 {
         let c = |v: DVec3| Coord3D {
             x: v.x,
@@ -278,7 +296,7 @@ pub(crate) fn prepare(scene: &Scene, frame: &Frame, cull: bool, mut collect: Col
     let mut tris = Vec::new();
     let mut poly = Vec::new();
     for f in 0..scene.faces.len() {
-        if cull && is_back_face(scene, f, frame.camera.eye) {
+        if cull && is_back_face(scene, f, frame.viewpoint) {
             if let Collect::Triangles(p) = &mut collect {
                 p.culled_faces += 1;
             }
