@@ -66,6 +66,7 @@ const RENDER_HELP: &str = "Examples:
   limn render scene.obj                          # scene.svg beside the input
   limn render scene.toml -o fig.pdf --size 1200x900
   limn render mesh.stl -o m.svg --eye 3,2,5 --target 0,0,0 --fov 30 --outline
+  limn render part.stl -o plan.svg --eye 0,10,0 --up 0,0,-1 --ortho 4   # a plan view
   limn render soup.obj -o s.png --method raycast # an image-space picture
   limn render scene.obj -o fig.tikz              # \\input{fig.tikz} in a LaTeX document
   limn render scene.obj -o fig.tex --format tikz --standalone   # pdflatex fig.tex
@@ -158,6 +159,11 @@ pub struct ViewArgs {
     /// Vertical field of view in degrees [default: 45].
     #[arg(long, value_name = "DEG", value_parser = parse_fov, allow_negative_numbers = true)]
     pub fov: Option<f64>,
+    /// Orthographic (parallel) projection showing HEIGHT world units vertically; without
+    /// HEIGHT the scene is framed [default: perspective, or the scene file's
+    /// `projection`].
+    #[arg(long, value_name = "HEIGHT", num_args = 0..=1, value_parser = parse_distance)]
+    pub ortho: Option<Option<f64>>,
     /// Visibility ordering: adaptive (exact pairwise order, splitting only cycles), bsp,
     /// newell, or simple (one depth per polygon, a baseline) [default: adaptive, or the
     /// scene file's].
@@ -386,6 +392,21 @@ fn parse_vec3(s: &str) -> Result<[f64; 3], String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ortho_takes_an_optional_height() {
+        let r = |args: &[&str]| match Cli::try_parse_from(args).unwrap().command {
+            Command::Render(r) => r.view.ortho,
+            _ => unreachable!(),
+        };
+        assert_eq!(r(&["limn", "render", "a.obj"]), None);
+        assert_eq!(r(&["limn", "render", "a.obj", "--ortho"]), Some(None));
+        assert_eq!(
+            r(&["limn", "render", "a.obj", "--ortho", "2.5"]),
+            Some(Some(2.5))
+        );
+        assert!(Cli::try_parse_from(["limn", "render", "a.obj", "--ortho", "-1"]).is_err());
+    }
 
     #[test]
     fn vectors_and_sizes_parse() {

@@ -8,7 +8,7 @@ use glam::DVec3;
 use limn_depthsort::{Arith, CullMode, OrderError, OrderOptions, SortMode};
 use limn_load::{load_scene_file, LoadError, LoadOptions, SceneOptions};
 use limn_paint::Format;
-use limn_scene::{Camera, Scene};
+use limn_scene::{Camera, Projection, Scene};
 
 use crate::args::ViewArgs;
 
@@ -117,6 +117,19 @@ pub fn camera(
     }
     if view.far.is_some() {
         cam.far = view.far;
+    }
+    if let Some(height) = view.ortho {
+        let framed = Camera::framing_orthographic(scene, cam.eye - cam.target, w, h)
+            .with_context(|| format!("{}: cannot frame the scene orthographically", at()))?;
+        if view.eye.is_none() && scene.camera.is_none() {
+            // Framed: the eye stands back far enough that nothing is clipped.
+            cam.eye = cam.target + (framed.eye - framed.target);
+        }
+        let height = height.unwrap_or(match framed.projection {
+            Projection::Orthographic { height } => height,
+            _ => 1.0,
+        });
+        cam.projection = Projection::Orthographic { height };
     }
     cam.validate()
         .with_context(|| format!("{}: invalid camera", at()))?;

@@ -228,3 +228,34 @@ fn check_usage_errors_exit_2() {
         assert_eq!(run.code, 2, "{args:?}: {}", run.stderr);
     }
 }
+
+#[test]
+fn orthographic_views_check_against_ray_casting() {
+    let d = tempdir();
+    put(d.path(), "s.obj", CROSSING_OBJ);
+    for extra in [&["--ortho"][..], &["--ortho", "3", "--eye", "0.5,2,4"]] {
+        let mut args = vec!["check", "s.obj", "--against", "raycast", "--stats", "-"];
+        args.extend_from_slice(extra);
+        let run = limn(d.path(), &args);
+        assert_eq!(run.code, 0, "{extra:?}: {}", run.stderr);
+        let j = json(&run);
+        assert_eq!(j["mismatches_outside_band"], 0, "{j}");
+    }
+    // A scene file asks for the same projection.
+    put(
+        d.path(),
+        "o.toml",
+        "[camera]\nprojection = \"orthographic\"\nheight = 3\n[[mesh]]\npath = \"s.obj\"\n",
+    );
+    let run = limn(d.path(), &["check", "o.toml", "--against", "raycast"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    // The orthographic picture differs from the perspective one.
+    let a = limn(d.path(), &["render", "s.obj", "-o", "p.svg"]);
+    let b = limn(d.path(), &["render", "s.obj", "-o", "q.svg", "--ortho"]);
+    assert_eq!((a.code, b.code), (0, 0));
+    let (p, q) = (
+        std::fs::read(d.path().join("p.svg")).unwrap(),
+        std::fs::read(d.path().join("q.svg")).unwrap(),
+    );
+    assert_ne!(p, q);
+}

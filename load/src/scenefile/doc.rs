@@ -24,8 +24,19 @@ pub(crate) struct CameraDoc {
     pub(crate) target: Option<V3>,
     pub(crate) up: Option<V3>,
     pub(crate) fov: Option<f64>,
+    /// `"perspective"` (the default) or `"orthographic"`.
+    pub(crate) projection: Option<ProjectionDoc>,
+    /// The orthographic view height in world units (default: framing the scene).
+    pub(crate) height: Option<f64>,
     pub(crate) near: Option<f64>,
     pub(crate) far: Option<f64>,
+}
+
+#[derive(Deserialize, Clone, Copy, PartialEq)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum ProjectionDoc {
+    Perspective,
+    Orthographic,
 }
 
 #[derive(Deserialize)]

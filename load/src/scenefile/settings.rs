@@ -150,6 +150,25 @@ pub(super) fn camera(
     if let Some(up) = &d.up {
         cam.up = cx.finite3(up, "camera up")?;
     }
+    let ortho = d.projection == Some(doc::ProjectionDoc::Orthographic);
+    if ortho {
+        let dir = cam.eye - cam.target;
+        let framed = Camera::framing_orthographic(scene, dir, width, height).map_err(cam_err)?;
+        let height = d.height.unwrap_or(match framed.projection {
+            limn_scene::Projection::Orthographic { height } => height,
+            _ => 1.0,
+        });
+        if d.eye.is_none() {
+            // Framed: the eye stands back far enough that nothing is clipped.
+            cam.eye = cam.target + (framed.eye - framed.target);
+        }
+        cam.projection = limn_scene::Projection::Orthographic { height };
+    } else if d.height.is_some() {
+        return Err(LoadError::Invalid {
+            at: at(),
+            message: "camera `height` needs `projection = \"orthographic\"`".into(),
+        });
+    }
     cam.near = d.near;
     cam.far = d.far;
     if let (Some(n), None) = (cam.near, cam.far) {
