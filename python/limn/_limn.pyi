@@ -1,0 +1,66 @@
+"""Type hints of the native module (the documented API is in ``limn/__init__.py``)."""
+
+from typing import Any, Dict, List, Optional, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+def render_mesh(
+    vertices: npt.NDArray[np.float64],
+    faces: npt.NDArray[np.int64],
+    path: str,
+    colors: Optional[npt.NDArray[np.float64]] = ...,
+    opacity: Optional[float] = ...,
+    eye: Optional[Tuple[float, float, float]] = ...,
+    target: Optional[Tuple[float, float, float]] = ...,
+    up: Tuple[float, float, float] = ...,
+    fov: float = ...,
+    size: Tuple[int, int] = ...,
+    sort: str = ...,
+    arith: str = ...,
+    format: Optional[str] = ...,
+) -> Dict[str, Any]: ...
+
+class Scene:
+    face_count: int
+    def __init__(self) -> None: ...
+    def add_mesh(
+        self,
+        vertices: npt.NDArray[np.float64],
+        faces: npt.NDArray[np.int64],
+        colors: Optional[npt.NDArray[np.float64]] = ...,
+        opacity: Optional[float] = ...,
+        name: str = ...,
+    ) -> int: ...
+    def add_light(
+        self,
+        kind: str,
+        vector: Optional[Tuple[float, float, float]] = ...,
+        color: Tuple[float, float, float] = ...,
+    ) -> None: ...
+    def set_camera(
+        self,
+        eye: Optional[Tuple[float, float, float]] = ...,
+        target: Optional[Tuple[float, float, float]] = ...,
+        up: Tuple[float, float, float] = ...,
+        fov: float = ...,
+        size: Tuple[int, int] = ...,
+        projection: str = ...,
+        height: Optional[float] = ...,
+        matrix: Optional[npt.NDArray[np.float64]] = ...,
+    ) -> None: ...
+    def render(
+        self,
+        path: str,
+        format: Optional[str] = ...,
+        sort: str = ...,
+        arith: str = ...,
+        outline: Optional[Tuple[float, float, float, float]] = ...,
+        background: Optional[Tuple[float, float, float]] = ...,
+    ) -> Dict[str, Any]: ...
+    def check(self, against: str = ..., sort: str = ..., arith: str = ...) -> Dict[str, Any]: ...
+    def paint(
+        self, sort: str = ..., arith: str = ..., seams: float = ...
+    ) -> List[Tuple[int, npt.NDArray[np.float64], Tuple[float, float, float, float], List[bool]]]: ...

@@ -1,0 +1,25 @@
+//! limn from Python: the `limn._limn` extension module (PyO3, numpy arrays in).
+//!
+//! The Python package `limn` (in `python/limn/`) wraps this module: it turns array-likes
+//! into contiguous numpy arrays (copying only when their type or layout requires it) and
+//! documents the API; this module checks shapes, values and indices, builds a
+//! [`limn_scene::Scene`], orders it exactly and writes the picture. Every error becomes a
+//! Python exception (`ValueError` for bad geometry, cameras and options, `OSError` for
+//! files) and no output file is left behind on error.
+
+mod camera;
+mod errors;
+mod mesh;
+mod render;
+mod scene;
+
+use pyo3::prelude::*;
+
+/// The native module.
+#[pymodule]
+fn _limn(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<scene::PyScene>()?;
+    m.add_function(wrap_pyfunction!(render::render_mesh, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

@@ -1,0 +1,289 @@
+//! `limn.Scene`: several meshes, lights and a camera; render, check against a
+//! reference, or hand the painted polygons to another drawing system.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use glam::DVec3;
+use limn_check::paint;
+use limn_depthsort::order;
+use limn_paint::{picture, Outline, Style};
+use limn_scene::{Light, LightKind, Scene};
+use limn_zbuffer::{DepthFormat, Method};
+use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::camera::CameraSpec;
+use crate::errors::value_error;
+use crate::mesh::{add_mesh, vec3, Colors};
+use crate::render::{command_style, order_options, render_scene};
+
+/// A scene; see the Python stub `limn/_limn.pyi` for the documentation.
+#[pyclass(name = "Scene", module = "limn")]
+pub(crate) struct PyScene {
+    scene: Scene,
+    camera: CameraSpec,
+}
+
+/// One of the reference methods by name.
+fn method(name: &str) -> PyResult<Method> {
+    Method::ALL
+        .into_iter()
+        .find(|m| m.name() == name)
+        .ok_or_else(|| {
+            value_error(format!(
+                "unknown reference `{name}` (raycast, zbuffer, scanline, abuffer or warnock)"
+            ))
+        })
+}
+
+/// An RGB colour in 0..1 from Python.
+fn rgb(what: &str, c: (f64, f64, f64)) -> PyResult<[f64; 3]> {
+    let c = [c.0, c.1, c.2];
+    if c.iter().all(|v| (0.0..=1.0).contains(v)) {
+        Ok(c)
+    } else {
+        Err(value_error(format!("{what} {c:?} is outside 0..1")))
+    }
+}
+
+#[pymethods]
+impl PyScene {
+    #[new]
+    fn new() -> Self {
+        PyScene {
+            scene: Scene::default(),
+            camera: CameraSpec::default(),
+        }
+    }
+
+    /// Adds a mesh; returns the id of its first face (faces are numbered in the order
+    /// they are added, over all meshes).
+    #[pyo3(signature = (vertices, faces, colors=None, opacity=None, name="mesh"))]
+    fn add_mesh(
+        &mut self,
+        vertices: PyReadonlyArray2<'_, f64>,
+        faces: PyReadonlyArray2<'_, i64>,
+        colors: Colors<'_>,
+        opacity: Option<f64>,
+        name: &str,
+    ) -> PyResult<u32> {
+        add_mesh(&mut self.scene, name, &vertices, &faces, &colors, opacity)
+    }
+
+    /// Adds a light: `"ambient"`, `"directional"` (`vector` points towards the light),
+    /// `"point"` (`vector` is its position) or `"headlight"`.
+    #[pyo3(signature = (kind, vector=None, color=(1.0, 1.0, 1.0)))]
+    fn add_light(
+        &mut self,
+        kind: &str,
+        vector: Option<(f64, f64, f64)>,
+        color: (f64, f64, f64),
+    ) -> PyResult<()> {
+        let v = vec3("light vector", vector)?;
+        let need = || value_error(format!("a {kind} light needs a vector"));
+        let kind = match kind {
+            "ambient" => LightKind::Ambient,
+            "headlight" => LightKind::Headlight,
+            "directional" => LightKind::Directional(v.ok_or_else(need)?),
+            "point" => LightKind::Point(v.ok_or_else(need)?),
+            _ => {
+                return Err(value_error(format!(
+                    "unknown light `{kind}` (ambient, directional, point or headlight)"
+                )))
+            }
+        };
+        if let LightKind::Directional(d) = kind {
+            if d == DVec3::ZERO {
+                return Err(value_error("a directional light needs a non-zero vector"));
+            }
+        }
+        self.scene.lights.push(Light {
+            kind,
+            color: rgb("light color", color)?,
+        });
+        Ok(())
+    }
+
+    /// Sets the camera (see the stub for the parameters).
+    #[pyo3(signature = (eye=None, target=None, up=(0.0, 1.0, 0.0), fov=45.0, size=(800, 600),
+        projection="perspective", height=None, matrix=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn set_camera(
+        &mut self,
+        eye: Option<(f64, f64, f64)>,
+        target: Option<(f64, f64, f64)>,
+        up: (f64, f64, f64),
+        fov: f64,
+        size: (i64, i64),
+        projection: &str,
+        height: Option<f64>,
+        matrix: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<()> {
+        if !(fov > 0.0 && fov < 180.0) {
+            return Err(value_error(format!("fov {fov} is outside (0, 180)")));
+        }
+        let ortho = match projection {
+            "perspective" if height.is_none() => None,
+            "perspective" => return Err(value_error("height needs projection=\"orthographic\"")),
+            "orthographic" => match height {
+                Some(h) if !(h > 0.0 && h.is_finite()) => {
+                    return Err(value_error(format!("height {h} must be positive")))
+                }
+                h => Some(h),
+            },
+            _ => {
+                return Err(value_error(format!(
+                    "unknown projection `{projection}` (perspective or orthographic)"
+                )))
+            }
+        };
+        let matrix = matrix.as_ref().map(crate::mesh::matrix).transpose()?;
+        if let Some(m) = matrix {
+            if !m.is_finite() {
+                return Err(value_error("the view-projection matrix is not finite"));
+            }
+        }
+        self.camera = CameraSpec {
+            eye: vec3("eye", eye)?,
+            target: vec3("target", target)?,
+            up: vec3("up", Some(up))?.unwrap_or(DVec3::Y),
+            fov,
+            size: crate::camera::size(size)?,
+            ortho,
+            matrix,
+        };
+        Ok(())
+    }
+
+    /// Number of faces.
+    #[getter]
+    fn face_count(&self) -> usize {
+        self.scene.faces.len()
+    }
+
+    /// Renders to `path`; returns the statistics of `limn --stats`.
+    #[pyo3(signature = (path, format=None, sort="adaptive", arith="exact", outline=None,
+        background=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn render<'py>(
+        &self,
+        py: Python<'py>,
+        path: PathBuf,
+        format: Option<&str>,
+        sort: &str,
+        arith: &str,
+        outline: Option<(f64, f64, f64, f64)>,
+        background: Option<(f64, f64, f64)>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let oo = order_options(sort, arith)?;
+        self.scene.validate().map_err(value_error)?;
+        let mut style = command_style();
+        if let Some((r, g, b, w)) = outline {
+            let c = rgb("outline color", (r, g, b))?;
+            if !(w >= 0.0 && w.is_finite()) {
+                return Err(value_error(format!("outline width {w} is not valid")));
+            }
+            style.outline = Some(Outline {
+                color: [c[0], c[1], c[2], 1.0],
+                width: w,
+            });
+        }
+        if let Some(c) = background {
+            let c = rgb("background", c)?;
+            style.background = Some([c[0], c[1], c[2], 1.0]);
+        }
+        render_scene(
+            py,
+            &self.scene,
+            &self.camera,
+            &path,
+            format,
+            &oo,
+            &style,
+            0.0,
+        )
+    }
+
+    /// Compares the painted order with an image-space reference pixel by pixel.
+    #[pyo3(signature = (against="raycast", sort="adaptive", arith="exact"))]
+    fn check<'py>(
+        &self,
+        py: Python<'py>,
+        against: &str,
+        sort: &str,
+        arith: &str,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let method = method(against)?;
+        let oo = order_options(sort, arith)?;
+        self.scene.validate().map_err(value_error)?;
+        let cam = self.camera.camera(&self.scene)?;
+        let t0 = Instant::now();
+        let (cmp, painted) = py
+            .detach(|| {
+                let painted = paint(&self.scene, &cam, &oo)?;
+                let reference = painted.reference(&self.scene, method, DepthFormat::F64)?;
+                Ok::<_, limn_check::CheckError>((painted.compare(&reference), painted))
+            })
+            .map_err(value_error)?;
+        let d = PyDict::new(py);
+        d.set_item("against", method.name())?;
+        d.set_item("sort", oo.sort.name())?;
+        d.set_item("arith", oo.arith.name())?;
+        d.set_item("width", cam.width)?;
+        d.set_item("height", cam.height)?;
+        d.set_item("pixels", cmp.pixels)?;
+        d.set_item("mismatches", cmp.mismatches)?;
+        d.set_item("mismatches_outside_band", cmp.mismatches_outside_band)?;
+        d.set_item("band_pixels", cmp.band_pixels)?;
+        d.set_item("fragments", painted.ordered.fragments.len())?;
+        d.set_item("splits", painted.ordered.stats.splits)?;
+        d.set_item("ms", t0.elapsed().as_secs_f64() * 1e3)?;
+        Ok(d)
+    }
+
+    /// The painted picture as polygons in paint order (back to front), in pixels (x
+    /// right, y down): a list of `(face, points (n, 2), fill (r, g, b, a), original
+    /// edges)`, seam flaps `seams` pixels wide included.
+    #[pyo3(signature = (sort="adaptive", arith="exact", seams=0.5))]
+    #[allow(clippy::type_complexity)]
+    fn paint<'py>(
+        &self,
+        py: Python<'py>,
+        sort: &str,
+        arith: &str,
+        seams: f64,
+    ) -> PyResult<
+        Vec<(
+            u32,
+            Bound<'py, PyArray2<f64>>,
+            (f64, f64, f64, f64),
+            Vec<bool>,
+        )>,
+    > {
+        let oo = order_options(sort, arith)?;
+        if !(seams >= 0.0 && seams.is_finite()) {
+            return Err(value_error(format!("seams {seams} is not valid")));
+        }
+        self.scene.validate().map_err(value_error)?;
+        let cam = self.camera.camera(&self.scene)?;
+        let ordered = py
+            .detach(|| order(&self.scene, &cam, &oo))
+            .map_err(value_error)?;
+        let style = Style {
+            seams,
+            ..command_style()
+        };
+        let pic = picture(&self.scene, &ordered, &style);
+        pic.fragments
+            .into_iter()
+            .map(|f| {
+                let pts: Vec<Vec<f64>> = f.points.iter().map(|p| p.to_vec()).collect();
+                let arr = PyArray2::from_vec2(py, &pts).map_err(value_error)?;
+                let [r, g, b, a] = f.fill;
+                Ok((f.face, arr, (r, g, b, a), f.original_edges))
+            })
+            .collect()
+    }
+}
