@@ -192,6 +192,11 @@ fn bad_values_are_errors_with_lines() {
             "[[mesh]]\npath = \"tri.obj\"\n[camera]\neye = [0, 0, 5]\nfov = 200\n",
             3,
         ),
+        ("[[mesh]]\npath = \"tri.obj\"\n[camera]\nheight = 2\n", 3),
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[camera]\nprojection = \"orthographic\"\nheight = -1\n",
+            3,
+        ),
     ] {
         let p = scene(d.path(), src);
         let e = err(&p);
