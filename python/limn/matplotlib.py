@@ -9,7 +9,8 @@ colormapping, alpha, edge colours and line widths, seen through the axes' own pr
 registers with the axes, ticks, labels, titles and colorbars matplotlib draws around it.
 limn's polygons are drawn through matplotlib's renderer at the place the collections
 would take, so the file is one vector file of the format the extension names (SVG, PDF,
-...), with no raster embedded.
+...), with no raster embedded (colorbars, which rasterise their solids of 50 colours or
+more, are kept as vectors too).
 
 The axes' panes and grid lines stay matplotlib's own, drawn first (behind the data) as
 matplotlib draws them. Scales must be linear. Line3D, Line3DCollection and scatter
@@ -173,7 +174,18 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     swaps = []
+    # Colorbars rasterise their colour solids on their own (50 colours or more); here
+    # they stay vectors, so that the file holds no raster.
+    rasterized = [
+        cb.solids
+        for cb in (getattr(ax, "_colorbar", None) for ax in fig.axes)
+        if cb is not None and cb.solids is not None and cb.solids.get_rasterized()
+    ]
+    if not any(_is_3d(ax) for ax in fig.axes):
+        rasterized = []
     try:
+        for solids in rasterized:
+            solids.set_rasterized(False)
         for ax in fig.axes:
             if not _is_3d(ax):
                 continue
@@ -189,6 +201,8 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
             swaps.append((colls, bridge))
         fig.savefig(path, **kwargs)
     finally:
+        for solids in rasterized:
+            solids.set_rasterized(True)
         for colls, bridge in swaps:
             bridge.artist.remove()
             for c in colls:

@@ -262,6 +262,9 @@ def test_savefig_orders_intersecting_surfaces_where_matplotlib_does_not(tmp_path
 def test_output_is_one_vector_file(tmp_path, ext):
     fig, ax, _ = crossing_surfaces()
     ax.set_title("two surfaces")
+    x, y = np.meshgrid(np.linspace(-1, 1, 8), np.linspace(-1, 1, 8))
+    s = ax.plot_surface(x, y, x * y - 0.5, cmap="viridis", linewidth=0.3, edgecolor="k")
+    fig.colorbar(s, ax=ax)  # matplotlib rasterises a colorbar's solids on its own
     lm.savefig(fig, tmp_path / f"f.{ext}")
     data = (tmp_path / f"f.{ext}").read_bytes()
     if ext == "svg":
