@@ -71,7 +71,7 @@ def render_mesh(
     eye, target, up, fov: the camera; without ``eye`` the scene is framed as the
     command frames it (from the right, above and in front). size: (width, height) in
     pixels. sort: adaptive, bsp, newell or simple. arith: exact or float. format: svg,
-    pdf, eps or png (default: from the extension).
+    pdf, eps, png or tikz (default: from the extension).
 
     Raises ValueError for wrong shapes, NaN, indices out of range and bad options;
     OSError when the file cannot be written. Nothing is written on error.

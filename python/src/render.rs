@@ -35,13 +35,14 @@ pub(crate) fn order_options(sort: &str, arith: &str) -> PyResult<OrderOptions> {
 /// The output format: the name given, else the path's extension.
 pub(crate) fn format_of(path: &Path, format: Option<&str>) -> PyResult<Format> {
     if let Some(f) = format {
-        return Format::from_name(f)
-            .ok_or_else(|| value_error(format!("unknown format `{f}` (svg, pdf, eps or png)")));
+        return Format::from_name(f).ok_or_else(|| {
+            value_error(format!("unknown format `{f}` (svg, pdf, eps, png or tikz)"))
+        });
     }
     let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
     Format::from_extension(ext).ok_or_else(|| {
         value_error(format!(
-            "{}: unknown extension `.{ext}` (use .svg, .pdf, .eps, .png or format=)",
+            "{}: unknown extension `.{ext}` (use .svg, .pdf, .eps, .png, .tikz or format=)",
             path.display()
         ))
     })
