@@ -108,5 +108,6 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         fragments,
         outline: style.outline,
         seams: 0.0,
+        marks: Vec::new(),
     }
 }

@@ -46,6 +46,14 @@
 //! - **Numbers** in the text formats are written with a fixed maximal number of decimals
 //!   (trailing zeros trimmed, never `-0`, never an exponent), so equal input gives equal
 //!   bytes.
+//! - **Marks** ([`Picture::marks`]: visible line pieces, markers, labels, arrow heads) are
+//!   painted between the fragments at their [`Mark::before`] position (see [`Picture`]);
+//!   a run of fragments never spans a mark. Line pieces are stroked with butt caps and
+//!   round joins, dashed from their `dash_offset`; markers are drawn whole, centred on
+//!   their anchor; labels are one line of text in a standard sans-serif font (SVG
+//!   `<text>`, PDF and EPS Helvetica, PNG a bundled font); arrow heads are filled
+//!   triangles. Invalid marks (non-finite numbers, fewer than two points, a width or size
+//!   that is not positive) are skipped and counted in [`PaintStats::skipped`].
 //! - **Objects**: a fragment's `object` indexes [`Picture::objects`]; an index out of range
 //!   is painted as an unnamed object.
 //!
@@ -88,7 +96,10 @@ pub use covers::covers;
 pub use eps::{EpsOptions, EpsPainter};
 pub use error::PaintError;
 pub use format::Format;
-pub use model::{Outline, PaintFragment, Picture};
+pub use model::{
+    ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
+    Outline, PaintFragment, Picture,
+};
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};
 pub use png::{PngOptions, PngPainter};

@@ -23,6 +23,14 @@ pub struct PaintStats {
     /// Fragments (and outline paths) the format could only approximate: translucency in
     /// EPS, Gouraud shading in SVG and TikZ.
     pub approximated: usize,
+    /// Line pieces stroked (marks of kind [`crate::MarkKind::Line`]).
+    pub lines: usize,
+    /// Markers drawn.
+    pub markers: usize,
+    /// Labels written.
+    pub labels: usize,
+    /// Arrow heads filled.
+    pub heads: usize,
 }
 
 /// Writes a [`Picture`] in one format.

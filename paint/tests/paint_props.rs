@@ -72,6 +72,7 @@ fn picture() -> impl Strategy<Value = Picture> {
                 width,
             }),
             seams: if background { 0.5 } else { 0.0 },
+            marks: Vec::new(),
         })
 }
 
