@@ -1,5 +1,7 @@
 //! The picture model: what every painter paints.
 
+pub use limn_scene::{LabelAnchor, MarkerShape};
+
 /// One convex (or at least simple) polygon to paint, in pixel coordinates (x right, y down).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct PaintFragment {
@@ -162,51 +164,6 @@ pub struct LinePiece {
     pub line: u32,
 }
 
-/// Marker shapes, drawn centred on the anchor.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum MarkerShape {
-    /// A filled disc of diameter `size`.
-    #[default]
-    Dot,
-    /// A stroked circle of diameter `size`.
-    Circle,
-    /// A stroked axis-aligned square of side `size`.
-    Square,
-    /// A stroked upright equilateral triangle inscribed in the circle of diameter `size`.
-    Triangle,
-    /// A diagonal cross (×) of width and height `size`.
-    Cross,
-    /// An upright cross (+) of width and height `size`.
-    Plus,
-}
-
-impl MarkerShape {
-    /// Parses `dot`, `circle`, `square`, `triangle`, `cross` or `plus`.
-    pub fn from_name(s: &str) -> Option<MarkerShape> {
-        Some(match s {
-            "dot" => MarkerShape::Dot,
-            "circle" => MarkerShape::Circle,
-            "square" => MarkerShape::Square,
-            "triangle" => MarkerShape::Triangle,
-            "cross" => MarkerShape::Cross,
-            "plus" => MarkerShape::Plus,
-            _ => return None,
-        })
-    }
-
-    /// The name accepted by [`MarkerShape::from_name`].
-    pub fn name(self) -> &'static str {
-        match self {
-            MarkerShape::Dot => "dot",
-            MarkerShape::Circle => "circle",
-            MarkerShape::Square => "square",
-            MarkerShape::Triangle => "triangle",
-            MarkerShape::Cross => "cross",
-            MarkerShape::Plus => "plus",
-        }
-    }
-}
-
 /// A marker at a visible anchor, in screen size (it does not shrink with distance).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Marker {
@@ -220,83 +177,6 @@ pub struct Marker {
     pub color: [f64; 4],
     /// Stroke width in pixels of the stroked shapes (ignored for dots).
     pub stroke: f64,
-}
-
-/// Which point of a label's text box is placed at the anchor (plus the offset): the
-/// TikZ `anchor` convention, so `South` puts the text above the point and `West` to its
-/// right.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum LabelAnchor {
-    /// The centre of the box.
-    #[default]
-    Center,
-    /// The middle of the top edge (text below the point).
-    North,
-    /// The middle of the bottom edge (text above the point).
-    South,
-    /// The middle of the right edge (text left of the point).
-    East,
-    /// The middle of the left edge (text right of the point).
-    West,
-    /// The top right corner.
-    NorthEast,
-    /// The top left corner.
-    NorthWest,
-    /// The bottom right corner.
-    SouthEast,
-    /// The bottom left corner.
-    SouthWest,
-}
-
-impl LabelAnchor {
-    /// Parses `center`, `north`, `south`, `east`, `west`, `north east`, `north west`,
-    /// `south east` or `south west` (TikZ's names; `-` or `_` may replace the space).
-    pub fn from_name(s: &str) -> Option<LabelAnchor> {
-        Some(match s.replace(['-', '_'], " ").as_str() {
-            "center" | "centre" => LabelAnchor::Center,
-            "north" => LabelAnchor::North,
-            "south" => LabelAnchor::South,
-            "east" => LabelAnchor::East,
-            "west" => LabelAnchor::West,
-            "north east" => LabelAnchor::NorthEast,
-            "north west" => LabelAnchor::NorthWest,
-            "south east" => LabelAnchor::SouthEast,
-            "south west" => LabelAnchor::SouthWest,
-            _ => return None,
-        })
-    }
-
-    /// TikZ's name of the anchor (`center`, `north east`, …).
-    pub fn name(self) -> &'static str {
-        match self {
-            LabelAnchor::Center => "center",
-            LabelAnchor::North => "north",
-            LabelAnchor::South => "south",
-            LabelAnchor::East => "east",
-            LabelAnchor::West => "west",
-            LabelAnchor::NorthEast => "north east",
-            LabelAnchor::NorthWest => "north west",
-            LabelAnchor::SouthEast => "south east",
-            LabelAnchor::SouthWest => "south west",
-        }
-    }
-
-    /// The anchor's place in the text box as fractions `(fx, fy)` of its width and
-    /// height, from the box's left and top edges: `Center` is `(0.5, 0.5)`, `SouthWest`
-    /// is `(0, 1)`.
-    pub fn fractions(self) -> (f64, f64) {
-        match self {
-            LabelAnchor::Center => (0.5, 0.5),
-            LabelAnchor::North => (0.5, 0.0),
-            LabelAnchor::South => (0.5, 1.0),
-            LabelAnchor::East => (1.0, 0.5),
-            LabelAnchor::West => (0.0, 0.5),
-            LabelAnchor::NorthEast => (1.0, 0.0),
-            LabelAnchor::NorthWest => (0.0, 0.0),
-            LabelAnchor::SouthEast => (1.0, 1.0),
-            LabelAnchor::SouthWest => (0.0, 1.0),
-        }
-    }
 }
 
 /// A text label at a visible anchor.

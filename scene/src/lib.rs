@@ -23,10 +23,12 @@
 //! ```
 
 mod camera;
+mod marks;
 mod model;
 mod shade;
 pub mod shapes;
 
 pub use camera::{Camera, CameraError, Projected, Projection, Viewpoint, DEFAULT_VIEW_DIRECTION};
+pub use marks::{LabelAnchor, MarkerShape, PointMark, Polyline, TextLabel};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
 pub use shade::{interpolated_normal, polygon_normal, shade_face, shade_point, Effects, Rgb};

@@ -3,7 +3,7 @@
 use glam::DVec3;
 use thiserror::Error;
 
-use crate::Camera;
+use crate::{Camera, PointMark, Polyline, TextLabel};
 
 /// Errors raised while building a scene in code.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -39,6 +39,14 @@ pub enum SceneError {
     /// A coordinate is NaN or infinite.
     #[error("non-finite coordinate in {0}")]
     NonFinite(&'static str),
+    /// A line, point or label breaks a rule (too few points, a bad size or colour).
+    #[error("{what}: {problem}")]
+    BadMark {
+        /// "line", "point" or "label".
+        what: &'static str,
+        /// What is wrong.
+        problem: String,
+    },
     /// Too many faces or vertices for 32-bit ids.
     #[error("scene too large: more than 2^32 - 1 {0}")]
     TooLarge(&'static str),
@@ -175,6 +183,12 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Camera given by the input, if any.
     pub camera: Option<Camera>,
+    /// Polylines drawn over the surfaces where visible.
+    pub lines: Vec<Polyline>,
+    /// Points drawn as markers when visible.
+    pub points: Vec<PointMark>,
+    /// Text labels drawn when their anchor is visible.
+    pub labels: Vec<TextLabel>,
     /// Warnings collected while loading (missing MTL, dropped faces, ...).
     pub warnings: Vec<String>,
     /// The files the scene was read from: the input and every file it referenced
@@ -286,6 +300,16 @@ impl Scene {
         for f in &self.faces {
             self.check_face(f)?;
         }
+        let objects = self.objects.len();
+        for l in &self.lines {
+            l.validate(objects)?;
+        }
+        for p in &self.points {
+            p.validate(objects)?;
+        }
+        for l in &self.labels {
+            l.validate(objects)?;
+        }
         Ok(())
     }
 
@@ -298,14 +322,17 @@ impl Scene {
             .collect()
     }
 
-    /// Axis-aligned bounds (min, max) of the vertices used by faces, or `None` when there
-    /// are no faces.
+    /// Axis-aligned bounds (min, max) of the vertices used by faces, the points of lines
+    /// and the anchors of markers and labels, or `None` when there are none.
     pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
         let mut it = self
             .faces
             .iter()
             .flat_map(|f| f.vertices.iter())
-            .map(|&v| self.vertices[v as usize]);
+            .map(|&v| self.vertices[v as usize])
+            .chain(self.lines.iter().flat_map(|l| l.points.iter().copied()))
+            .chain(self.points.iter().map(|p| p.at))
+            .chain(self.labels.iter().map(|l| l.at));
         let first = it.next()?;
         Some(it.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p))))
     }
@@ -347,7 +374,7 @@ impl Scene {
     }
 
     /// Appends all faces of `other` (with its vertices, normals, materials and objects),
-    /// keeping their order after this scene's faces.
+    /// keeping their order after this scene's faces, and its lines, points and labels.
     pub fn append(&mut self, other: &Scene) {
         let vo = self.vertices.len() as u32;
         let no = self.normals.len() as u32;
@@ -368,6 +395,19 @@ impl Scene {
                 object: f.object + oo,
             });
         }
+        let shift = |o: u32| o + oo;
+        self.lines.extend(other.lines.iter().map(|l| Polyline {
+            object: shift(l.object),
+            ..l.clone()
+        }));
+        self.points.extend(other.points.iter().map(|p| PointMark {
+            object: shift(p.object),
+            ..p.clone()
+        }));
+        self.labels.extend(other.labels.iter().map(|l| TextLabel {
+            object: shift(l.object),
+            ..l.clone()
+        }));
         self.lights.extend_from_slice(&other.lights);
         self.warnings.extend(other.warnings.iter().cloned());
         self.files.extend(other.files.iter().cloned());
