@@ -35,6 +35,7 @@ mod adaptive;
 mod bsp;
 mod coincident;
 mod geom;
+mod marks;
 mod merge;
 mod newell;
 mod occlusion;
@@ -51,6 +52,9 @@ use glam::DVec3;
 use limn_kernel::{ExactKernel, FloatKernel, Kernel};
 use limn_scene::{Camera, Scene};
 
+pub use crate::marks::{
+    hide_marks, order_with_marks, MarkStats, VisibleAnchor, VisibleMarks, VisiblePiece,
+};
 pub use crate::options::{
     default_max_fragments, Arith, CullMode, OrderError, OrderOptions, SortMode, Stats,
 };

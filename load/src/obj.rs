@@ -8,11 +8,13 @@
 //! count from the first vertex, negative ones back from the last one so far).
 //!
 //! Statements read: `v` (3 to 7 numbers: x y z, then an optional w or colour, ignored),
-//! `vn`, `f`/`fo` (`v`, `v/vt`, `v//vn`, `v/vt/vn`), `o` and `g` (each starts an
-//! object; the same name again continues it), `usemtl`, `mtllib`. Texture
-//! coordinates, smoothing groups, lines, points and the free-form geometry statements
-//! are accepted and ignored; any other statement is an error (so binary garbage is
-//! reported, not silently dropped).
+//! `vn`, `f`/`fo` (`v`, `v/vt`, `v//vn`, `v/vt/vn`), `l` (a polyline of at least two
+//! vertices, `v` or `v/vt`), `p` (one point marker per vertex), `o` and `g` (each starts
+//! an object; the same name again continues it), `usemtl`, `mtllib`. Lines and points
+//! take the current material's `Kd` and `d` as their colour (black without a `usemtl`),
+//! width 1 px and 4 px dots. Texture coordinates, smoothing groups and the free-form
+//! geometry statements are accepted and ignored; any other statement is an error (so
+//! binary garbage is reported, not silently dropped).
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -22,7 +24,7 @@ use glam::DVec3;
 use super::mtl::{self, Library};
 use super::text::{lossy, number, parse_i64, rest_after_keyword, strip_comment, tokens, Lines};
 use super::{check_u32, refs, stem, LoadError, LoadOptions, Location};
-use limn_scene::{Face, Material, Scene};
+use limn_scene::{Face, Material, PointMark, Polyline, Scene};
 
 /// Statements accepted and ignored.
 const IGNORED: &[&[u8]] = &[
@@ -74,7 +76,6 @@ struct Obj<'a> {
     material_line: u64,
     material: Option<u32>,
     texcoords: u64,
-    ignored_lines: u64,
 }
 
 /// Parses an OBJ file (and the MTL libraries it names).
@@ -92,21 +93,14 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         material_line: 0,
         material: None,
         texcoords: 0,
-        ignored_lines: 0,
     };
     let mut lines = Lines::new(bytes, path, true);
     while let Some(next) = lines.next_line() {
         let (n, line) = next?;
         obj.statement(n, strip_comment(&line))?;
     }
-    if obj.ignored_lines > 0 {
-        obj.scene.warnings.push(format!(
-            "{}: {} line/point elements ignored (only faces are drawn)",
-            path.display(),
-            obj.ignored_lines
-        ));
-    }
-    if obj.scene.faces.is_empty() {
+    let s = &obj.scene;
+    if s.faces.is_empty() && s.lines.is_empty() && s.points.is_empty() {
         obj.scene
             .warnings
             .push(format!("{}: no faces", path.display()));
@@ -160,7 +154,8 @@ impl Obj<'_> {
                 self.material = None;
             }
             b"mtllib" => self.mtllib(n, rest_after_keyword(line))?,
-            b"l" | b"p" => self.ignored_lines += 1,
+            b"l" => self.line(n, toks)?,
+            b"p" => self.points(n, toks)?,
             k if IGNORED.contains(&k) => {}
             k => {
                 return Err(LoadError::syntax(
@@ -241,6 +236,94 @@ impl Obj<'_> {
             material,
             object,
         });
+        Ok(())
+    }
+
+    /// The vertex indices of an `l` or `p` element (`v` or `v/vt` each).
+    fn element_vertices<'t>(
+        &self,
+        n: u64,
+        toks: impl Iterator<Item = &'t [u8]>,
+    ) -> Result<Vec<glam::DVec3>, LoadError> {
+        let mut points = Vec::new();
+        for t in toks {
+            let mut parts = t.split(|&b| b == b'/');
+            let v = parts.next().unwrap_or_default();
+            let vt = parts.next();
+            if parts.next().is_some() {
+                return Err(LoadError::syntax(
+                    self.path,
+                    n,
+                    format!("bad line or point vertex {:?}", lossy(t)),
+                ));
+            }
+            let count = self.scene.vertices.len() as u64;
+            let i = self.index(n, v, count, "vertex")?;
+            if let Some(vt) = vt.filter(|s| !s.is_empty()) {
+                self.index(n, vt, self.texcoords, "texture coordinate")?;
+            }
+            points.push(self.scene.vertices[i as usize]);
+        }
+        Ok(points)
+    }
+
+    /// The colour of lines and points: the current material's `Kd` and opacity, black
+    /// when no `usemtl` is in effect.
+    fn mark_color(&mut self) -> Result<[f64; 4], LoadError> {
+        if self.material_name.is_none() {
+            return Ok([0.0, 0.0, 0.0, 1.0]);
+        }
+        let i = self.current_material()? as usize;
+        let m = &self.scene.materials[i];
+        Ok([m.kd[0], m.kd[1], m.kd[2], m.opacity.clamp(0.0, 1.0)])
+    }
+
+    fn line<'t>(&mut self, n: u64, toks: impl Iterator<Item = &'t [u8]>) -> Result<(), LoadError> {
+        let points = self.element_vertices(n, toks)?;
+        if points.len() < 2 {
+            return Err(LoadError::syntax(
+                self.path,
+                n,
+                format!(
+                    "a line has {} vertices; at least 2 are needed",
+                    points.len()
+                ),
+            ));
+        }
+        let color = self.mark_color()?;
+        let object = self.current_object()?;
+        check_u32(self.scene.lines.len(), "lines", self.path)?;
+        self.scene.lines.push(Polyline {
+            color,
+            object,
+            ..Polyline::new(points)
+        });
+        Ok(())
+    }
+
+    fn points<'t>(
+        &mut self,
+        n: u64,
+        toks: impl Iterator<Item = &'t [u8]>,
+    ) -> Result<(), LoadError> {
+        let points = self.element_vertices(n, toks)?;
+        if points.is_empty() {
+            return Err(LoadError::syntax(
+                self.path,
+                n,
+                "a point element without vertices",
+            ));
+        }
+        let color = self.mark_color()?;
+        let object = self.current_object()?;
+        for at in points {
+            check_u32(self.scene.points.len(), "points", self.path)?;
+            self.scene.points.push(PointMark {
+                color,
+                object,
+                ..PointMark::new(at)
+            });
+        }
         Ok(())
     }
 

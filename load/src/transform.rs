@@ -42,6 +42,32 @@ pub(crate) fn apply(
     }
 }
 
+/// Applies `m` to the points of every line and the anchors of every point and label.
+pub(crate) fn apply_to_marks(scene: &mut Scene, m: &DMat4) {
+    for l in &mut scene.lines {
+        for p in &mut l.points {
+            *p = m.transform_point3(*p);
+        }
+    }
+    for p in &mut scene.points {
+        p.at = m.transform_point3(p.at);
+    }
+    for l in &mut scene.labels {
+        l.at = m.transform_point3(l.at);
+    }
+}
+
+/// Whether all line points and anchors are finite (after a transform).
+pub(crate) fn marks_finite(scene: &Scene) -> bool {
+    scene
+        .lines
+        .iter()
+        .flat_map(|l| &l.points)
+        .all(|p| p.is_finite())
+        && scene.points.iter().all(|p| p.at.is_finite())
+        && scene.labels.iter().all(|l| l.at.is_finite())
+}
+
 /// Whether every entry of `m` is finite.
 pub(crate) fn is_finite(m: &DMat4) -> bool {
     m.to_cols_array().iter().all(|v| v.is_finite())

@@ -15,6 +15,12 @@ pub(crate) struct Doc {
     pub(crate) mesh: Vec<Spanned<MeshDoc>>,
     #[serde(default)]
     pub(crate) light: Vec<Spanned<LightDoc>>,
+    #[serde(default)]
+    pub(crate) line: Vec<Spanned<LineDoc>>,
+    #[serde(default)]
+    pub(crate) points: Vec<Spanned<PointsDoc>>,
+    #[serde(default)]
+    pub(crate) label: Vec<Spanned<LabelDoc>>,
 }
 
 #[derive(Deserialize)]
@@ -173,4 +179,42 @@ pub(crate) struct LightDoc {
     pub(crate) position: Option<V3>,
     pub(crate) color: Option<Spanned<ColourDoc>>,
     pub(crate) intensity: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct LineDoc {
+    pub(crate) points: Option<Spanned<Vec<[f64; 3]>>>,
+    pub(crate) path: Option<Spanned<String>>,
+    pub(crate) name: Option<String>,
+    pub(crate) color: Option<Spanned<ColourDoc>>,
+    pub(crate) opacity: Option<Spanned<f64>>,
+    pub(crate) width: Option<Spanned<f64>>,
+    pub(crate) dash: Option<Spanned<Vec<f64>>>,
+    #[serde(default)]
+    pub(crate) head: bool,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct PointsDoc {
+    pub(crate) positions: Spanned<Vec<[f64; 3]>>,
+    pub(crate) name: Option<String>,
+    pub(crate) marker: Option<Spanned<String>>,
+    pub(crate) size: Option<Spanned<f64>>,
+    pub(crate) color: Option<Spanned<ColourDoc>>,
+    pub(crate) opacity: Option<Spanned<f64>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct LabelDoc {
+    pub(crate) at: V3,
+    pub(crate) text: Spanned<String>,
+    pub(crate) name: Option<String>,
+    pub(crate) size: Option<Spanned<f64>>,
+    pub(crate) color: Option<Spanned<ColourDoc>>,
+    pub(crate) opacity: Option<Spanned<f64>>,
+    pub(crate) anchor: Option<Spanned<String>>,
+    pub(crate) offset: Option<Spanned<[f64; 2]>>,
 }

@@ -35,6 +35,27 @@
 //! direction = [1.0, 1.0, 1.0]  # towards the light (point lights: position)
 //! color = [1.0, 1.0, 1.0]
 //! intensity = 0.8           # multiplies color
+//!
+//! [[line]]                  # a polyline drawn where visible
+//! points = [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]  # or path = "curve.obj" (only `l`s)
+//! color = "#c04030"         # default black; opacity = 1.0
+//! width = 1.5               # pixels, default 1
+//! dash = [4.0, 2.0]         # pixels: dash, gap, ...; default solid
+//! head = true               # an arrow head at the last point
+//! name = "trajectory"
+//!
+//! [[points]]                # markers drawn whole where their point is visible
+//! positions = [[0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]
+//! marker = "circle"         # dot | circle | square | triangle | cross | plus
+//! size = 6.0                # pixels, default 4
+//! color = [0.0, 0.0, 1.0]
+//!
+//! [[label]]                 # text shown when its anchor is visible
+//! at = [1.0, 0.0, 0.0]
+//! text = "x"
+//! size = 10.0               # points (= pixels), default 10
+//! anchor = "south west"     # the box point put at the anchor (TikZ names)
+//! offset = [2.0, -2.0]      # pixels, y down
 //! ```
 //!
 //! A mesh is placed by `translate · rotate · scale` (scale first). The `material` table
@@ -44,6 +65,7 @@
 //! include another one. Unknown keys are errors.
 
 mod doc;
+mod marks;
 mod settings;
 
 use std::ops::Range;
@@ -189,7 +211,7 @@ pub(crate) fn parse(
         let sub = load_mesh(&cx, mesh.get_ref(), opts)?;
         scene.append(&sub);
     }
-    if doc.mesh.is_empty() {
+    if doc.mesh.is_empty() && doc.line.is_empty() && doc.points.is_empty() {
         scene
             .warnings
             .push(format!("{}: no [[mesh]]", path.display()));
@@ -197,6 +219,7 @@ pub(crate) fn parse(
     for l in &doc.light {
         scene.lights.push(settings::light(&cx, l)?);
     }
+    marks::add(&cx, &doc.line, &doc.points, &doc.label, &mut scene, opts)?;
     let options = settings::options(&cx, &doc)?;
     if let Some(cam) = &doc.camera {
         let size = options.size.unwrap_or((800, 600));
@@ -237,7 +260,8 @@ fn load_mesh(cx: &Ctx, m: &MeshDoc, opts: &LoadOptions) -> Result<Scene, LoadErr
         matrix *= DMat4::from_scale(v);
     }
     transform::apply(&mut sub, &matrix, 0, 0, 0);
-    if !transform::vertices_finite(&sub, 0) {
+    transform::apply_to_marks(&mut sub, &matrix);
+    if !transform::vertices_finite(&sub, 0) || !transform::marks_finite(&sub) {
         return Err(LoadError::NonFinite {
             at,
             what: "vertex after the mesh's transform".into(),

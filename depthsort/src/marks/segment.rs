@@ -1,0 +1,262 @@
+//! One segment at a time: the exact parameter intervals hidden by opaque occluders and
+//! covered by translucent ones, the visible pieces between them, joined along the line.
+
+use glam::{DMat4, DVec3};
+use limn_kernel::Plane;
+use limn_scene::Camera;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+use super::bins::Bins;
+use super::cone::{self, q3, Affine, Q};
+use super::{MarkStats, Occluder, VisibleAnchor, VisiblePiece};
+use crate::geom::Box2;
+
+/// What the segment pass works with.
+pub(super) struct Ctx {
+    pub(super) occluders: Vec<Occluder>,
+    pub(super) bins: Bins,
+    pub(super) eye: [Q; 3],
+    pub(super) near: Plane,
+    pub(super) camera: Camera,
+    pub(super) vp: DMat4,
+    /// The fragments' count: the paint position after every fragment.
+    pub(super) end: usize,
+    pub(super) stats: MarkStats,
+}
+
+/// The parameters `u ∈ [lo, hi]` where `f(A) + u·(f(B) − f(A)) ≥ 0`, intersected with
+/// `[lo, hi]`; `None` when empty.
+fn clip(fa: &Q, fb: &Q, lo: Q, hi: Q) -> Option<(Q, Q)> {
+    let slope = fb - fa;
+    let (mut lo, mut hi) = (lo, hi);
+    if slope.is_zero() {
+        if fa.is_negative() {
+            return None;
+        }
+    } else {
+        let root = -fa / &slope;
+        if slope.is_positive() {
+            if root > lo {
+                lo = root;
+            }
+        } else if root < hi {
+            hi = root;
+        }
+    }
+    (lo <= hi).then_some((lo, hi))
+}
+
+/// A piece being built.
+struct Open {
+    world: Vec<DVec3>,
+    before: usize,
+    start: f64,
+}
+
+impl Ctx {
+    fn project(&self, p: DVec3) -> [f64; 2] {
+        let s = self.camera.project_with(&self.vp, p);
+        [s.x, s.y]
+    }
+
+    /// The exact point `A + u(B − A)`, rounded once.
+    fn point_at(a: &[Q; 3], b: &[Q; 3], u: &Q) -> DVec3 {
+        let c = |i: usize| (&a[i] + u * (&b[i] - &a[i])).to_f64().unwrap_or(f64::NAN);
+        DVec3::new(c(0), c(1), c(2))
+    }
+
+    /// Candidate occluders of a screen box that may lie in front of `pts` (exact plane
+    /// sides: some point strictly on the far side of the occluder's plane from the eye).
+    fn candidates(&mut self, pts: &[DVec3], screen: &Box2) -> Vec<u32> {
+        let mut c = self.bins.query(screen);
+        c.retain(|&i| {
+            let o = &self.occluders[i as usize];
+            pts.iter()
+                .any(|p| cone::may_be_behind(&o.support, o.eye_side, p.to_array()))
+        });
+        c
+    }
+
+    /// Screen box of the world points, infinite when one lies behind the near plane.
+    fn screen_box(&self, pts: &[DVec3], near: &[bool]) -> Box2 {
+        if near.iter().any(|&ok| !ok) {
+            return Box2 {
+                min_x: f64::NEG_INFINITY,
+                min_y: f64::NEG_INFINITY,
+                max_x: f64::INFINITY,
+                max_y: f64::INFINITY,
+            };
+        }
+        let s: Vec<[f64; 2]> = pts.iter().map(|&p| self.project(p)).collect();
+        crate::geom::bbox(&s)
+    }
+
+    /// Splits polyline `line` into visible pieces (appended to `out`).
+    pub(super) fn polyline(&mut self, line: u32, points: &[DVec3], out: &mut Vec<VisiblePiece>) {
+        let near = Affine::of_plane(&self.near);
+        let mut open: Option<Open> = None;
+        let mut hidden_open = false;
+        let mut length = 0.0;
+        for w in points.windows(2) {
+            self.stats.segments_in += 1;
+            let (a, b) = (w[0], w[1]);
+            let (qa, qb) = (q3(a.to_array()), q3(b.to_array()));
+            let seg_start = length;
+            let (sa, sb) = (self.project(a), self.project(b));
+            let seg_len = (sb[0] - sa[0]).hypot(sb[1] - sa[1]);
+            length += if seg_len.is_finite() { seg_len } else { 0.0 };
+            if a == b {
+                continue;
+            }
+            // The part in front of the near plane.
+            let Some((u_lo, u_hi)) = clip(&near.at(&qa), &near.at(&qb), Q::zero(), Q::one()) else {
+                close(&mut open, line, out, self, &mut hidden_open, true);
+                continue;
+            };
+            let ends = [
+                Self::point_at(&qa, &qb, &u_lo),
+                Self::point_at(&qa, &qb, &u_hi),
+            ];
+            let screen = self.screen_box(&ends, &[true, true]);
+            let cands = self.candidates(&[a, b], &screen);
+            // Exact intervals: hidden (opaque) and covered (translucent, with position).
+            let mut hidden: Vec<(Q, Q)> = Vec::new();
+            let mut covered: Vec<(Q, Q, usize)> = Vec::new();
+            for i in cands {
+                self.stats.exact_tests += 1;
+                let eye = self.eye.clone();
+                let o = &mut self.occluders[i as usize];
+                let (opaque, before) = (o.opaque, o.before);
+                let Some(c) = o.cone(&eye) else { continue };
+                let mut iv = clip(
+                    &c.behind.at(&qa),
+                    &c.behind.at(&qb),
+                    u_lo.clone(),
+                    u_hi.clone(),
+                );
+                for wall in &c.walls {
+                    iv = iv.and_then(|(lo, hi)| clip(&wall.at(&qa), &wall.at(&qb), lo, hi));
+                }
+                if let Some((lo, hi)) = iv.filter(|(lo, hi)| lo < hi) {
+                    if opaque {
+                        hidden.push((lo, hi));
+                    } else {
+                        covered.push((lo, hi, before));
+                    }
+                }
+            }
+            // Elementary intervals between all break points.
+            let mut cuts: Vec<Q> = vec![Q::zero(), u_lo.clone(), u_hi.clone(), Q::one()];
+            for (lo, hi) in &hidden {
+                cuts.push(lo.clone());
+                cuts.push(hi.clone());
+            }
+            for (lo, hi, _) in &covered {
+                cuts.push(lo.clone());
+                cuts.push(hi.clone());
+            }
+            cuts.sort();
+            cuts.dedup();
+            for k in 0..cuts.len() - 1 {
+                let (t0, t1) = (&cuts[k], &cuts[k + 1]);
+                let inside = |lo: &Q, hi: &Q| lo <= t0 && t1 <= hi;
+                let clipped = t1 <= &u_lo || t0 >= &u_hi;
+                if clipped || hidden.iter().any(|(lo, hi)| inside(lo, hi)) {
+                    close(&mut open, line, out, self, &mut hidden_open, true);
+                    continue;
+                }
+                let before = covered
+                    .iter()
+                    .filter(|(lo, hi, _)| inside(lo, hi))
+                    .map(|c| c.2)
+                    .min()
+                    .unwrap_or(self.end);
+                let p0 = Self::point_at(&qa, &qb, t0);
+                let p1 = Self::point_at(&qa, &qb, t1);
+                match &mut open {
+                    Some(o) if o.before == before && o.world.last() == Some(&p0) => {
+                        o.world.push(p1)
+                    }
+                    _ => {
+                        close(&mut open, line, out, self, &mut hidden_open, false);
+                        let s0 = self.project(p0);
+                        let start = seg_start + (s0[0] - sa[0]).hypot(s0[1] - sa[1]);
+                        open = Some(Open {
+                            world: vec![p0, p1],
+                            before,
+                            start: if start.is_finite() { start } else { 0.0 },
+                        });
+                    }
+                }
+            }
+        }
+        close(&mut open, line, out, self, &mut hidden_open, false);
+        if hidden_open {
+            self.stats.hidden_pieces += 1;
+        }
+    }
+
+    /// The visible anchor at `p`, or `None` when an opaque occluder hides it or it lies
+    /// nearer than the near plane.
+    pub(super) fn anchor(&mut self, index: u32, p: DVec3) -> Option<VisibleAnchor> {
+        let qp = q3(p.to_array());
+        if Affine::of_plane(&self.near).at(&qp).is_negative() {
+            return None;
+        }
+        let at = self.project(p);
+        let b = Box2 {
+            min_x: at[0],
+            min_y: at[1],
+            max_x: at[0],
+            max_y: at[1],
+        };
+        let mut before = self.end;
+        for i in self.candidates(&[p], &b) {
+            self.stats.exact_tests += 1;
+            let eye = self.eye.clone();
+            let o = &mut self.occluders[i as usize];
+            let (opaque, pos) = (o.opaque, o.before);
+            let Some(c) = o.cone(&eye) else { continue };
+            if c.hides(&qp) {
+                if opaque {
+                    return None;
+                }
+                before = before.min(pos);
+            }
+        }
+        Some(VisibleAnchor {
+            index,
+            at,
+            from: at,
+            before,
+        })
+    }
+}
+
+/// Ends the open piece (if any) and, for `hidden`, starts or continues a hidden stretch.
+fn close(
+    open: &mut Option<Open>,
+    line: u32,
+    out: &mut Vec<VisiblePiece>,
+    ctx: &mut Ctx,
+    hidden_open: &mut bool,
+    hidden: bool,
+) {
+    if let Some(o) = open.take() {
+        let points = o.world.iter().map(|&p| ctx.project(p)).collect();
+        out.push(VisiblePiece {
+            line,
+            world: o.world,
+            points,
+            before: o.before,
+            start: o.start,
+        });
+        ctx.stats.pieces_out += 1;
+    }
+    if hidden {
+        *hidden_open = true;
+    } else if *hidden_open {
+        ctx.stats.hidden_pieces += 1;
+        *hidden_open = false;
+    }
+}

@@ -1,0 +1,129 @@
+//! Lines, markers and labels hidden exactly: known crossings, the in-plane rule,
+//! translucent paint positions, and invariance under rigid motions and permutation.
+
+use glam::DVec3;
+use limn_depthsort::{order_with_marks, Arith, OrderOptions, VisibleMarks};
+use limn_scene::{Camera, Material, PointMark, Polyline, Scene, TextLabel};
+
+fn quad_scene(opacity: f64) -> Scene {
+    let mut s = Scene::default();
+    let mut m = Material::unlit("q", [0.5, 0.5, 0.5]);
+    m.opacity = opacity;
+    let m = s.add_material(m);
+    let o = s.add_object("quad");
+    let c = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+    let c: Vec<DVec3> = c.iter().map(|p| DVec3::new(p[0], p[1], 0.0)).collect();
+    s.add_polygon(&c, m, o).unwrap();
+    s
+}
+
+fn camera() -> Camera {
+    Camera::new(DVec3::new(0.0, 0.0, 5.0), DVec3::ZERO, 200, 200)
+}
+
+fn run(scene: &Scene, arith: Arith) -> VisibleMarks {
+    let opts = OrderOptions {
+        arith,
+        ..OrderOptions::default()
+    };
+    order_with_marks(scene, &camera(), &opts).unwrap().1
+}
+
+/// A line piercing the quad at x = 0: the part behind it is hidden from x = −10/9 (where
+/// the eye ray grazes the quad's edge x = −1) to the piercing point x = 0.
+#[test]
+fn line_piercing_a_quad_is_cut_exactly_at_the_crossings() {
+    let mut s = quad_scene(1.0);
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-2.0, 0.5, -1.0),
+        DVec3::new(2.0, 0.5, 1.0),
+    ]));
+    for arith in [Arith::Exact, Arith::Float] {
+        let v = run(&s, arith);
+        assert_eq!(v.pieces.len(), 2, "{arith:?}: {v:?}");
+        let first = &v.pieces[0].world;
+        let second = &v.pieces[1].world;
+        assert_eq!(first[0], DVec3::new(-2.0, 0.5, -1.0));
+        // u = 2/9: x = −10/9, z = −5/9, each rounded once from the exact value.
+        assert_eq!(first[1], DVec3::new(-10.0 / 9.0, 0.5, -5.0 / 9.0));
+        assert_eq!(second[0], DVec3::new(0.0, 0.5, 0.0));
+        assert_eq!(second[1], DVec3::new(2.0, 0.5, 1.0));
+        assert_eq!(v.stats.segments_in, 1);
+        assert_eq!(v.stats.pieces_out, 2);
+        assert_eq!(v.stats.hidden_pieces, 1);
+    }
+}
+
+/// A wireframe drawn in the face's own plane is drawn over the face, whole.
+#[test]
+fn line_in_the_face_plane_is_drawn_over_it() {
+    let mut s = quad_scene(1.0);
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-1.0, -1.0, 0.0),
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(1.0, -1.0, 0.0),
+    ]));
+    let v = run(&s, Arith::Exact);
+    assert_eq!(v.pieces.len(), 1, "{v:?}");
+    assert_eq!(v.pieces[0].world.len(), 4);
+    assert_eq!(v.stats.hidden_pieces, 0);
+}
+
+#[test]
+fn markers_and_labels_show_iff_their_anchor_is_visible() {
+    let mut s = quad_scene(1.0);
+    for p in [
+        DVec3::new(0.0, 0.0, -1.0), // behind the quad: hidden
+        DVec3::new(0.0, 0.0, 1.0),  // in front: shown
+        DVec3::new(3.0, 0.0, -1.0), // behind the plane, beside the quad: shown
+        DVec3::new(0.5, 0.5, 0.0),  // on the quad: shown
+        // Behind the quad's corner exactly (the sight line meets the closed quad).
+        DVec3::new(2.0, 2.0, -5.0),
+    ] {
+        s.points.push(PointMark::new(p));
+        s.labels.push(TextLabel::new(p, "p"));
+    }
+    let v = run(&s, Arith::Exact);
+    let shown: Vec<u32> = v.points.iter().map(|a| a.index).collect();
+    assert_eq!(shown, vec![1, 2, 3]);
+    let shown: Vec<u32> = v.labels.iter().map(|a| a.index).collect();
+    assert_eq!(shown, vec![1, 2, 3]);
+    assert_eq!((v.stats.markers_in, v.stats.markers_shown), (5, 3));
+}
+
+/// Behind a translucent quad nothing is hidden, but the piece behind it is painted before
+/// it and the piece in front after it.
+#[test]
+fn translucent_faces_hide_nothing_and_order_the_pieces() {
+    let mut s = quad_scene(0.5);
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-2.0, 0.5, -1.0),
+        DVec3::new(2.0, 0.5, 1.0),
+    ]));
+    let v = run(&s, Arith::Exact);
+    let before: Vec<usize> = v.pieces.iter().map(|p| p.before).collect();
+    // Outside the quad's cone (end = 1 fragment), behind it (0), in front (1).
+    assert_eq!(before, vec![1, 0, 1], "{v:?}");
+    assert_eq!(
+        v.pieces[1].world[0],
+        DVec3::new(-10.0 / 9.0, 0.5, -5.0 / 9.0)
+    );
+    assert_eq!(v.pieces[2].world[0], DVec3::new(0.0, 0.5, 0.0));
+}
+
+/// Geometry nearer than the near plane is clipped, as faces are.
+#[test]
+fn lines_behind_the_eye_are_clipped() {
+    let mut s = quad_scene(1.0);
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(1.5, 0.0, 0.0),
+        DVec3::new(1.5, 0.0, 10.0),
+    ]));
+    s.points.push(PointMark::new(DVec3::new(0.0, 0.0, 6.0)));
+    let v = run(&s, Arith::Exact);
+    assert_eq!(v.pieces.len(), 1);
+    let end = v.pieces[0].world[1];
+    assert!(end.z < 5.0, "{end}");
+    assert!(v.points.is_empty());
+}
