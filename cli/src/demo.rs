@@ -18,7 +18,7 @@ use limn_scene::{shapes, Camera, Light, LightKind, Material, Scene, SceneError};
 use crate::args::DemoArgs;
 use crate::output::write_atomic;
 use crate::setup::format_of;
-use crate::stats::{write_stats, Timing};
+use crate::stats::{write_stats, Drawn, Timing};
 
 /// Builds the demo scene.
 pub fn scene() -> Result<Scene, SceneError> {
@@ -119,7 +119,18 @@ pub fn run(a: DemoArgs) -> Result<ExitCode> {
         write: (t3 - t2).as_secs_f64() * 1e3,
         total: t0.elapsed().as_secs_f64() * 1e3,
     };
-    write_stats(&a.stats, &scene, &ordered, &oo, &ps, &timing, &[])?;
+    write_stats(
+        &a.stats,
+        &scene,
+        &ordered,
+        &oo,
+        &Drawn {
+            paint: &ps,
+            marks: &Default::default(),
+        },
+        &timing,
+        &[],
+    )?;
     if !a.quiet && output.as_os_str() != "-" {
         eprintln!(
             "limn: wrote {} ({} faces, {} fragments, {} splits)",

@@ -4,8 +4,10 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use limn_depthsort::order;
-use limn_paint::{painter_for, picture, Format, Outline, Painter, Style, TikzOptions, TikzPainter};
+use limn_depthsort::order_with_marks;
+use limn_paint::{
+    painter_for, picture_with_marks, Format, Outline, Painter, Style, TikzOptions, TikzPainter,
+};
 
 use crate::args::{Background, MethodArg, RenderArgs};
 use crate::losses::losses;
@@ -13,7 +15,7 @@ use crate::output::{check_writable, write_atomic};
 use crate::progress::Progress;
 use crate::raster::raster;
 use crate::setup::{camera, explain_order, format_of, load, order_options};
-use crate::stats::{write_stats, Timing};
+use crate::stats::{write_stats, Drawn, Timing};
 
 /// Runs `limn render`.
 pub fn render(a: RenderArgs) -> Result<ExitCode> {
@@ -54,7 +56,8 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     }
     let t1 = Instant::now();
     progress.phase("ordering");
-    let ordered = order(&loaded.scene, &cam, &oo).map_err(|e| explain_order(e, &a.input))?;
+    let (ordered, marks) =
+        order_with_marks(&loaded.scene, &cam, &oo).map_err(|e| explain_order(e, &a.input))?;
     let t2 = Instant::now();
     progress.phase("writing");
     let fo = &loaded.opts;
@@ -75,7 +78,7 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
             }
         }),
     };
-    let pic = picture(&loaded.scene, &ordered, &style);
+    let pic = picture_with_marks(&loaded.scene, &ordered, &marks, &style);
     let painter: Box<dyn Painter> = match format {
         Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
             standalone: a.standalone,
@@ -108,7 +111,10 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         &loaded.scene,
         &ordered,
         &oo,
-        &ps,
+        &Drawn {
+            paint: &ps,
+            marks: &marks.stats,
+        },
         &timing,
         &warnings,
     )?;

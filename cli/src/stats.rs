@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 
 use anyhow::Result;
-use limn_depthsort::{OrderOptions, Ordered};
+use limn_depthsort::{MarkStats, OrderOptions, Ordered};
 use limn_paint::PaintStats;
 use limn_scene::{Effects, Scene};
 use serde_json::json;
@@ -22,16 +22,25 @@ pub struct Timing {
     pub total: f64,
 }
 
+/// What was drawn: the painter's counts and those of the lines, markers and labels.
+pub struct Drawn<'a> {
+    /// The painter's counts.
+    pub paint: &'a PaintStats,
+    /// Lines, markers and labels.
+    pub marks: &'a MarkStats,
+}
+
 /// Writes the statistics of a run to `path` (nothing when `None`).
 pub fn write_stats(
     path: &Option<PathBuf>,
     scene: &Scene,
     ordered: &Ordered,
     oo: &OrderOptions,
-    ps: &PaintStats,
+    drawn: &Drawn<'_>,
     t: &Timing,
     warnings: &[String],
 ) -> Result<()> {
+    let (ps, marks) = (drawn.paint, drawn.marks);
     let Some(path) = path else { return Ok(()) };
     let s = &ordered.stats;
     let effects = Effects::of(scene);
@@ -63,6 +72,19 @@ pub fn write_stats(
         "arith": oo.arith.name(),
         "effects": effect_names,
         "warnings": warnings,
+        "lines": {
+            "lines": marks.lines,
+            "segments_in": marks.segments_in,
+            "pieces_out": marks.pieces_out,
+            "hidden_pieces": marks.hidden_pieces,
+            "markers": marks.markers_in,
+            "markers_shown": marks.markers_shown,
+            "labels": marks.labels_in,
+            "labels_shown": marks.labels_shown,
+            "exact_tests": marks.exact_tests,
+            "line_paths_out": ps.lines,
+            "ms": marks.ms,
+        },
         "ms": {
             "load": t.load,
             "order": t.order,

@@ -31,12 +31,21 @@
 //! arrays hold at most 27 triangles to stay within the 500-entry operand stack of small
 //! interpreters. Long runs are filled in pieces of at most 1000 points (the LanguageLevel 2
 //! path limit is 1500).
+//!
+//! **Marks** are each painted inside `gsave … grestore`: line pieces with butt caps, round
+//! joins and `setdash`; markers as stroked or filled paths (circles with `arc`); labels
+//! with the standard font Helvetica (`findfont scalefont setfont … show`, not embedded),
+//! printable ASCII only (other characters become `?`, counted as approximated).
+//! Translucent marks are flattened like fills (and counted as approximated).
 
+use std::cell::RefCell;
 use std::io::Write;
 
+use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
-use super::runs::{check, reversals, walk, Frag};
-use super::{PaintError, PaintStats, Painter, Picture};
+use super::pdf::push_ps_string;
+use super::runs::{check, reversals, walk_with_marks, Frag};
+use super::{Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`EpsPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -274,7 +283,10 @@ impl Painter for EpsPainter {
                 )),
             }
         };
-        let counts = walk(picture, &checked.guard, key, |run, &style| {
+        let state = RefCell::new((sink, w, stats));
+        let on_run = |run: &[Frag<'_>], &style: &Style| {
+            let mut st = state.borrow_mut();
+            let (sink, w, stats) = &mut *st;
             let b = &mut sink.buf;
             match style {
                 Style::Flat(Some(q)) => w.flat_run(b, run, q),
@@ -296,11 +308,149 @@ impl Painter for EpsPainter {
             }
             sink.maybe_flush()?;
             Ok(())
-        })?;
+        };
+        let on_mark = |m: &super::Mark| {
+            let mut st = state.borrow_mut();
+            let (sink, w, stats) = &mut *st;
+            let mut marks = EpsMarks {
+                w,
+                b: &mut sink.buf,
+                approximated: 0,
+            };
+            paint_mark(m, &checked.guard, &mut marks, stats)?;
+            stats.approximated += marks.approximated;
+            sink.maybe_flush()?;
+            Ok(())
+        };
+        let counts = walk_with_marks(picture, &checked.guard, key, on_run, on_mark)?;
+        let (mut sink, _, mut stats) = state.into_inner();
         sink.buf.extend_from_slice(b"end\nshowpage\n%%EOF\n");
         stats.skipped = counts.skipped;
         stats.clipped = counts.clipped;
         stats.bytes = sink.finish()?;
         Ok(stats)
+    }
+}
+
+/// Marks as PostScript.
+struct EpsMarks<'a> {
+    w: &'a Writer,
+    b: &'a mut Vec<u8>,
+    approximated: usize,
+}
+
+impl EpsMarks<'_> {
+    /// `gsave` and the mark's colour, flattened onto the backdrop when translucent.
+    fn begin(&mut self, color: [f64; 4]) {
+        let a = alpha_milli(color[3]);
+        if a < 1000 {
+            self.approximated += 1;
+        }
+        let c = flatten([color[0], color[1], color[2]], color[3], self.w.backdrop);
+        self.b.extend_from_slice(b"gsave ");
+        for v in self.w.quantise(c) {
+            push_fixed(self.b, v, self.w.cd);
+            self.b.push(b' ');
+        }
+        self.b.extend_from_slice(b"c ");
+    }
+
+    fn width(&mut self, w: f64) {
+        push_num(self.b, w, self.w.d);
+        self.b.extend_from_slice(b" setlinewidth ");
+    }
+}
+
+impl MarkSink for EpsMarks<'_> {
+    fn polylines(
+        &mut self,
+        lines: &[Vec<[f64; 2]>],
+        closed: bool,
+        color: [f64; 4],
+        width: f64,
+        dash: &[f64],
+        offset: f64,
+    ) -> Result<(), PaintError> {
+        self.begin(color);
+        self.width(width);
+        self.b.extend_from_slice(b"0 setlinecap 1 setlinejoin ");
+        if !dash.is_empty() {
+            self.b.push(b'[');
+            for (i, &v) in dash.iter().enumerate() {
+                if i > 0 {
+                    self.b.push(b' ');
+                }
+                push_num(self.b, v, self.w.d);
+            }
+            self.b.extend_from_slice(b"] ");
+            push_num(self.b, offset, self.w.d);
+            self.b.extend_from_slice(b" setdash ");
+        }
+        self.b.push(b'\n');
+        for line in lines {
+            for (k, &p) in line.iter().enumerate() {
+                self.w.point(self.b, p);
+                self.b
+                    .extend_from_slice(if k == 0 { b" m " } else { b" l " });
+            }
+            if closed {
+                self.b.extend_from_slice(b"h ");
+            }
+        }
+        self.b.extend_from_slice(b"s grestore\n");
+        Ok(())
+    }
+
+    fn circle(
+        &mut self,
+        c: [f64; 2],
+        r: f64,
+        color: [f64; 4],
+        stroke: Option<f64>,
+    ) -> Result<(), PaintError> {
+        self.begin(color);
+        if let Some(w) = stroke {
+            self.width(w);
+        }
+        let (start, quarters) = circle_beziers(c, r);
+        self.w.point(self.b, start);
+        self.b.extend_from_slice(b" m");
+        for q in quarters {
+            for p in q {
+                self.b.push(b' ');
+                self.w.point(self.b, p);
+            }
+            self.b.extend_from_slice(b" curveto");
+        }
+        self.b.extend_from_slice(if stroke.is_some() {
+            b" h s grestore\n"
+        } else {
+            b" h f grestore\n"
+        });
+        Ok(())
+    }
+
+    fn triangle(&mut self, points: [[f64; 2]; 3], color: [f64; 4]) -> Result<(), PaintError> {
+        self.begin(color);
+        for (k, p) in points.into_iter().enumerate() {
+            self.w.point(self.b, p);
+            self.b
+                .extend_from_slice(if k == 0 { b" m " } else { b" l " });
+        }
+        self.b.extend_from_slice(b"h f grestore\n");
+        Ok(())
+    }
+
+    fn text(&mut self, origin: [f64; 2], label: &Label) -> Result<bool, PaintError> {
+        let (text, changed) = ascii_text(&label.text);
+        self.begin(label.color);
+        self.b.extend_from_slice(b"/Helvetica findfont ");
+        push_num(self.b, label.size, self.w.d);
+        self.b.extend_from_slice(b" scalefont setfont ");
+        self.w.point(self.b, origin);
+        self.b.extend_from_slice(b" moveto (");
+        push_ps_string(self.b, &text);
+        self.b.extend_from_slice(b") show grestore\n");
+        Ok(changed)
     }
 }

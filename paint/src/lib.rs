@@ -76,11 +76,13 @@
 //! # Ok::<(), limn_paint::PaintError>(())
 //! ```
 
+mod annotate;
 mod compose;
 mod covers;
 mod eps;
 mod error;
 mod format;
+mod marks;
 mod model;
 mod number;
 mod painter;
@@ -91,6 +93,7 @@ mod seams;
 mod svg;
 mod tikz;
 
+pub use annotate::{head_length, marker_stroke, picture_with_marks};
 pub use compose::{picture, Style};
 pub use covers::covers;
 pub use eps::{EpsOptions, EpsPainter};
@@ -103,6 +106,6 @@ pub use model::{
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};
 pub use png::{PngOptions, PngPainter};
-pub use seams::seam_flaps;
+pub use seams::{seam_flaps, seam_flaps_indexed};
 pub use svg::{SvgOptions, SvgPainter};
 pub use tikz::{TikzOptions, TikzPainter, MAX_TIKZ_SIDE, MAX_TIKZ_STROKE};

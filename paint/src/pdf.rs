@@ -16,15 +16,22 @@
 //!   box rounded outwards to whole points, colours 16-bit per channel.
 //! - Outlines: `w`, round caps and joins and the stroke colour are set once; each run's
 //!   original edges are one path stroked with `S` right after the run's fill.
+//! - Marks: each inside `q … Q`, so they leave the fragments' state alone. Line pieces are
+//!   stroked with butt caps (`0 J`), round joins and their dash (`[…] phase d`); markers
+//!   are stroked or filled paths (circles as four Bézier curves); labels are `BT … Tj ET`
+//!   in the base-14 font Helvetica (`/F1`, WinAnsiEncoding, not embedded), printable
+//!   ASCII only (any other character is written as `?` and counted as approximated).
 
+use std::cell::RefCell;
 use std::collections::BTreeSet;
 use std::io::Write;
 
 use pdf_writer::{Name, Pdf, Rect, Ref};
 
+use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
-use super::runs::{check, reversals, walk, Frag};
-use super::{PaintError, PaintStats, Painter, Picture};
+use super::runs::{check, reversals, walk_with_marks, Frag};
+use super::{Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PdfPainter`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -88,6 +95,8 @@ struct Content {
     /// Current stroke colour and line width, and the outline's, to restore.
     stroke: Option<([u32; 3], u64)>,
     outline_stroke: Option<([u32; 3], u64)>,
+    /// Whether a label uses the font `/F1`.
+    font: bool,
 }
 
 impl Content {
@@ -249,8 +258,9 @@ impl Painter for PdfPainter {
             },
             stroke: None,
             outline_stroke: None,
+            font: false,
         };
-        let mut stats = PaintStats::default();
+        let stats = PaintStats::default();
         if c.seams > 0.0 && checked.outline.is_none() {
             c.buf.extend_from_slice(b"1 j\n");
         }
@@ -290,7 +300,10 @@ impl Painter for PdfPainter {
                 None => Style::Flat(f.flat_rgb().map(|v| channel_fixed(v, cd)), a),
             }
         };
-        let counts = walk(picture, &checked.guard, key, |run, style| {
+        let c = RefCell::new(c);
+        let stats = RefCell::new(stats);
+        let on_run = |run: &[Frag<'_>], style: &Style| {
+            let mut c = c.borrow_mut();
             match *style {
                 Style::Flat(rgb, a) => {
                     c.fill_alpha(a);
@@ -301,13 +314,21 @@ impl Painter for PdfPainter {
                     c.gouraud_run(run);
                 }
             }
+            let mut stats = stats.borrow_mut();
             stats.paths += 1;
             if checked.outline.is_some() && run.iter().any(Frag::has_outline) {
                 c.outline(run);
                 stats.strokes += 1;
             }
             Ok(())
-        })?;
+        };
+        let on_mark = |m: &super::Mark| {
+            let mut c = c.borrow_mut();
+            paint_mark(m, &checked.guard, &mut *c, &mut stats.borrow_mut())
+        };
+        let counts = walk_with_marks(picture, &checked.guard, key, on_run, on_mark)?;
+        let c = c.into_inner();
+        let mut stats = stats.into_inner();
         stats.skipped = counts.skipped;
         stats.clipped = counts.clipped;
 
@@ -351,6 +372,7 @@ impl Content {
         let shadings: Vec<(Vec<u8>, Ref)> = (0..self.meshes.len())
             .map(|i| (format!("Sh{i}").into_bytes(), alloc()))
             .collect();
+        let font = self.font.then(&mut alloc);
 
         pdf.catalog(catalog).pages(pages);
         pdf.pages(pages).kids([page]).count(1);
@@ -372,6 +394,14 @@ impl Content {
                     dict.pair(Name(name), *r);
                 }
             }
+            if let Some(f) = font {
+                res.fonts().pair(Name(b"F1"), f);
+            }
+        }
+        if let Some(f) = font {
+            pdf.type1_font(f)
+                .base_font(Name(b"Helvetica"))
+                .encoding_predefined(Name(b"WinAnsiEncoding"));
         }
         pdf.stream(content, &self.buf);
         // The copy is in the document now; give the memory back before the rest is written.
@@ -398,5 +428,132 @@ impl Content {
             s.decode([x0, x1, y0, y1, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0]);
         }
         pdf.finish()
+    }
+}
+
+impl Content {
+    /// `q`, the colour and opacity of a mark (fill or stroke).
+    fn mark_begin(&mut self, color: [f64; 4], stroke: bool) {
+        self.buf.extend_from_slice(b"q ");
+        let rgb = self.quantise([color[0], color[1], color[2]]);
+        self.color(rgb, if stroke { b"RG\n" } else { b"rg\n" });
+        let milli = alpha_milli(color[3]);
+        if milli < 1000 {
+            self.buf
+                .extend_from_slice(if stroke { b"/s" } else { b"/a" });
+            push_uint(&mut self.buf, milli.into());
+            self.buf.extend_from_slice(b" gs\n");
+            if stroke {
+                self.stroke_alphas.insert(milli);
+            } else {
+                self.fill_alphas.insert(milli);
+            }
+        }
+    }
+}
+
+impl MarkSink for Content {
+    fn polylines(
+        &mut self,
+        lines: &[Vec<[f64; 2]>],
+        closed: bool,
+        color: [f64; 4],
+        width: f64,
+        dash: &[f64],
+        offset: f64,
+    ) -> Result<(), PaintError> {
+        self.mark_begin(color, true);
+        push_num(&mut self.buf, width, self.d);
+        self.buf.extend_from_slice(b" w 0 J 1 j");
+        if !dash.is_empty() {
+            self.buf.extend_from_slice(b" [");
+            for (i, &v) in dash.iter().enumerate() {
+                if i > 0 {
+                    self.buf.push(b' ');
+                }
+                push_num(&mut self.buf, v, self.d);
+            }
+            self.buf.extend_from_slice(b"] ");
+            push_num(&mut self.buf, offset, self.d);
+            self.buf.extend_from_slice(b" d");
+        }
+        self.buf.push(b'\n');
+        for line in lines {
+            for (k, &p) in line.iter().enumerate() {
+                self.point(p);
+                self.buf
+                    .extend_from_slice(if k == 0 { b" m " } else { b" l " });
+            }
+            if closed {
+                self.buf.extend_from_slice(b"h ");
+            }
+        }
+        self.buf.extend_from_slice(b"S Q\n");
+        Ok(())
+    }
+
+    fn circle(
+        &mut self,
+        c: [f64; 2],
+        r: f64,
+        color: [f64; 4],
+        stroke: Option<f64>,
+    ) -> Result<(), PaintError> {
+        self.mark_begin(color, stroke.is_some());
+        if let Some(w) = stroke {
+            push_num(&mut self.buf, w, self.d);
+            self.buf.extend_from_slice(b" w ");
+        }
+        let (start, quarters) = circle_beziers(c, r);
+        self.point(start);
+        self.buf.extend_from_slice(b" m");
+        for q in quarters {
+            for p in q {
+                self.buf.push(b' ');
+                self.point(p);
+            }
+            self.buf.extend_from_slice(b" c");
+        }
+        self.buf.extend_from_slice(if stroke.is_some() {
+            b" h S Q\n"
+        } else {
+            b" h f Q\n"
+        });
+        Ok(())
+    }
+
+    fn triangle(&mut self, points: [[f64; 2]; 3], color: [f64; 4]) -> Result<(), PaintError> {
+        self.mark_begin(color, false);
+        for (k, p) in points.into_iter().enumerate() {
+            self.point(p);
+            self.buf
+                .extend_from_slice(if k == 0 { b" m " } else { b" l " });
+        }
+        self.buf.extend_from_slice(b"h f Q\n");
+        Ok(())
+    }
+
+    fn text(&mut self, origin: [f64; 2], label: &Label) -> Result<bool, PaintError> {
+        self.font = true;
+        let (text, changed) = ascii_text(&label.text);
+        self.mark_begin(label.color, false);
+        self.buf.extend_from_slice(b"BT /F1 ");
+        push_num(&mut self.buf, label.size, self.d);
+        self.buf.extend_from_slice(b" Tf ");
+        self.point(origin);
+        self.buf.extend_from_slice(b" Td (");
+        push_ps_string(&mut self.buf, &text);
+        self.buf.extend_from_slice(b") Tj ET Q\n");
+        Ok(changed)
+    }
+}
+
+/// The bytes of a PDF or PostScript string literal's content: `(`, `)` and `\\` escaped.
+pub(crate) fn push_ps_string(b: &mut Vec<u8>, text: &str) {
+    for c in text.bytes() {
+        if matches!(c, b'(' | b')' | b'\\') {
+            b.push(b'\\');
+        }
+        b.push(c);
     }
 }

@@ -17,15 +17,17 @@
 //! on the rim, whose centre lies in no triangle, take the colour of the nearest triangle's
 //! barycentric coordinates clamped to it. Opacity is applied on top, source-over.
 
+use std::cell::RefCell;
 use std::io::Write;
 
 use tiny_skia::{
     Color, FillRule, LineCap, LineJoin, Mask, Paint, Path, PathBuilder, Pixmap, Stroke, Transform,
 };
 
+use super::marks::{circle_beziers, glyph_rects, paint_mark, scaled, MarkSink};
 use super::number::{channel_u8, rgb_u8};
-use super::runs::{check, reversals, walk, Frag};
-use super::{PaintError, PaintStats, Painter, Picture};
+use super::runs::{check, reversals, walk_with_marks, Frag};
+use super::{Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PngPainter`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -90,6 +92,7 @@ impl PngPainter {
         if let Some(o) = &mut big.outline {
             o.width *= scale;
         }
+        big.marks = picture.marks.iter().map(|m| scaled(m, scale)).collect();
         let inner = PngPainter::new(PngOptions {
             anti_alias: false,
             max_pixels: u64::MAX,
@@ -140,9 +143,12 @@ impl PngPainter {
             (paint, stroke)
         });
 
-        let mut stats = PaintStats::default();
+        let stats = RefCell::new(PaintStats::default());
+        let pixmap = RefCell::new(pixmap);
         let mut builder = Some(PathBuilder::new());
-        let counts = walk(picture, &checked.guard, style_key, |run, style| {
+        let on_run = |run: &[Frag<'_>], style: &Style| {
+            let mut pixmap = pixmap.borrow_mut();
+            let mut stats = stats.borrow_mut();
             let mut pb = builder.take().unwrap_or_default();
             for (f, reverse) in run.iter().zip(reversals(run)) {
                 for (k, p) in f.oriented(reverse).enumerate() {
@@ -201,10 +207,20 @@ impl PngPainter {
                 }
             }
             Ok(())
-        })?;
+        };
+        let on_mark = |m: &super::Mark| {
+            let mut pixmap = pixmap.borrow_mut();
+            let mut sink = PngMarks {
+                pixmap: &mut pixmap,
+                aa,
+            };
+            paint_mark(m, &checked.guard, &mut sink, &mut stats.borrow_mut())
+        };
+        let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
+        let mut stats = stats.into_inner();
         stats.skipped = counts.skipped;
         stats.clipped = counts.clipped;
-        Ok((pixmap, stats))
+        Ok((pixmap.into_inner(), stats))
     }
 }
 
@@ -382,5 +398,152 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
             }
             px[3] = out_a8;
         }
+    }
+}
+
+/// Marks rasterised with tiny-skia.
+struct PngMarks<'a> {
+    pixmap: &'a mut Pixmap,
+    aa: bool,
+}
+
+impl PngMarks<'_> {
+    fn paint(&self, color: [f64; 4]) -> Paint<'static> {
+        let [r, g, b] = rgb_u8([color[0], color[1], color[2]]);
+        let mut paint = Paint::default();
+        paint.set_color_rgba8(r, g, b, channel_u8(color[3]));
+        paint.anti_alias = self.aa;
+        paint
+    }
+}
+
+impl MarkSink for PngMarks<'_> {
+    fn polylines(
+        &mut self,
+        lines: &[Vec<[f64; 2]>],
+        closed: bool,
+        color: [f64; 4],
+        width: f64,
+        dash: &[f64],
+        offset: f64,
+    ) -> Result<(), PaintError> {
+        let mut pb = PathBuilder::new();
+        for line in lines {
+            for (k, p) in line.iter().enumerate() {
+                if k == 0 {
+                    pb.move_to(p[0] as f32, p[1] as f32);
+                } else {
+                    pb.line_to(p[0] as f32, p[1] as f32);
+                }
+            }
+            if closed {
+                pb.close();
+            }
+        }
+        let Some(path) = pb.finish() else {
+            return Ok(());
+        };
+        let stroke = Stroke {
+            width: width as f32,
+            line_cap: LineCap::Butt,
+            line_join: LineJoin::Round,
+            dash: (!dash.is_empty())
+                .then(|| {
+                    tiny_skia::StrokeDash::new(
+                        dash.iter().map(|&d| d as f32).collect(),
+                        offset as f32,
+                    )
+                })
+                .flatten(),
+            ..Stroke::default()
+        };
+        let paint = self.paint(color);
+        self.pixmap
+            .stroke_path(&path, &paint, &stroke, Transform::identity(), None);
+        Ok(())
+    }
+
+    fn circle(
+        &mut self,
+        c: [f64; 2],
+        r: f64,
+        color: [f64; 4],
+        stroke: Option<f64>,
+    ) -> Result<(), PaintError> {
+        let mut pb = PathBuilder::new();
+        let (start, quarters) = circle_beziers(c, r);
+        pb.move_to(start[0] as f32, start[1] as f32);
+        for [a, b, e] in quarters {
+            pb.cubic_to(
+                a[0] as f32,
+                a[1] as f32,
+                b[0] as f32,
+                b[1] as f32,
+                e[0] as f32,
+                e[1] as f32,
+            );
+        }
+        pb.close();
+        let Some(path) = pb.finish() else {
+            return Ok(());
+        };
+        let paint = self.paint(color);
+        match stroke {
+            None => self.pixmap.fill_path(
+                &path,
+                &paint,
+                FillRule::Winding,
+                Transform::identity(),
+                None,
+            ),
+            Some(w) => {
+                let s = Stroke {
+                    width: w as f32,
+                    ..Stroke::default()
+                };
+                self.pixmap
+                    .stroke_path(&path, &paint, &s, Transform::identity(), None)
+            }
+        }
+        Ok(())
+    }
+
+    fn triangle(&mut self, points: [[f64; 2]; 3], color: [f64; 4]) -> Result<(), PaintError> {
+        let mut pb = PathBuilder::new();
+        pb.move_to(points[0][0] as f32, points[0][1] as f32);
+        pb.line_to(points[1][0] as f32, points[1][1] as f32);
+        pb.line_to(points[2][0] as f32, points[2][1] as f32);
+        pb.close();
+        if let Some(path) = pb.finish() {
+            let paint = self.paint(color);
+            self.pixmap.fill_path(
+                &path,
+                &paint,
+                FillRule::Winding,
+                Transform::identity(),
+                None,
+            );
+        }
+        Ok(())
+    }
+
+    fn text(&mut self, origin: [f64; 2], label: &Label) -> Result<bool, PaintError> {
+        let mut pb = PathBuilder::new();
+        for [x, y, w, h] in glyph_rects(origin, label) {
+            if let Some(r) = tiny_skia::Rect::from_xywh(x as f32, y as f32, w as f32, h as f32) {
+                pb.push_rect(r);
+            }
+        }
+        if let Some(path) = pb.finish() {
+            let paint = self.paint(label.color);
+            self.pixmap.fill_path(
+                &path,
+                &paint,
+                FillRule::Winding,
+                Transform::identity(),
+                None,
+            );
+        }
+        Ok(false)
     }
 }

@@ -3,7 +3,7 @@
 
 use std::borrow::Cow;
 
-use super::{Outline, PaintError, PaintFragment, Picture};
+use super::{Mark, Outline, PaintError, PaintFragment, Picture};
 
 /// A valid fragment, clipped to the guard box.
 pub(crate) struct Frag<'a> {
@@ -195,7 +195,13 @@ struct V {
 }
 
 impl Guard {
-    fn contains(&self, p: [f64; 2]) -> bool {
+    /// The box as (min, max) corners.
+    pub(crate) fn bounds(&self) -> ([f64; 2], [f64; 2]) {
+        (self.min, self.max)
+    }
+
+    /// Whether `p` lies in the box.
+    pub(crate) fn contains(&self, p: [f64; 2]) -> bool {
         p[0] >= self.min[0] && p[0] <= self.max[0] && p[1] >= self.min[1] && p[1] <= self.max[1]
     }
 
@@ -303,17 +309,41 @@ pub(crate) struct Counts {
 }
 
 /// Validates and clips the fragments in order and hands each run — consecutive fragments
-/// with the same object, face and `key` — to `run`, with the run's key.
+/// with the same object, face and `key` — to `run`, with the run's key. Marks are not
+/// visited: for writers of fragments only.
+#[cfg_attr(not(test), allow(dead_code))]
 pub(crate) fn walk<'a, K: PartialEq>(
+    picture: &'a Picture,
+    guard: &Guard,
+    key: impl FnMut(&Frag<'a>) -> K,
+    run: impl FnMut(&[Frag<'a>], &K) -> Result<(), PaintError>,
+) -> Result<Counts, PaintError> {
+    walk_with_marks(picture, guard, key, run, |_| Ok(()))
+}
+
+/// [`walk`], and hands every mark of [`Picture::marks`] to `mark` at its paint position
+/// (see [`Picture`]): a run never spans a mark.
+pub(crate) fn walk_with_marks<'a, K: PartialEq>(
     picture: &'a Picture,
     guard: &Guard,
     mut key: impl FnMut(&Frag<'a>) -> K,
     mut run: impl FnMut(&[Frag<'a>], &K) -> Result<(), PaintError>,
+    mut mark: impl FnMut(&'a Mark) -> Result<(), PaintError>,
 ) -> Result<Counts, PaintError> {
     let mut counts = Counts::default();
     let mut pending: Vec<Frag<'a>> = Vec::new();
     let mut current: Option<(u32, u32, K)> = None;
-    for f in &picture.fragments {
+    let mut marks = picture.marks.iter().peekable();
+    for (i, f) in picture.fragments.iter().enumerate() {
+        if marks.peek().is_some_and(|m| m.before <= i) {
+            if let Some((_, _, ck)) = current.take() {
+                run(&pending, &ck)?;
+                pending.clear();
+            }
+            while let Some(m) = marks.next_if(|m| m.before <= i) {
+                mark(m)?;
+            }
+        }
         if !is_valid(f) {
             counts.skipped += 1;
             continue;
@@ -346,6 +376,9 @@ pub(crate) fn walk<'a, K: PartialEq>(
     }
     if let Some((_, _, ck)) = &current {
         run(&pending, ck)?;
+    }
+    for m in marks {
+        mark(m)?;
     }
     Ok(counts)
 }

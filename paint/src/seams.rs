@@ -27,6 +27,15 @@ fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
 /// anti-aliased pixels under the shared edge): silhouettes, edges against faces painted
 /// earlier and translucent faces get no flap.
 pub fn seam_flaps(fragments: Vec<PaintFragment>, width: f64) -> Vec<PaintFragment> {
+    seam_flaps_indexed(fragments, width).0
+}
+
+/// [`seam_flaps`], also returning where each input fragment went in the output (so that
+/// marks placed among the fragments can follow them).
+pub fn seam_flaps_indexed(
+    fragments: Vec<PaintFragment>,
+    width: f64,
+) -> (Vec<PaintFragment>, Vec<usize>) {
     let opaque = |f: &PaintFragment| f.fill[3] >= 1.0;
     let mut later: HashMap<EdgeKey, Vec<usize>> = HashMap::new();
     for (j, f) in fragments.iter().enumerate() {
@@ -68,11 +77,13 @@ pub fn seam_flaps(fragments: Vec<PaintFragment>, width: f64) -> Vec<PaintFragmen
         }
     }
     let mut out = Vec::with_capacity(fragments.len() + flaps.iter().map(Vec::len).sum::<usize>());
+    let mut at = Vec::with_capacity(fragments.len());
     for (f, fl) in fragments.into_iter().zip(flaps) {
+        at.push(out.len());
         out.push(f);
         out.extend(fl);
     }
-    out
+    (out, at)
 }
 
 /// The part of `poly` within `width` of the line through `a` and `b` (on `poly`'s side),

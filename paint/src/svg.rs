@@ -8,6 +8,9 @@
 //! <g data-name="object name">                            (one per run of the same object)
 //! <path d="M… L… Z M… Z" fill="#rrggbb"[ fill-opacity="a"]/>
 //! <path d="M… L…" fill="none" stroke="#rrggbb"/>          (outline of the path above)
+//! <path d="M… L…" fill="none" stroke="#rrggbb" stroke-width="w" stroke-linecap="butt" …/>
+//!                                                        (a line piece; markers are
+//!                                                        <circle> or <path>, labels <text>)
 //! </g>
 //! </svg>
 //! ```
@@ -21,13 +24,15 @@
 //! The `svg` crate could build the same document, but it stores numbers as `f32` and
 //! allocates per attribute; the benchmark `paint` compares both (see BENCHMARKS.md).
 
+use std::cell::{Cell, RefCell};
 use std::io::Write;
 
+use super::marks::{paint_mark, MarkSink};
 use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
-use super::runs::{check, reversals, walk, Frag};
-use super::{PaintError, PaintStats, Painter, Picture};
+use super::runs::{check, reversals, walk_with_marks, Frag};
+use super::{Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`SvgPainter`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -67,7 +72,7 @@ impl Painter for SvgPainter {
         let checked = check(picture)?;
         let d = self.options.decimals;
         let mut sink = Sink::new(out);
-        let mut stats = PaintStats::default();
+        let stats = PaintStats::default();
         let b = &mut sink.buf;
 
         b.extend_from_slice(b"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"");
@@ -110,17 +115,23 @@ impl Painter for SvgPainter {
             b.extend_from_slice(b"/>\n");
         }
 
-        let mut group: Option<u32> = None;
-        let counts = walk(picture, &checked.guard, style_key, |run, &(rgb, alpha)| {
-            let b = &mut sink.buf;
-            let object = run[0].src.object;
-            if group != Some(object) {
-                if group.is_some() {
+        let group: Cell<Option<u32>> = Cell::new(None);
+        let sink = RefCell::new(sink);
+        let stats = RefCell::new(stats);
+        let enter = |b: &mut Vec<u8>, object: u32| {
+            if group.get() != Some(object) {
+                if group.get().is_some() {
                     b.extend_from_slice(b"</g>\n");
                 }
                 open_group(b, picture.objects.get(object as usize));
-                group = Some(object);
+                group.set(Some(object));
             }
+        };
+        let on_run = |run: &[Frag<'_>], &(rgb, alpha): &([u8; 3], u16)| {
+            let mut sink = sink.borrow_mut();
+            let mut stats = stats.borrow_mut();
+            let b = &mut sink.buf;
+            enter(b, run[0].src.object);
             b.extend_from_slice(b"<path d=\"");
             for (f, reverse) in run.iter().zip(reversals(run)) {
                 for (k, p) in f.oriented(reverse).enumerate() {
@@ -167,8 +178,22 @@ impl Painter for SvgPainter {
             }
             sink.maybe_flush()?;
             Ok(())
-        })?;
-        if group.is_some() {
+        };
+        let on_mark = |m: &super::Mark| {
+            let mut sink = sink.borrow_mut();
+            enter(&mut sink.buf, m.object);
+            let mut w = SvgMarks {
+                b: &mut sink.buf,
+                d,
+            };
+            paint_mark(m, &checked.guard, &mut w, &mut stats.borrow_mut())?;
+            sink.maybe_flush()?;
+            Ok(())
+        };
+        let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
+        let mut sink = sink.into_inner();
+        let mut stats = stats.into_inner();
+        if group.get().is_some() {
             sink.buf.extend_from_slice(b"</g>\n");
         }
         sink.buf.extend_from_slice(b"</svg>\n");
@@ -224,4 +249,139 @@ fn push_outline(b: &mut Vec<u8>, f: &Frag<'_>, d: u8) {
             b.push(b'Z');
         }
     });
+}
+
+/// Marks as SVG elements.
+struct SvgMarks<'b> {
+    b: &'b mut Vec<u8>,
+    d: u8,
+}
+
+impl SvgMarks<'_> {
+    fn paint_attrs(&mut self, name: &[u8], color: [f64; 4]) {
+        self.b.push(b' ');
+        self.b.extend_from_slice(name);
+        self.b.extend_from_slice(b"=\"");
+        push_hex_color(self.b, rgb_u8([color[0], color[1], color[2]]));
+        self.b.push(b'"');
+        let opacity: &[u8] = if name == b"fill" {
+            b"fill-opacity"
+        } else {
+            b"stroke-opacity"
+        };
+        opacity_attr(self.b, opacity, alpha_milli(color[3]));
+    }
+
+    fn stroke_attrs(&mut self, color: [f64; 4], width: f64) {
+        self.b.extend_from_slice(b" fill=\"none\"");
+        self.paint_attrs(b"stroke", color);
+        self.b.extend_from_slice(b" stroke-width=\"");
+        push_num(self.b, width, self.d);
+        self.b.push(b'"');
+    }
+}
+
+impl MarkSink for SvgMarks<'_> {
+    fn polylines(
+        &mut self,
+        lines: &[Vec<[f64; 2]>],
+        closed: bool,
+        color: [f64; 4],
+        width: f64,
+        dash: &[f64],
+        offset: f64,
+    ) -> Result<(), PaintError> {
+        self.b.extend_from_slice(b"<path d=\"");
+        for line in lines {
+            for (k, &p) in line.iter().enumerate() {
+                self.b.push(match k {
+                    0 => b'M',
+                    1 => b'L',
+                    _ => b' ',
+                });
+                push_point(self.b, p, self.d);
+            }
+            if closed {
+                self.b.push(b'Z');
+            }
+        }
+        self.b.push(b'"');
+        self.stroke_attrs(color, width);
+        self.b
+            .extend_from_slice(b" stroke-linecap=\"butt\" stroke-linejoin=\"round\"");
+        if !dash.is_empty() {
+            self.b.extend_from_slice(b" stroke-dasharray=\"");
+            for (i, &v) in dash.iter().enumerate() {
+                if i > 0 {
+                    self.b.push(b' ');
+                }
+                push_num(self.b, v, self.d);
+            }
+            self.b.push(b'"');
+            if offset != 0.0 {
+                self.b.extend_from_slice(b" stroke-dashoffset=\"");
+                push_num(self.b, offset, self.d);
+                self.b.push(b'"');
+            }
+        }
+        self.b.extend_from_slice(b"/>\n");
+        Ok(())
+    }
+
+    fn circle(
+        &mut self,
+        c: [f64; 2],
+        r: f64,
+        color: [f64; 4],
+        stroke: Option<f64>,
+    ) -> Result<(), PaintError> {
+        self.b.extend_from_slice(b"<circle cx=\"");
+        push_num(self.b, c[0], self.d);
+        self.b.extend_from_slice(b"\" cy=\"");
+        push_num(self.b, c[1], self.d);
+        self.b.extend_from_slice(b"\" r=\"");
+        push_num(self.b, r, self.d);
+        self.b.push(b'"');
+        match stroke {
+            None => self.paint_attrs(b"fill", color),
+            Some(w) => self.stroke_attrs(color, w),
+        }
+        self.b.extend_from_slice(b"/>\n");
+        Ok(())
+    }
+
+    fn triangle(&mut self, points: [[f64; 2]; 3], color: [f64; 4]) -> Result<(), PaintError> {
+        self.b.extend_from_slice(b"<path d=\"");
+        for (k, p) in points.into_iter().enumerate() {
+            self.b.push(if k == 0 {
+                b'M'
+            } else if k == 1 {
+                b'L'
+            } else {
+                b' '
+            });
+            push_point(self.b, p, self.d);
+        }
+        self.b.extend_from_slice(b"Z\"");
+        self.paint_attrs(b"fill", color);
+        self.b.extend_from_slice(b" stroke=\"none\"/>\n");
+        Ok(())
+    }
+
+    fn text(&mut self, origin: [f64; 2], label: &Label) -> Result<bool, PaintError> {
+        self.b.extend_from_slice(b"<text x=\"");
+        push_num(self.b, origin[0], self.d);
+        self.b.extend_from_slice(b"\" y=\"");
+        push_num(self.b, origin[1], self.d);
+        self.b
+            .extend_from_slice(b"\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"");
+        push_num(self.b, label.size, self.d);
+        self.b.push(b'"');
+        self.paint_attrs(b"fill", label.color);
+        self.b
+            .extend_from_slice(b" stroke=\"none\" xml:space=\"preserve\">");
+        push_xml_attr(self.b, &label.text);
+        self.b.extend_from_slice(b"</text>\n");
+        Ok(false)
+    }
 }
