@@ -1,0 +1,212 @@
+//! Lines and markers hidden exactly, refereed by exact ray casting at sample points: a
+//! sample is visible iff the segment from the eye to it meets no face (orient3d signs on
+//! the f64 sample, exact), and it must lie in a visible piece exactly when it is. Samples
+//! within 1e-7 (relative) of a piece's end are skipped: the ends are rounded once.
+//! Scenes: a line behind and through the cyclic strips, a helix around a sphere, points
+//! around a sphere; each also rotated, translated and with its faces permuted.
+
+use glam::{DQuat, DVec3};
+use limn_depthsort::{order_with_marks, OrderOptions, VisibleMarks};
+use limn_scene::shapes::uv_sphere;
+use limn_scene::{Camera, Material, PointMark, Polyline, Scene};
+use limn_tests::corpus::cyclic_quads;
+
+/// Sign of orient3d (robust, exact on f64 input).
+fn orient(a: DVec3, b: DVec3, c: DVec3, d: DVec3) -> i32 {
+    let p = |v: DVec3| robust::Coord3D {
+        x: v.x,
+        y: v.y,
+        z: v.z,
+    };
+    let o = robust::orient3d(p(a), p(b), p(c), p(d));
+    (o > 0.0) as i32 - (o < 0.0) as i32
+}
+
+/// Whether the segment from `e` to `p` meets the closed triangle `t` with `p` strictly
+/// on the other side of its plane than `e`.
+fn hides(e: DVec3, p: DVec3, t: [DVec3; 3]) -> bool {
+    let se = orient(t[0], t[1], t[2], e);
+    let sp = orient(t[0], t[1], t[2], p);
+    if se == 0 || sp == 0 || se == sp {
+        return false;
+    }
+    let s = [
+        orient(e, p, t[0], t[1]),
+        orient(e, p, t[1], t[2]),
+        orient(e, p, t[2], t[0]),
+    ];
+    s.iter().all(|&x| x >= 0) || s.iter().all(|&x| x <= 0)
+}
+
+/// The referee: `p` is visible iff no (fan-triangulated, convex) face hides it.
+fn visible(scene: &Scene, eye: DVec3, p: DVec3) -> bool {
+    (0..scene.faces.len() as u32).all(|f| {
+        let c = scene.face_points(f);
+        (1..c.len() - 1).all(|i| !hides(eye, p, [c[0], c[i], c[i + 1]]))
+    })
+}
+
+/// Whether `p` (on segment `a b`) lies inside a visible piece, or `None` when it is too
+/// close to a piece's end to tell.
+fn in_piece(marks: &VisibleMarks, line: u32, a: DVec3, b: DVec3, t: f64) -> Option<bool> {
+    let d = b - a;
+    let len2 = d.length_squared();
+    let tol = 1e-7;
+    for piece in marks.pieces.iter().filter(|p| p.line == line) {
+        for w in piece.world.windows(2) {
+            let (t0, t1) = ((w[0] - a).dot(d) / len2, (w[1] - a).dot(d) / len2);
+            let off = |q: DVec3, tq: f64| (q - (a + d * tq)).length() / d.length();
+            if off(w[0], t0) > 1e-9 || off(w[1], t1) > 1e-9 || t1 < t0 {
+                continue;
+            }
+            if (t - t0).abs() < tol || (t - t1).abs() < tol {
+                return None;
+            }
+            if t0 < t && t < t1 {
+                return Some(true);
+            }
+        }
+    }
+    Some(false)
+}
+
+/// Checks every line of `scene` at `n` samples per segment and every point marker;
+/// returns (visible samples, hidden samples).
+fn referee(scene: &Scene, camera: &Camera, n: usize) -> (usize, usize) {
+    let (_, marks) = order_with_marks(scene, camera, &OrderOptions::default()).unwrap();
+    let (mut shown, mut hidden) = (0, 0);
+    for (i, l) in scene.lines.iter().enumerate() {
+        for w in l.points.windows(2) {
+            for k in 0..n {
+                let t = (k as f64 + 0.5) / n as f64;
+                let p = w[0] + (w[1] - w[0]) * t;
+                let Some(mine) = in_piece(&marks, i as u32, w[0], w[1], t) else {
+                    continue;
+                };
+                let truth = visible(scene, camera.eye, p);
+                assert_eq!(mine, truth, "line {i} at {p} (t = {t})");
+                if truth {
+                    shown += 1;
+                } else {
+                    hidden += 1;
+                }
+            }
+        }
+    }
+    let shown_points: Vec<u32> = marks.points.iter().map(|a| a.index).collect();
+    for (i, p) in scene.points.iter().enumerate() {
+        let truth = visible(scene, camera.eye, p.at);
+        assert_eq!(
+            shown_points.contains(&(i as u32)),
+            truth,
+            "point {i} at {}",
+            p.at
+        );
+    }
+    (shown, hidden)
+}
+
+fn strips_with_lines() -> (Scene, Camera) {
+    let case = cyclic_quads();
+    let mut s = case.scene;
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-3.0, -0.3, -2.0),
+        DVec3::new(3.0, 0.4, -2.0),
+    ]));
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-3.0, 0.2, -1.0),
+        DVec3::new(0.0, 0.1, 0.1),
+        DVec3::new(3.0, -0.2, 1.0),
+    ]));
+    for k in 0..40 {
+        let a = k as f64 * 0.7;
+        s.points.push(PointMark::new(DVec3::new(
+            2.0 * a.cos(),
+            1.5 * (a * 1.3).sin(),
+            (a * 0.5).sin(),
+        )));
+    }
+    (s, case.camera)
+}
+
+fn helix_around_sphere() -> (Scene, Camera) {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::unlit("grey", [0.7, 0.7, 0.7]));
+    let o = s.add_object("sphere");
+    uv_sphere(&mut s, DVec3::ZERO, 1.0, 12, 18, m, o).unwrap();
+    let pts = (0..=240)
+        .map(|k| {
+            let t = k as f64 / 240.0;
+            let a = t * 6.0 * std::f64::consts::TAU;
+            DVec3::new(1.25 * a.cos(), 3.0 * t - 1.5, 1.25 * a.sin())
+        })
+        .collect();
+    s.lines.push(Polyline::new(pts));
+    for k in 0..60 {
+        let a = k as f64 * 0.37;
+        let r = 0.8 + 0.5 * ((k % 5) as f64 / 4.0);
+        s.points.push(PointMark::new(DVec3::new(
+            r * a.cos() * (a * 0.3).cos(),
+            r * (a * 0.3).sin(),
+            r * a.sin() * (a * 0.3).cos(),
+        )));
+    }
+    let cam = Camera::new(DVec3::new(0.8, 1.1, 5.0), DVec3::ZERO, 200, 160);
+    (s, cam)
+}
+
+#[test]
+fn line_behind_and_through_the_cyclic_strips() {
+    let (s, cam) = strips_with_lines();
+    let (shown, hidden) = referee(&s, &cam, 200);
+    assert!(shown > 50 && hidden > 50, "{shown} shown, {hidden} hidden");
+}
+
+#[test]
+fn helix_around_a_sphere() {
+    let (s, cam) = helix_around_sphere();
+    let (shown, hidden) = referee(&s, &cam, 16);
+    assert!(
+        shown > 500 && hidden > 500,
+        "{shown} shown, {hidden} hidden"
+    );
+}
+
+/// Moves a scene (faces, lines, points) and its camera rigidly.
+fn moved(s: &Scene, cam: &Camera, f: impl Fn(DVec3) -> DVec3, r: DQuat) -> (Scene, Camera) {
+    let mut s = s.clone();
+    s.vertices.iter_mut().for_each(|v| *v = f(*v));
+    for l in &mut s.lines {
+        l.points.iter_mut().for_each(|v| *v = f(*v));
+    }
+    s.points.iter_mut().for_each(|p| p.at = f(p.at));
+    let mut c = *cam;
+    c.eye = f(cam.eye);
+    c.target = f(cam.target);
+    c.up = r * cam.up;
+    (s, c)
+}
+
+#[test]
+fn the_same_under_rotation_translation_and_permutation() {
+    for (s, cam) in [strips_with_lines(), helix_around_sphere()] {
+        let base = order_with_marks(&s, &cam, &OrderOptions::default())
+            .unwrap()
+            .1;
+        let r = DQuat::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.7);
+        let t = DVec3::new(1e3, -2e3, 5e2);
+        let (s2, c2) = moved(&s, &cam, |v| r * v + t, r);
+        let mut s3 = s.clone();
+        s3.faces.reverse();
+        for (s, c) in [(s2, c2), (s3, cam)] {
+            referee(&s, &c, 8);
+            let other = order_with_marks(&s, &c, &OrderOptions::default())
+                .unwrap()
+                .1;
+            assert_eq!(base.stats.pieces_out, other.stats.pieces_out);
+            assert_eq!(base.stats.hidden_pieces, other.stats.hidden_pieces);
+            let idx = |m: &VisibleMarks| m.points.iter().map(|a| a.index).collect::<Vec<_>>();
+            assert_eq!(idx(&base), idx(&other));
+        }
+    }
+}
