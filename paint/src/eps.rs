@@ -315,18 +315,18 @@ impl Painter for EpsPainter {
             let mut marks = EpsMarks {
                 w,
                 b: &mut sink.buf,
-                approximated: 0,
+                approximated: false,
             };
             paint_mark(m, &checked.guard, &mut marks, stats)?;
-            stats.approximated += marks.approximated;
+            stats.approximated += usize::from(marks.approximated);
             sink.maybe_flush()?;
             Ok(())
         };
         let counts = walk_with_marks(picture, &checked.guard, key, on_run, on_mark)?;
         let (mut sink, _, mut stats) = state.into_inner();
         sink.buf.extend_from_slice(b"end\nshowpage\n%%EOF\n");
-        stats.skipped = counts.skipped;
-        stats.clipped = counts.clipped;
+        stats.skipped += counts.skipped;
+        stats.clipped += counts.clipped;
         stats.bytes = sink.finish()?;
         Ok(stats)
     }
@@ -336,7 +336,8 @@ impl Painter for EpsPainter {
 struct EpsMarks<'a> {
     w: &'a Writer,
     b: &'a mut Vec<u8>,
-    approximated: usize,
+    /// Whether the mark's colour was flattened (a mark counts once however many paths).
+    approximated: bool,
 }
 
 impl EpsMarks<'_> {
@@ -344,7 +345,7 @@ impl EpsMarks<'_> {
     fn begin(&mut self, color: [f64; 4]) {
         let a = alpha_milli(color[3]);
         if a < 1000 {
-            self.approximated += 1;
+            self.approximated = true;
         }
         let c = flatten([color[0], color[1], color[2]], color[3], self.w.backdrop);
         self.b.extend_from_slice(b"gsave ");

@@ -329,8 +329,8 @@ impl Painter for PdfPainter {
         let counts = walk_with_marks(picture, &checked.guard, key, on_run, on_mark)?;
         let c = c.into_inner();
         let mut stats = stats.into_inner();
-        stats.skipped = counts.skipped;
-        stats.clipped = counts.clipped;
+        stats.skipped += counts.skipped;
+        stats.clipped += counts.clipped;
 
         let bytes = c.document(w, h);
         out.write_all(&bytes)?;

@@ -218,8 +218,8 @@ impl PngPainter {
         };
         let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
         let mut stats = stats.into_inner();
-        stats.skipped = counts.skipped;
-        stats.clipped = counts.clipped;
+        stats.skipped += counts.skipped;
+        stats.clipped += counts.clipped;
         Ok((pixmap.into_inner(), stats))
     }
 }

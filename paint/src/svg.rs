@@ -197,8 +197,8 @@ impl Painter for SvgPainter {
             sink.buf.extend_from_slice(b"</g>\n");
         }
         sink.buf.extend_from_slice(b"</svg>\n");
-        stats.skipped = counts.skipped;
-        stats.clipped = counts.clipped;
+        stats.skipped += counts.skipped;
+        stats.clipped += counts.clipped;
         stats.bytes = sink.finish()?;
         Ok(stats)
     }
