@@ -6,7 +6,9 @@
 //! ordering used and its near and far planes (culling back faces exactly when the
 //! ordering was asked to cull every back face); the band of ambiguous pixel centres
 //! surrounds every scene edge and every fragment edge (fragments also trace where faces
-//! pierce each other and where the near plane cuts them).
+//! pierce each other and where the near plane cuts them). The scene's lines are compared
+//! too ([`Painted::compare_lines`]): the painter's visible pieces against the z-buffer's
+//! depth-tested lines.
 //!
 //! ```
 //! use glam::DVec3;
@@ -28,7 +30,11 @@
 //! # Ok::<(), limn_check::CheckError>(())
 //! ```
 
-use limn_depthsort::{order, CullMode, OrderError, OrderOptions, Ordered};
+mod lines;
+
+pub use lines::{compare_line_images, LineComparison};
+
+use limn_depthsort::{order_with_marks, CullMode, OrderError, OrderOptions, Ordered, VisibleMarks};
 use limn_scene::{Camera, Scene};
 use limn_zbuffer::{
     compare, default_band_tolerance, edge_band, rasterize_ids, render, scene_edges, Comparison,
@@ -61,6 +67,12 @@ pub struct Painted {
     pub edges: Vec<Segment2>,
     /// Pixel centres within [`default_band_tolerance`] of [`Painted::edges`].
     pub band: Mask,
+    /// The visible parts of the scene's lines, markers and labels.
+    pub marks: VisibleMarks,
+    /// Which line the painter draws at each pixel (Bresenham along the visible pieces).
+    pub line_ids: IdImage,
+    /// Pixels within 2 pixels of a visible piece's end.
+    pub line_band: Mask,
 }
 
 impl Painted {
@@ -98,7 +110,7 @@ impl Painted {
 
 /// Orders `scene` with `opts` and prepares the comparison.
 pub fn paint(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Painted, CheckError> {
-    let ordered = order(scene, camera, opts)?;
+    let (ordered, marks) = order_with_marks(scene, camera, opts)?;
     let c = &ordered.camera;
     let (w, h) = (c.width, c.height);
     let polys: Vec<(Vec<[f64; 2]>, u32)> = ordered
@@ -119,12 +131,19 @@ pub fn paint(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Pain
             edges.push((f.points[i], f.points[(i + 1) % n]));
         }
     }
-    let band = edge_band(&edges, w, h, default_band_tolerance(w, h));
-    Ok(Painted {
+    let tolerance = default_band_tolerance(w, h);
+    let band = edge_band(&edges, w, h, tolerance);
+    let line_ids = lines::painted_lines(&marks, w, h);
+    let mut painted = Painted {
         ordered,
         ids,
         ropts,
         edges,
         band,
-    })
+        marks,
+        line_ids,
+        line_band: Mask::new(w, h),
+    };
+    painted.line_band = lines::line_band(&painted, 2.0);
+    Ok(painted)
 }

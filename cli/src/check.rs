@@ -1,5 +1,6 @@
 //! `limn check`: the painter's order against an image-space reference, pixel by pixel
-//! (through [`limn_check`], the routine the tests use).
+//! (through [`limn_check`], the routine the tests use), and the visible line pieces
+//! against the z-buffer's depth-tested lines.
 
 use std::process::ExitCode;
 
@@ -42,6 +43,7 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     progress.phase("comparing");
     let tol = default_band_tolerance(w, h);
     let cmp = painted.compare(&reference);
+    let lines = painted.compare_lines(scene)?;
     if let Some(path) = &a.diff {
         let png = diff_png(&painted.ids, &reference, Some(&painted.band))?;
         write_atomic(path, &scene.files, |out| {
@@ -77,6 +79,15 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         "fragments": ordered.fragments.len(),
         "splits": ordered.stats.splits,
         "per_face": per_face,
+        "lines": {
+            "reference": "zbuffer (depth-tested Bresenham)",
+            "pixels": lines.pixels,
+            "mismatches": lines.mismatches,
+            "mismatches_outside_band": lines.mismatches_outside_band,
+            "pieces": painted.marks.stats.pieces_out,
+            "markers_shown": painted.marks.stats.markers_shown,
+            "labels_shown": painted.marks.stats.labels_shown,
+        },
         // Both sides draw through the same near plane: what it cuts away, neither shows,
         // and the comparison cannot see it.
         "near": ordered.near,
@@ -107,6 +118,16 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
                 "limn: {} pixels disagree with {} outside the edge band",
                 cmp.mismatches_outside_band,
                 method.name()
+            );
+        }
+        return Ok(ExitCode::from(MISMATCH));
+    }
+    if lines.fails() {
+        if !a.view.quiet {
+            eprintln!(
+                "limn: {} of {} line pixels disagree with the z-buffer's lines outside the band \
+                 (more than 1 %)",
+                lines.mismatches_outside_band, lines.pixels
             );
         }
         return Ok(ExitCode::from(MISMATCH));

@@ -38,10 +38,17 @@ fn hides(e: DVec3, p: DVec3, t: [DVec3; 3]) -> bool {
     s.iter().all(|&x| x >= 0) || s.iter().all(|&x| x <= 0)
 }
 
-/// The referee: `p` is visible iff no (fan-triangulated, convex) face hides it.
-fn visible(scene: &Scene, eye: DVec3, p: DVec3) -> bool {
+/// The referee: `p` is visible iff no (fan-triangulated, convex) face hides it. `on`:
+/// the segment `p` was sampled from; a face whose plane holds it never hides it (the
+/// documented rule; the f64 sample itself may be rounded off that plane).
+fn visible(scene: &Scene, eye: DVec3, p: DVec3, on: Option<(DVec3, DVec3)>) -> bool {
     (0..scene.faces.len() as u32).all(|f| {
         let c = scene.face_points(f);
+        if let Some((a, b)) = on {
+            if orient(c[0], c[1], c[2], a) == 0 && orient(c[0], c[1], c[2], b) == 0 {
+                return true;
+            }
+        }
         (1..c.len() - 1).all(|i| !hides(eye, p, [c[0], c[i], c[i + 1]]))
     })
 }
@@ -83,7 +90,7 @@ fn referee(scene: &Scene, camera: &Camera, n: usize) -> (usize, usize) {
                 let Some(mine) = in_piece(&marks, i as u32, w[0], w[1], t) else {
                     continue;
                 };
-                let truth = visible(scene, camera.eye, p);
+                let truth = visible(scene, camera.eye, p, Some((w[0], w[1])));
                 assert_eq!(mine, truth, "line {i} at {p} (t = {t})");
                 if truth {
                     shown += 1;
@@ -95,7 +102,7 @@ fn referee(scene: &Scene, camera: &Camera, n: usize) -> (usize, usize) {
     }
     let shown_points: Vec<u32> = marks.points.iter().map(|a| a.index).collect();
     for (i, p) in scene.points.iter().enumerate() {
-        let truth = visible(scene, camera.eye, p.at);
+        let truth = visible(scene, camera.eye, p.at, None);
         assert_eq!(
             shown_points.contains(&(i as u32)),
             truth,
@@ -208,5 +215,99 @@ fn the_same_under_rotation_translation_and_permutation() {
             let idx = |m: &VisibleMarks| m.points.iter().map(|a| a.index).collect::<Vec<_>>();
             assert_eq!(idx(&base), idx(&other));
         }
+    }
+}
+
+/// A wavy height field in triangles with its own grid lines drawn on it, and a second
+/// fold in front hiding part of it.
+fn surface_with_wireframe(n: usize) -> (Scene, Camera) {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::unlit("surface", [0.8, 0.8, 0.7]));
+    let o = s.add_object("surface");
+    let z = |i: usize, j: usize| {
+        let (x, y) = (
+            i as f64 / n as f64 * 4.0 - 2.0,
+            j as f64 / n as f64 * 4.0 - 2.0,
+        );
+        DVec3::new(x, y, 0.6 * (1.3 * x).sin() * (0.9 * y).cos())
+    };
+    for i in 0..n {
+        for j in 0..n {
+            let (a, b, c, d) = (z(i, j), z(i + 1, j), z(i + 1, j + 1), z(i, j + 1));
+            s.add_polygon(&[a, b, c], m, o).unwrap();
+            s.add_polygon(&[a, c, d], m, o).unwrap();
+        }
+    }
+    for i in 0..=n {
+        s.lines
+            .push(Polyline::new((0..=n).map(|j| z(i, j)).collect()));
+        s.lines
+            .push(Polyline::new((0..=n).map(|j| z(j, i)).collect()));
+    }
+    let cam = Camera::new(DVec3::new(1.0, -5.5, 1.1), DVec3::ZERO, 240, 180);
+    (s, cam)
+}
+
+#[test]
+fn wireframe_drawn_on_its_own_surface_shows_where_the_surface_does() {
+    let (s, cam) = surface_with_wireframe(12);
+    let (shown, hidden) = referee(&s, &cam, 8);
+    assert!(
+        shown > 1000 && hidden > 200,
+        "{shown} shown, {hidden} hidden"
+    );
+}
+
+/// `limn check`'s line comparison: the painter's pieces against the z-buffer's lines.
+#[test]
+fn check_compares_line_pixels_with_the_zbuffer() {
+    for (s, cam) in [
+        helix_around_sphere(),
+        surface_with_wireframe(12),
+        strips_with_lines(),
+    ] {
+        let painted = limn_check::paint(&s, &cam, &OrderOptions::default()).unwrap();
+        let c = painted.compare_lines(&s).unwrap();
+        assert!(c.pixels > 100, "{c:?}");
+        // The z-buffer's depth test is itself approximate where a line runs along a fold:
+        // the check allows 1 % of the line pixels (`limn check` does the same).
+        assert!(!c.fails(), "{c:?}");
+        // Drawing every line whole (nothing hidden) must be caught.
+        let mut whole = painted.clone();
+        for (i, l) in s.lines.iter().enumerate() {
+            let vp = cam.view_projection(whole.ordered.near, whole.ordered.far);
+            let pts: Vec<[f64; 2]> = l
+                .points
+                .iter()
+                .map(|&p| {
+                    let q = cam.project_with(&vp, p);
+                    [q.x, q.y]
+                })
+                .collect();
+            for w in pts.windows(2) {
+                limn_zbuffer::bresenham(
+                    w[0][0].floor() as i64,
+                    w[0][1].floor() as i64,
+                    w[1][0].floor() as i64,
+                    w[1][1].floor() as i64,
+                    |x, y| {
+                        if x >= 0 && y >= 0 && x < cam.width as i64 && y < cam.height as i64 {
+                            whole.line_ids.ids[y as usize * cam.width as usize + x as usize] =
+                                i as u32;
+                        }
+                    },
+                );
+            }
+        }
+        let reference = limn_zbuffer::scene_lines(
+            &s,
+            &cam,
+            &whole.ropts,
+            limn_zbuffer::LineAlgorithm::Bresenham,
+            1e-6,
+        )
+        .unwrap();
+        let c = limn_check::compare_line_images(&whole.line_ids, &reference, &whole.line_band);
+        assert!(c.fails(), "{c:?}");
     }
 }

@@ -70,7 +70,7 @@ pub use depth::DepthFormat;
 pub use error::ZError;
 pub use fragment_ids::rasterize_ids;
 pub use image::{rgb_to_u8, to_u8, ColorImage, DepthImage, IdImage, Mask, NO_FACE};
-pub use lines::{bresenham, dda, wireframe, LineAlgorithm, LineOptions};
+pub use lines::{bresenham, dda, scene_lines, wireframe, LineAlgorithm, LineOptions};
 pub use png::{diff_png, id_color, save_diff_png};
 pub use render::{
     render, scene_edges, Method, ParseMethodError, Raster, RenderOptions, RenderStats,
