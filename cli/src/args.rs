@@ -70,6 +70,9 @@ const RENDER_HELP: &str = "Examples:
   limn render soup.obj -o s.png --method raycast # an image-space picture
   limn render scene.obj -o fig.tikz              # \\input{fig.tikz} in a LaTeX document
   limn render scene.obj -o fig.tex --format tikz --standalone   # pdflatex fig.tex
+  limn render part.stl -o p.svg --style hidden-line --hidden dashed
+  limn render part.stl -o p.svg --style hidden-line --fill none --crease 20  # plotter lines
+  limn render plot.toml -o plot.pdf              # [[line]], [[points]], [[label]] hidden exactly
 
 Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
 limit reached; no output file is left), 2 usage error.";
@@ -238,9 +241,63 @@ pub struct RenderArgs {
     /// that pdflatex compiles as it is, instead of a bare `tikzpicture` for `\input`.
     #[arg(long)]
     pub standalone: bool,
+    /// Picture style: filled faces, or a hidden-line drawing (the mesh's silhouette,
+    /// boundary and crease edges, exactly where visible) [default: the scene file's, else
+    /// filled].
+    #[arg(long, value_enum)]
+    pub style: Option<StyleArg>,
+    /// Hidden-line drawings: draw edges between faces meeting at more than DEG degrees
+    /// [default: the scene file's, else 30].
+    #[arg(long, value_name = "DEG", value_parser = parse_crease)]
+    pub crease: Option<f64>,
+    /// Hidden-line drawings: leave hidden edges out, or draw them dashed [default: the
+    /// scene file's, else omit].
+    #[arg(long, value_enum)]
+    pub hidden: Option<HiddenArg>,
+    /// Hidden-line drawings: fill faces with the background colour (white when there is
+    /// none), or draw lines only, joined into the longest polylines (for plotters and
+    /// cutters) [default: the scene file's, else background].
+    #[arg(long, value_enum)]
+    pub fill: Option<FillArg>,
     /// Camera, ordering and reporting flags.
     #[command(flatten)]
     pub view: ViewArgs,
+}
+
+/// Picture styles.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StyleArg {
+    /// Shaded faces (with lines, markers and labels over them).
+    Filled,
+    /// Silhouette, boundary and crease edges where visible.
+    HiddenLine,
+}
+
+/// Hidden edges of hidden-line drawings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HiddenArg {
+    /// Left out.
+    Omit,
+    /// Drawn dashed.
+    Dashed,
+}
+
+/// Faces of hidden-line drawings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum FillArg {
+    /// Filled with the background colour.
+    Background,
+    /// Not drawn: lines only.
+    None,
+}
+
+fn parse_crease(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|e| format!("{e}"))?;
+    if v.is_finite() && (0.0..=180.0).contains(&v) {
+        Ok(v)
+    } else {
+        Err("the crease angle must be 0 to 180 degrees".into())
+    }
 }
 
 /// `limn demo`.

@@ -6,10 +6,11 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 use limn_depthsort::order_with_marks;
 use limn_paint::{
-    painter_for, picture_with_marks, Format, Outline, Painter, Style, TikzOptions, TikzPainter,
+    hidden_line_picture, hidden_line_scene, painter_for, picture_with_marks, Format,
+    HiddenLineStyle, Outline, Painter, Style, TikzOptions, TikzPainter,
 };
 
-use crate::args::{Background, MethodArg, RenderArgs};
+use crate::args::{Background, FillArg, HiddenArg, MethodArg, RenderArgs, StyleArg};
 use crate::losses::losses;
 use crate::output::{check_writable, write_atomic};
 use crate::progress::Progress;
@@ -56,8 +57,19 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     }
     let t1 = Instant::now();
     progress.phase("ordering");
+    let hidden_line = hidden_line_style(&a, &loaded.opts)?;
+    let background = match a.background {
+        Some(Background::None) => None,
+        Some(Background::Colour(c)) => Some([c[0], c[1], c[2], 1.0]),
+        None => loaded.opts.background.map(|c| [c[0], c[1], c[2], 1.0]),
+    };
+    let drawn_scene = hidden_line.as_ref().map(|h| {
+        let fill = background.map_or([1.0; 3], |b| [b[0], b[1], b[2]]);
+        hidden_line_scene(&loaded.scene, cam.eye, h, fill)
+    });
+    let scene = drawn_scene.as_ref().map_or(&loaded.scene, |d| &d.0);
     let (ordered, marks) =
-        order_with_marks(&loaded.scene, &cam, &oo).map_err(|e| explain_order(e, &a.input))?;
+        order_with_marks(scene, &cam, &oo).map_err(|e| explain_order(e, &a.input))?;
     let t2 = Instant::now();
     progress.phase("writing");
     let fo = &loaded.opts;
@@ -65,11 +77,7 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         seamless: true,
         smooth: true,
         seams: a.seams,
-        background: match a.background {
-            Some(Background::None) => None,
-            Some(Background::Colour(c)) => Some([c[0], c[1], c[2], 1.0]),
-            None => fo.background.map(|c| [c[0], c[1], c[2], 1.0]),
-        },
+        background,
         outline: (a.outline || fo.outline == Some(true)).then(|| {
             let c = fo.outline_color.unwrap_or([0.1, 0.1, 0.1]);
             Outline {
@@ -78,7 +86,10 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
             }
         }),
     };
-    let pic = picture_with_marks(&loaded.scene, &ordered, &marks, &style);
+    let pic = match (&hidden_line, &drawn_scene) {
+        (Some(h), Some((s, first))) => hidden_line_picture(s, &ordered, &marks, *first, h, &style),
+        _ => picture_with_marks(scene, &ordered, &marks, &style),
+    };
     let painter: Box<dyn Painter> = match format {
         Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
             standalone: a.standalone,
@@ -129,4 +140,33 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         );
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The hidden-line style the flags and the scene file ask for, or `None` for filled
+/// pictures.
+fn hidden_line_style(
+    a: &RenderArgs,
+    fo: &limn_load::SceneOptions,
+) -> Result<Option<HiddenLineStyle>> {
+    let hidden_line = match a.style {
+        Some(s) => s == StyleArg::HiddenLine,
+        None => fo.style.as_deref() == Some("hidden-line"),
+    };
+    if !hidden_line {
+        return Ok(None);
+    }
+    let c = fo.outline_color.unwrap_or([0.0; 3]);
+    Ok(Some(HiddenLineStyle {
+        color: [c[0], c[1], c[2], 1.0],
+        width: fo.outline_width.unwrap_or(1.0),
+        dashed: match a.hidden {
+            Some(h) => h == HiddenArg::Dashed,
+            None => fo.hidden.as_deref() == Some("dashed"),
+        },
+        fill: match a.fill {
+            Some(f) => f == FillArg::Background,
+            None => fo.fill.as_deref() != Some("none"),
+        },
+        crease: a.crease.or(fo.crease).unwrap_or(30.0),
+    }))
 }

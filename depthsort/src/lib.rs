@@ -34,6 +34,7 @@
 mod adaptive;
 mod bsp;
 mod coincident;
+mod feature_edges;
 mod geom;
 mod marks;
 mod merge;
@@ -52,6 +53,7 @@ use glam::DVec3;
 use limn_kernel::{ExactKernel, FloatKernel, Kernel};
 use limn_scene::{Camera, Scene};
 
+pub use crate::feature_edges::{feature_edges, EdgeKind, FeatureEdge};
 pub use crate::marks::{
     hide_marks, order_with_marks, MarkStats, VisibleAnchor, VisibleMarks, VisiblePiece,
 };

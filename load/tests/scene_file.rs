@@ -85,6 +85,7 @@ kind = "headlight"
             sort: Some("bsp".into()),
             arith: Some("float".into()),
             cull: Some("off".into()),
+            ..SceneOptions::default()
         }
     );
     let cam = s.camera.expect("camera");

@@ -82,6 +82,7 @@ mod covers;
 mod eps;
 mod error;
 mod format;
+mod hidden_line;
 mod marks;
 mod model;
 mod number;
@@ -99,6 +100,7 @@ pub use covers::covers;
 pub use eps::{EpsOptions, EpsPainter};
 pub use error::PaintError;
 pub use format::Format;
+pub use hidden_line::{hidden_line_picture, hidden_line_scene, HiddenLineStyle};
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
     Outline, PaintFragment, Picture,

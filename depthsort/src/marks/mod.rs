@@ -96,6 +96,9 @@ pub struct VisibleMarks {
     pub labels: Vec<VisibleAnchor>,
     /// Visible arrow heads.
     pub heads: Vec<VisibleAnchor>,
+    /// The hidden (not near-clipped) pieces of the lines, for drawings that show hidden
+    /// lines dashed; their `before` is the fragments' count.
+    pub hidden: Vec<VisiblePiece>,
     /// Counts.
     pub stats: MarkStats,
 }
@@ -246,7 +249,7 @@ fn run(
     let mut out = VisibleMarks::default();
     for (i, line) in scene.lines.iter().enumerate() {
         ctx.stats.lines += 1;
-        ctx.polyline(i as u32, &line.points, &mut out.pieces);
+        ctx.polyline(i as u32, &line.points, &mut out.pieces, &mut out.hidden);
         if line.head {
             let n = line.points.len();
             if let Some(mut a) = ctx.anchor(i as u32, line.points[n - 1]) {

@@ -92,7 +92,14 @@ impl Ctx {
     }
 
     /// Splits polyline `line` into visible pieces (appended to `out`).
-    pub(super) fn polyline(&mut self, line: u32, points: &[DVec3], out: &mut Vec<VisiblePiece>) {
+    pub(super) fn polyline(
+        &mut self,
+        line: u32,
+        points: &[DVec3],
+        out: &mut Vec<VisiblePiece>,
+        hidden_out: &mut Vec<VisiblePiece>,
+    ) {
+        let mut hopen: Option<Open> = None;
         let near = Affine::of_plane(&self.near);
         let mut open: Option<Open> = None;
         let mut hidden_open = false;
@@ -163,8 +170,24 @@ impl Ctx {
                 let clipped = t1 <= &u_lo || t0 >= &u_hi;
                 if clipped || hidden.iter().any(|(lo, hi)| inside(lo, hi)) {
                     close(&mut open, line, out, self, &mut hidden_open, true);
+                    if !clipped {
+                        let p0 = Self::point_at(&qa, &qb, t0);
+                        let p1 = Self::point_at(&qa, &qb, t1);
+                        match &mut hopen {
+                            Some(o) if o.world.last() == Some(&p0) => o.world.push(p1),
+                            _ => {
+                                self.flush_hidden(&mut hopen, line, hidden_out);
+                                hopen = Some(Open {
+                                    world: vec![p0, p1],
+                                    before: self.end,
+                                    start: seg_start,
+                                });
+                            }
+                        }
+                    }
                     continue;
                 }
+                self.flush_hidden(&mut hopen, line, hidden_out);
                 let before = covered
                     .iter()
                     .filter(|(lo, hi, _)| inside(lo, hi))
@@ -191,8 +214,23 @@ impl Ctx {
             }
         }
         close(&mut open, line, out, self, &mut hidden_open, false);
+        self.flush_hidden(&mut hopen, line, hidden_out);
         if hidden_open {
             self.stats.hidden_pieces += 1;
+        }
+    }
+
+    /// Moves a hidden piece being built to `out`.
+    fn flush_hidden(&self, open: &mut Option<Open>, line: u32, out: &mut Vec<VisiblePiece>) {
+        if let Some(o) = open.take() {
+            let points = o.world.iter().map(|&p| self.project(p)).collect();
+            out.push(VisiblePiece {
+                line,
+                world: o.world,
+                points,
+                before: o.before,
+                start: o.start,
+            });
         }
     }
 

@@ -57,6 +57,31 @@ pub(crate) struct OutputDoc {
     pub(crate) sort: Option<SortDoc>,
     pub(crate) arith: Option<ArithDoc>,
     pub(crate) cull: Option<CullDoc>,
+    pub(crate) style: Option<StyleDoc>,
+    pub(crate) crease: Option<Spanned<f64>>,
+    pub(crate) hidden: Option<HiddenDoc>,
+    pub(crate) fill: Option<FillDoc>,
+}
+
+#[derive(Deserialize, Clone, Copy, Debug)]
+#[serde(rename_all = "kebab-case")]
+pub(crate) enum StyleDoc {
+    Filled,
+    HiddenLine,
+}
+
+#[derive(Deserialize, Clone, Copy, Debug)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum HiddenDoc {
+    Omit,
+    Dashed,
+}
+
+#[derive(Deserialize, Clone, Copy, Debug)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum FillDoc {
+    Background,
+    None,
 }
 
 #[derive(Deserialize)]

@@ -20,6 +20,10 @@
 //! sort = "adaptive"         # adaptive | bsp | newell | simple
 //! arith = "exact"           # exact | float
 //! cull = "auto"             # auto | on | off
+//! style = "hidden-line"     # filled (default) | hidden-line: silhouettes, boundaries,
+//! crease = 30.0             #   creases above this angle, exactly where visible
+//! hidden = "dashed"         # omit (default) | dashed
+//! fill = "none"             # background (default) | none: lines only, joined
 //!
 //! [[mesh]]
 //! path = "bunny.obj"        # relative to this file; obj, stl, ply, gltf, glb
@@ -101,6 +105,14 @@ pub struct SceneOptions {
     pub arith: Option<String>,
     /// Back-face culling: `auto`, `on` or `off`.
     pub cull: Option<String>,
+    /// Picture style: `filled` or `hidden-line`.
+    pub style: Option<String>,
+    /// Crease angle in degrees (0 to 180) of hidden-line drawings.
+    pub crease: Option<f64>,
+    /// Hidden edges of hidden-line drawings: `omit` or `dashed`.
+    pub hidden: Option<String>,
+    /// Faces of hidden-line drawings: `background` or `none`.
+    pub fill: Option<String>,
 }
 
 /// Loads a scene file: its meshes (placed and with their material overrides), lights,

@@ -3,7 +3,7 @@
 use glam::DVec3;
 use toml::Spanned;
 
-use super::doc::{self, lower, Doc, LightKindDoc, SizeDoc, V3};
+use super::doc::{self, lower, Doc, LightKindDoc, SizeDoc, StyleDoc, V3};
 use super::{Ctx, SceneOptions};
 use crate::LoadError;
 use limn_scene::DEFAULT_VIEW_DIRECTION;
@@ -107,6 +107,18 @@ pub(super) fn options(cx: &Ctx, doc: &Doc) -> Result<SceneOptions, LoadError> {
         sort: o.sort.map(lower),
         arith: o.arith.map(lower),
         cull: o.cull.map(lower),
+        style: o.style.map(|s| match s {
+            StyleDoc::Filled => "filled".to_string(),
+            StyleDoc::HiddenLine => "hidden-line".to_string(),
+        }),
+        crease: match &o.crease {
+            Some(c) if !(c.get_ref().is_finite() && (0.0..=180.0).contains(c.get_ref())) => {
+                return Err(cx.invalid(c.span(), "crease must be an angle from 0 to 180 degrees"))
+            }
+            c => c.as_ref().map(|c| *c.get_ref()),
+        },
+        hidden: o.hidden.map(lower),
+        fill: o.fill.map(lower),
     })
 }
 
