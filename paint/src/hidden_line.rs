@@ -134,11 +134,14 @@ pub fn hidden_line_picture(
     pic
 }
 
+/// A polyline in pixel coordinates.
+type Polyline2 = Vec<[f64; 2]>;
+
 /// Joins line marks of equal style that meet end to end (equal pixel points) into the
 /// longest polylines a greedy walk finds: starting from ends where the number of pieces
 /// meeting is not two, then around what remains (closed loops).
 fn join(marks: Vec<Mark>) -> Vec<Mark> {
-    let mut groups: Vec<(LineStyle, u32, Vec<Vec<[f64; 2]>>)> = Vec::new();
+    let mut groups: Vec<(LineStyle, u32, Vec<Polyline2>)> = Vec::new();
     for m in marks {
         if let MarkKind::Line(l) = m.kind {
             match groups
@@ -227,7 +230,7 @@ mod tests {
             vec![[5.0, 5.0], [6.0, 5.0]],
         ];
         let mut c = chain(pieces);
-        c.sort_by(|a, b| a.len().cmp(&b.len()));
+        c.sort_by_key(Vec::len);
         assert_eq!(c.len(), 2);
         assert_eq!(c[1].len(), 4);
         let ends = [c[1][0], c[1][3]];
