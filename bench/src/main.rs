@@ -6,6 +6,7 @@
 //! SVG is rasterised the same way, without anti-aliasing.
 
 mod limn_runs;
+mod lines_bench;
 mod peers;
 mod raster;
 mod scenes;
@@ -32,6 +33,9 @@ struct Cli {
 enum Cmd {
     /// Print the accuracy-versus-time table (Markdown) and write it to --out.
     Table(TableArgs),
+    /// Time a surface with its grid lines and a point scatter, hidden exactly, in every
+    /// format (Markdown).
+    Lines(lines_bench::LinesArgs),
 }
 
 #[derive(Debug, clap::Args)]
@@ -78,7 +82,10 @@ fn ms(v: f64) -> String {
 }
 
 fn main() -> Result<()> {
-    let Cmd::Table(a) = Cli::parse().command;
+    let a = match Cli::parse().command {
+        Cmd::Table(a) => a,
+        Cmd::Lines(l) => return lines_bench::run(l),
+    };
     let runs = a.runs.unwrap_or(if a.quick { 3 } else { 5 });
     let peer_dir = a
         .peers

@@ -20,6 +20,7 @@
 
 mod bins;
 mod cone;
+mod filter;
 mod segment;
 
 use glam::{DMat4, DVec3};
@@ -79,7 +80,8 @@ pub struct MarkStats {
     pub labels_in: usize,
     /// Labels shown.
     pub labels_shown: usize,
-    /// Occluder tests that needed exact evaluation (after the exact plane-side prefilter).
+    /// Occluder tests that needed exact evaluation (after the exact plane-side prefilter
+    /// and the certified float filter).
     pub exact_tests: usize,
     /// Time spent, in milliseconds.
     pub ms: u64,
@@ -240,6 +242,9 @@ fn run(
         occluders,
         bins: Bins::new(boxes),
         eye: q3(eye_arr),
+        eye_f: eye_arr,
+        fa: Vec::new(),
+        fb: Vec::new(),
         near,
         camera: *cam,
         vp: view_projection(ordered),

@@ -8,6 +8,7 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use super::bins::Bins;
 use super::cone::{self, q3, Affine, Q};
+use super::filter;
 use super::{MarkStats, Occluder, VisibleAnchor, VisiblePiece};
 use crate::geom::Box2;
 
@@ -16,6 +17,11 @@ pub(super) struct Ctx {
     pub(super) occluders: Vec<Occluder>,
     pub(super) bins: Bins,
     pub(super) eye: [Q; 3],
+    /// The eye as given.
+    pub(super) eye_f: [f64; 3],
+    /// Scratch space of the filter.
+    pub(super) fa: Vec<filter::Iv>,
+    pub(super) fb: Vec<filter::Iv>,
     pub(super) near: Plane,
     pub(super) camera: Camera,
     pub(super) vp: DMat4,
@@ -130,10 +136,59 @@ impl Ctx {
             let mut hidden: Vec<(Q, Q)> = Vec::new();
             let mut covered: Vec<(Q, Q, usize)> = Vec::new();
             for i in cands {
+                let o = &self.occluders[i as usize];
+                let (opaque, before) = (o.opaque, o.before);
+                // The filter: a condition certainly failing at both ends fails all along;
+                // every condition certainly holding at both ends holds all along.
+                let ok_a = filter::conditions(
+                    &o.poly,
+                    &o.support,
+                    o.eye_side,
+                    self.eye_f,
+                    a.to_array(),
+                    &mut self.fa,
+                );
+                let ok_b = filter::conditions(
+                    &o.poly,
+                    &o.support,
+                    o.eye_side,
+                    self.eye_f,
+                    b.to_array(),
+                    &mut self.fb,
+                );
+                if ok_a && ok_b {
+                    let (fa, fb) = (&self.fa, &self.fb);
+                    let fails = fa[0].nonpos() && fb[0].nonpos()
+                        || fa[1..]
+                            .iter()
+                            .zip(&fb[1..])
+                            .any(|(x, y)| x.neg_strict() && y.neg_strict());
+                    if fails {
+                        continue;
+                    }
+                    let holds = fa[0].pos()
+                        && fb[0].pos()
+                        && fa[1..]
+                            .iter()
+                            .zip(&fb[1..])
+                            .all(|(x, y)| x.nonneg() && y.nonneg());
+                    if holds {
+                        if u_lo < u_hi {
+                            if opaque {
+                                hidden.push((u_lo.clone(), u_hi.clone()));
+                            } else {
+                                covered.push((u_lo.clone(), u_hi.clone(), before));
+                            }
+                        }
+                        continue;
+                    }
+                }
+                if ok_a && ok_b && filter::certainly_empty(&self.fa, &self.fb) {
+                    continue;
+                }
                 self.stats.exact_tests += 1;
                 let eye = self.eye.clone();
                 let o = &mut self.occluders[i as usize];
-                let (opaque, before) = (o.opaque, o.before);
                 let Some(c) = o.cone(&eye) else { continue };
                 let mut iv = clip(
                     &c.behind.at(&qa),
@@ -250,12 +305,37 @@ impl Ctx {
         };
         let mut before = self.end;
         for i in self.candidates(&[p], &b) {
-            self.stats.exact_tests += 1;
-            let eye = self.eye.clone();
-            let o = &mut self.occluders[i as usize];
+            let o = &self.occluders[i as usize];
             let (opaque, pos) = (o.opaque, o.before);
-            let Some(c) = o.cone(&eye) else { continue };
-            if c.hides(&qp) {
+            let decided = if filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.eye_f,
+                p.to_array(),
+                &mut self.fa,
+            ) {
+                let f = &self.fa;
+                if f[0].nonpos() || f[1..].iter().any(|x| x.neg_strict()) {
+                    Some(false)
+                } else if f[0].pos() && f[1..].iter().all(|x| x.nonneg()) {
+                    Some(true)
+                } else {
+                    None
+                }
+            } else {
+                Some(false)
+            };
+            let hides = match decided {
+                Some(h) => h,
+                None => {
+                    self.stats.exact_tests += 1;
+                    let eye = self.eye.clone();
+                    let o = &mut self.occluders[i as usize];
+                    o.cone(&eye).is_some_and(|c| c.hides(&qp))
+                }
+            };
+            if hides {
                 if opaque {
                     return None;
                 }
