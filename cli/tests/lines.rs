@@ -135,3 +135,26 @@ fn bad_lines_fail_cleanly_with_file_and_line() {
         assert!(run.stderr.contains(needle), "{}", run.stderr);
     }
 }
+
+/// The README figure renders (its scene file stays valid).
+#[test]
+fn the_readme_figure_renders() {
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/lines");
+    let d = tempdir();
+    for f in ["figure.toml", "surface.obj", "grid.obj"] {
+        std::fs::copy(docs.join(f), d.path().join(f)).unwrap();
+    }
+    let run = limn(
+        d.path(),
+        &["render", "figure.toml", "-o", "f.svg", "--stats", "s.json"],
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let st: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(d.path().join("s.json")).unwrap()).unwrap();
+    assert_eq!(st["lines"]["labels"], 5);
+    assert_eq!(
+        st["lines"]["labels_shown"], 4,
+        "the label under the surface is hidden"
+    );
+    assert!(st["lines"]["hidden_pieces"].as_u64().unwrap() > 0);
+}
