@@ -65,7 +65,7 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     };
     let drawn_scene = hidden_line.as_ref().map(|h| {
         let fill = background.map_or([1.0; 3], |b| [b[0], b[1], b[2]]);
-        hidden_line_scene(&loaded.scene, cam.eye, h, fill)
+        hidden_line_scene(&loaded.scene, &cam, h, fill)
     });
     let scene = drawn_scene.as_ref().map_or(&loaded.scene, |d| &d.0);
     let (ordered, marks) =

@@ -12,7 +12,7 @@ use std::collections::HashMap;
 
 use glam::DVec3;
 use limn_kernel::{Plane, Side};
-use limn_scene::{polygon_normal, Scene};
+use limn_scene::{polygon_normal, Scene, Viewpoint};
 
 /// Why an edge is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -40,17 +40,26 @@ pub struct FeatureEdge {
 
 /// Whether the eye sees face `f` from its front (exactly; faces whose first three corners
 /// are collinear use the float normal).
-fn front_facing(scene: &Scene, f: u32, eye: DVec3) -> bool {
+fn front_facing(scene: &Scene, f: u32, view: Viewpoint) -> bool {
     let pts = scene.face_points(f);
     if let Ok(plane) = Plane::through(pts[0].to_array(), pts[1].to_array(), pts[2].to_array()) {
-        return plane.side_of(eye.to_array()) == Side::Front;
+        let side = match view {
+            Viewpoint::At(e) => plane.side_of(e.to_array()),
+            Viewpoint::Toward(d) => plane.side_of_direction(d.to_array()),
+        };
+        return side == Side::Front;
     }
-    polygon_normal(&pts).dot(eye - pts[0]) > 0.0
+    let n = polygon_normal(&pts);
+    match view {
+        Viewpoint::At(e) => n.dot(e - pts[0]) > 0.0,
+        Viewpoint::Toward(d) => n.dot(d) > 0.0,
+    }
 }
 
-/// The feature edges of `scene`'s faces seen from `eye`, with creases above `crease_deg`
-/// degrees, in the order their first face lists them.
-pub fn feature_edges(scene: &Scene, eye: DVec3, crease_deg: f64) -> Vec<FeatureEdge> {
+/// The feature edges of `scene`'s faces seen from `view` (an eye point, or a direction
+/// for parallel projections), with creases above `crease_deg` degrees, in the order their
+/// first face lists them.
+pub fn feature_edges(scene: &Scene, view: Viewpoint, crease_deg: f64) -> Vec<FeatureEdge> {
     type Key = [u64; 3];
     let key = |p: DVec3| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()];
     let mut order: Vec<(Key, Key, DVec3, DVec3)> = Vec::new();
@@ -79,7 +88,7 @@ pub fn feature_edges(scene: &Scene, eye: DVec3, crease_deg: f64) -> Vec<FeatureE
     let mut front = |f: u32| {
         *facing
             .entry(f)
-            .or_insert_with(|| front_facing(scene, f, eye))
+            .or_insert_with(|| front_facing(scene, f, view))
     };
     let mut out = Vec::new();
     for (ka, kb, a, b) in order {

@@ -127,3 +127,24 @@ fn lines_behind_the_eye_are_clipped() {
     assert!(end.z < 5.0, "{end}");
     assert!(v.points.is_empty());
 }
+
+/// With a parallel projection the eye is at infinity: the line is hidden exactly where it
+/// passes behind the quad along the view direction, from x = −1 to the piercing point.
+#[test]
+fn parallel_projection_hides_along_the_view_direction() {
+    let mut s = quad_scene(1.0);
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-2.0, 0.5, -1.0),
+        DVec3::new(2.0, 0.5, 1.0),
+    ]));
+    s.points.push(PointMark::new(DVec3::new(0.9, 0.9, -3.0)));
+    s.points.push(PointMark::new(DVec3::new(1.1, 0.9, -3.0)));
+    let mut cam = camera();
+    cam.projection = limn_scene::Projection::Orthographic { height: 6.0 };
+    let (_, v) = order_with_marks(&s, &cam, &OrderOptions::default()).unwrap();
+    assert_eq!(v.pieces.len(), 2, "{v:?}");
+    assert_eq!(v.pieces[0].world[1], DVec3::new(-1.0, 0.5, -0.5));
+    assert_eq!(v.pieces[1].world[0], DVec3::new(0.0, 0.5, 0.0));
+    let shown: Vec<u32> = v.points.iter().map(|a| a.index).collect();
+    assert_eq!(shown, vec![1]);
+}

@@ -11,9 +11,8 @@
 
 use std::collections::HashMap;
 
-use glam::DVec3;
 use limn_depthsort::{feature_edges, Ordered, VisibleMarks};
-use limn_scene::{Material, Polyline, Scene};
+use limn_scene::{Camera, Material, Polyline, Scene, Viewpoint};
 
 use crate::{picture_with_marks, LinePiece, LineStyle, Mark, MarkKind, Picture, Style};
 
@@ -46,12 +45,12 @@ impl Default for HiddenLineStyle {
     }
 }
 
-/// `scene` prepared for a hidden-line drawing seen from `eye`: every material becomes the
+/// `scene` prepared for a hidden-line drawing seen by `camera`: every material becomes the
 /// unlit, opaque `fill` colour, and the feature edges are appended to the lines (in a new
 /// object `edges`). Returns the scene and the index of the first edge line.
 pub fn hidden_line_scene(
     scene: &Scene,
-    eye: DVec3,
+    camera: &Camera,
     style: &HiddenLineStyle,
     fill: [f64; 3],
 ) -> (Scene, usize) {
@@ -61,7 +60,8 @@ pub fn hidden_line_scene(
     }
     let first = s.lines.len();
     let object = s.add_object("edges");
-    for e in feature_edges(scene, eye, style.crease) {
+    let view = camera.viewpoint().unwrap_or(Viewpoint::At(camera.eye));
+    for e in feature_edges(scene, view, style.crease) {
         s.lines.push(Polyline {
             points: vec![e.a, e.b],
             color: style.color,

@@ -6,7 +6,7 @@ use glam::{DQuat, DVec3};
 use limn_depthsort::{feature_edges, order_with_marks, EdgeKind, OrderOptions};
 use limn_paint::{hidden_line_scene, HiddenLineStyle};
 use limn_scene::shapes::{cuboid, torus, uv_sphere};
-use limn_scene::{Camera, Material, Scene};
+use limn_scene::{Camera, Material, Scene, Viewpoint};
 
 fn unit_cube() -> Scene {
     let mut s = Scene::default();
@@ -18,7 +18,7 @@ fn unit_cube() -> Scene {
 
 /// (edges with a visible piece, edges with none) of a hidden-line drawing.
 fn visible_edges(scene: &Scene, cam: &Camera) -> (usize, usize, Scene) {
-    let (s, first) = hidden_line_scene(scene, cam.eye, &HiddenLineStyle::default(), [1.0; 3]);
+    let (s, first) = hidden_line_scene(scene, cam, &HiddenLineStyle::default(), [1.0; 3]);
     let (_, marks) = order_with_marks(&s, cam, &OrderOptions::default()).unwrap();
     let edges = s.lines.len() - first;
     let shown = (first..s.lines.len())
@@ -52,7 +52,7 @@ fn a_cube_has_no_creases_below_ninety_degrees_and_twelve_above() {
     let s = unit_cube();
     let eye = DVec3::new(3.0, 2.5, 4.0);
     let kinds = |crease: f64| {
-        let mut k: Vec<EdgeKind> = feature_edges(&s, eye, crease)
+        let mut k: Vec<EdgeKind> = feature_edges(&s, Viewpoint::At(eye), crease)
             .iter()
             .map(|e| e.kind)
             .collect();
@@ -90,7 +90,7 @@ fn torus_and_sphere_silhouettes_are_visible_where_ray_casting_says() {
     ] {
         let cam = Camera::new(eye, DVec3::ZERO, 200, 160);
         let (shown, hidden, drawn) = visible_edges(&s, &cam);
-        let silhouettes = feature_edges(&s, eye, 180.0);
+        let silhouettes = feature_edges(&s, Viewpoint::At(eye), 180.0);
         assert!(silhouettes.iter().all(|e| e.kind == EdgeKind::Silhouette));
         assert!(silhouettes.len() > 20, "{}", silhouettes.len());
         assert!(shown > 20, "{shown} shown, {hidden} hidden");

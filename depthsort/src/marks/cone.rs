@@ -12,7 +12,8 @@
 //! - one wall per edge: `wᵢ(P) = −s·(π(E)·eᵢ(P) − eᵢ(E)·π(P)) ≥ 0`.
 //!
 //! A point on `π` itself is never hidden by `F`: a line drawn in a face's plane on top of
-//! the face is drawn over it. The coefficients are polynomials in the f64 values that
+//! the face is drawn over it. For an eye at infinity in direction `d` (parallel
+//! projections) the same conditions hold with `π(E)` read as `n·d`. The coefficients are polynomials in the f64 values that
 //! define the planes and the eye, computed exactly as big rationals (every f64 is one), so
 //! each decision is the exact sign on the input as given.
 
@@ -32,6 +33,17 @@ pub(crate) fn q(x: f64) -> Q {
 /// A point as exact numbers.
 pub(crate) fn q3(p: [f64; 3]) -> [Q; 3] {
     p.map(q)
+}
+
+/// The eye, exactly: a point, or a direction for an eye at infinity (parallel
+/// projections), where a plane's value is that of its normal (the homogeneous point
+/// `(d, 0)`).
+#[derive(Debug, Clone)]
+pub(crate) enum EyeQ {
+    /// A finite eye.
+    Point([Q; 3]),
+    /// An eye at infinity in this direction.
+    Toward([Q; 3]),
 }
 
 /// An affine function `n·x + d` with exact coefficients.
@@ -73,6 +85,14 @@ impl Affine {
     /// The value at an exact point.
     pub(crate) fn at(&self, x: &[Q; 3]) -> Q {
         &self.n[0] * &x[0] + &self.n[1] * &x[1] + &self.n[2] * &x[2] + &self.d
+    }
+
+    /// The value at the eye (for an eye at infinity, `n·d`).
+    pub(crate) fn at_eye(&self, eye: &EyeQ) -> Q {
+        match eye {
+            EyeQ::Point(p) => self.at(p),
+            EyeQ::Toward(d) => &self.n[0] * &d[0] + &self.n[1] * &d[1] + &self.n[2] * &d[2],
+        }
     }
 
     /// `k · self`.
@@ -117,9 +137,9 @@ pub(crate) struct Cone {
 impl Cone {
     /// The cone of `poly` from the eye `eye`; `None` when the eye lies in the polygon's
     /// plane (it then hides nothing).
-    pub(crate) fn new(poly: &ExactPolygon, eye: &[Q; 3]) -> Option<Cone> {
+    pub(crate) fn new(poly: &ExactPolygon, eye: &EyeQ) -> Option<Cone> {
         let pi = Affine::of_plane(&poly.support());
-        let pe = pi.at(eye);
+        let pe = pi.at_eye(eye);
         if pe.is_zero() {
             return None;
         }
@@ -131,7 +151,7 @@ impl Cone {
         let walls = (0..poly.len())
             .map(|i| {
                 let e = Affine::of_plane(&poly.edge_plane(i));
-                let ee = e.at(eye);
+                let ee = e.at_eye(eye);
                 // −s·(π(E)·e − e(E)·π)
                 e.combined(&(&pe * &minus_s), &pi, &(-(&ee * &minus_s)))
             })

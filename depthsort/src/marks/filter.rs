@@ -66,13 +66,41 @@ pub(crate) fn at(plane: &Plane, x: [f64; 3]) -> Iv {
     Iv((v - e).next_down(), (v + e).next_up())
 }
 
+/// The eye as given: a point, or a direction for an eye at infinity.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum EyeF {
+    /// A finite eye.
+    Point([f64; 3]),
+    /// An eye at infinity in this direction.
+    Toward([f64; 3]),
+}
+
+/// An interval holding the exact value of `plane` at the eye (`n·d` for a direction).
+fn at_eye(plane: &Plane, eye: EyeF) -> Iv {
+    match eye {
+        EyeF::Point(p) => at(plane, p),
+        EyeF::Toward(d) => {
+            let [a, b, c, _] = plane.approx();
+            let (en, _) = plane.error_bounds();
+            let v = a * d[0] + b * d[1] + c * d[2];
+            let mag = (a * d[0]).abs() + (b * d[1]).abs() + (c * d[2]).abs();
+            let sd = d[0].abs() + d[1].abs() + d[2].abs();
+            let e = (en * sd + 8.0 * U * mag) * (1.0 + 16.0 * U) + f64::MIN_POSITIVE;
+            if !(v.is_finite() && e.is_finite()) {
+                return Iv(f64::NEG_INFINITY, f64::INFINITY);
+            }
+            Iv((v - e).next_down(), (v + e).next_up())
+        }
+    }
+}
+
 /// The cone conditions of `poly` seen from `eye` at a point, as intervals: `behind`,
 /// then one wall per edge (see `cone.rs`). `None` when the eye's side is `On`.
 pub(crate) fn conditions(
     poly: &ExactPolygon,
     support: &Plane,
     eye_side: Side,
-    eye: [f64; 3],
+    eye: EyeF,
     x: [f64; 3],
     out: &mut Vec<Iv>,
 ) -> bool {
@@ -96,12 +124,12 @@ pub(crate) fn conditions(
         }
         return true;
     }
-    let pe = at(support, eye);
+    let pe = at_eye(support, eye);
     let px = at(support, x);
     out.push(flip(px));
     for i in 0..poly.len() {
         let e = poly.edge_plane(i);
-        let g = pe.mul(at(&e, x)).sub(at(&e, eye).mul(px));
+        let g = pe.mul(at(&e, x)).sub(at_eye(&e, eye).mul(px));
         out.push(flip(g));
     }
     true

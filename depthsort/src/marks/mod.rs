@@ -14,6 +14,8 @@
 //! - the polygon is closed: a point whose sight line grazes an occluder's edge is hidden;
 //!   hidden parts of zero length are ignored (a line is never cut at a single point);
 //! - what lies nearer than the near plane is clipped away, as faces are;
+//! - with a parallel projection the eye is at infinity: a point is hidden when the ray
+//!   from it toward the eye meets a face;
 //! - translucent fragments hide nothing, but a visible piece is painted before the first
 //!   translucent fragment in front of it (pieces are split where they pass in and out of
 //!   a translucent fragment's cone, so that one position holds for the whole piece).
@@ -25,12 +27,13 @@ mod segment;
 
 use glam::{DMat4, DVec3};
 use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane, Side};
-use limn_scene::{Camera, Scene};
+use limn_scene::{Camera, Scene, Viewpoint};
 
 use crate::geom::{bbox, Box2};
 use crate::{order, order_polygons, Arith, OrderError, OrderOptions, Ordered};
 use bins::Bins;
-use cone::{q3, Cone};
+use cone::{q3, Cone, EyeQ};
+use filter::EyeF;
 
 /// A visible piece of an input polyline.
 #[derive(Debug, Clone, PartialEq)]
@@ -146,7 +149,6 @@ pub fn hide_marks(
     ordered: &Ordered,
     polys: &[ExactPolygon],
 ) -> Result<VisibleMarks, OrderError> {
-    let eye = ordered.camera.eye;
     let occ: Vec<(ExactPolygon, usize, Box2)> = polys
         .iter()
         .zip(&ordered.fragments)
@@ -155,7 +157,7 @@ pub fn hide_marks(
         .collect();
     let opaque = |o: &(ExactPolygon, usize, Box2)| face_opaque(scene, ordered.fragments[o.1].face);
     let flags: Vec<bool> = occ.iter().map(opaque).collect();
-    run(scene, ordered, eye, occ, flags)
+    run(scene, ordered, occ, flags)
 }
 
 /// Hides the marks against exact polygons of the input faces (for orders made by the
@@ -196,7 +198,7 @@ fn hide_marks_by_face(scene: &Scene, ordered: &Ordered) -> Result<VisibleMarks, 
             flags.push(face_opaque(scene, fi as u32));
         }
     }
-    run(scene, ordered, ordered.camera.eye, occ, flags)
+    run(scene, ordered, occ, flags)
 }
 
 fn face_opaque(scene: &Scene, face: u32) -> bool {
@@ -212,22 +214,28 @@ fn view_projection(ordered: &Ordered) -> DMat4 {
 fn run(
     scene: &Scene,
     ordered: &Ordered,
-    eye: DVec3,
     occ: Vec<(ExactPolygon, usize, Box2)>,
     opaque: Vec<bool>,
 ) -> Result<VisibleMarks, OrderError> {
     let t0 = std::time::Instant::now();
     let cam = &ordered.camera;
     let fwd = cam.forward();
+    let eye = cam.eye;
     let near = Plane::point_normal((eye + fwd * ordered.near).to_array(), fwd.to_array())?;
-    let eye_arr = eye.to_array();
+    let (eye_q, eye_f) = match cam.viewpoint()? {
+        Viewpoint::At(p) => (EyeQ::Point(q3(p.to_array())), EyeF::Point(p.to_array())),
+        Viewpoint::Toward(d) => (EyeQ::Toward(q3(d.to_array())), EyeF::Toward(d.to_array())),
+    };
     let boxes: Vec<Box2> = occ.iter().map(|o| o.2).collect();
     let occluders: Vec<Occluder> = occ
         .into_iter()
         .zip(opaque)
         .map(|((poly, before, _), opaque)| {
             let support = poly.support();
-            let eye_side = support.side_of(eye_arr);
+            let eye_side = match eye_f {
+                EyeF::Point(p) => support.side_of(p),
+                EyeF::Toward(d) => support.side_of_direction(d),
+            };
             Occluder {
                 poly,
                 before,
@@ -241,8 +249,8 @@ fn run(
     let mut ctx = segment::Ctx {
         occluders,
         bins: Bins::new(boxes),
-        eye: q3(eye_arr),
-        eye_f: eye_arr,
+        eye: eye_q,
+        eye_f,
         fa: Vec::new(),
         fb: Vec::new(),
         near,
@@ -285,7 +293,7 @@ fn run(
 
 impl Occluder {
     /// The exact cone, computed on first use.
-    fn cone(&mut self, eye: &[cone::Q; 3]) -> Option<&Cone> {
+    fn cone(&mut self, eye: &EyeQ) -> Option<&Cone> {
         if self.cone.is_none() {
             self.cone = Some(Cone::new(&self.poly, eye));
         }

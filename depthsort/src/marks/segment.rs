@@ -7,7 +7,7 @@ use limn_scene::Camera;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use super::bins::Bins;
-use super::cone::{self, q3, Affine, Q};
+use super::cone::{self, q3, Affine, EyeQ, Q};
 use super::filter;
 use super::{MarkStats, Occluder, VisibleAnchor, VisiblePiece};
 use crate::geom::Box2;
@@ -16,9 +16,9 @@ use crate::geom::Box2;
 pub(super) struct Ctx {
     pub(super) occluders: Vec<Occluder>,
     pub(super) bins: Bins,
-    pub(super) eye: [Q; 3],
+    pub(super) eye: EyeQ,
     /// The eye as given.
-    pub(super) eye_f: [f64; 3],
+    pub(super) eye_f: filter::EyeF,
     /// Scratch space of the filter.
     pub(super) fa: Vec<filter::Iv>,
     pub(super) fb: Vec<filter::Iv>,
