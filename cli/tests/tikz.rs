@@ -13,6 +13,31 @@ const TETRA: &str = "mtllib t.mtl\no tetra\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n
 usemtl a\nf 1 3 2\nf 1 2 4\nusemtl b\nf 1 4 3\nf 2 3 4\n";
 const MTL: &str = "newmtl a\nKd 0.8 0.2 0.1\nillum 0\nnewmtl b\nKd 0.1 0.3 0.9\nd 0.5\nillum 0\n";
 
+/// The tetrahedron with a dashed polyline through it ending in an arrow, scatter points
+/// and a label whose text holds LaTeX's special characters.
+const SCENE: &str = r##"[[mesh]]
+path = "t.obj"
+
+[[line]]
+points = [[-0.5, 0.2, 0.2], [0.3, 0.3, 0.3], [1.2, 0.4, 0.4]]
+color = [0.9, 0.1, 0.1]
+width = 1.5
+dash = [4.0, 2.0]
+head = true
+
+[[points]]
+positions = [[0.0, 0.0, 1.2], [0.2, 0.2, -0.5], [1.0, 1.0, 1.0]]
+marker = "circle"
+size = 6.0
+
+[[label]]
+at = [1.0, 0.0, 0.0]
+text = "50% of x_1 & {y} #2 ~ ^"
+anchor = "south-west"
+offset = [2.0, -2.0]
+size = 9.0
+"##;
+
 /// Checks the structure every TikZ file from limn has: one picture, colours defined
 /// before use, every drawing command ended, brackets balanced.
 fn check_structure(text: &str) {
@@ -25,9 +50,14 @@ fn check_structure(text: &str) {
             assert!(defined.insert(name.to_string()), "{name} defined twice");
             continue;
         }
-        for cmd in ["\\fill[", "\\filldraw[", "\\draw["] {
+        for cmd in ["\\fill[", "\\filldraw[", "\\draw[", "\\node["] {
             if let Some(rest) = line.strip_prefix(cmd) {
-                let colour = rest.split([',', ']']).next().unwrap();
+                let options = &rest[..rest.find(']').unwrap()];
+                // The colour is the first option, or a node's `text=`.
+                let colour = options
+                    .split(',')
+                    .find_map(|o| o.strip_prefix("text="))
+                    .unwrap_or_else(|| options.split(',').next().unwrap());
                 assert!(
                     defined.contains(colour),
                     "{colour} used before it is defined"
@@ -76,6 +106,27 @@ fn tikz_by_extension_flag_and_standalone() {
     let doc = std::fs::read_to_string(dir.path().join("t.tex")).unwrap();
     check_structure(&doc);
     assert!(doc.starts_with("\\documentclass[tikz]{standalone}\n\\begin{document}\n"));
+}
+
+#[test]
+fn lines_points_and_labels_are_tikz_commands() {
+    let dir = tempdir();
+    put(dir.path(), "t.obj", TETRA);
+    put(dir.path(), "t.mtl", MTL);
+    put(dir.path(), "s.toml", SCENE);
+    let run = limn(dir.path(), &["render", "s.toml", "-o", "s.tikz", "-q"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let text = std::fs::read_to_string(dir.path().join("s.tikz")).unwrap();
+    check_structure(&text);
+    assert!(
+        text.contains("line cap=butt,dash pattern=on 4bp off 2bp"),
+        "{text}"
+    );
+    assert!(text.contains(" circle[radius=3];"), "{text}");
+    assert!(
+        text.contains("{50\\% of x\\_1 \\& \\{y\\} \\#2 \\textasciitilde{} \\textasciicircum{}};"),
+        "{text}"
+    );
 }
 
 #[test]

@@ -11,8 +11,16 @@
 //! % object: name                                        (one per run of the same object)
 //! \fill[limn0] (10,10) -- (90,10) -- (50,80) -- cycle;
 //! \draw[limn1,line width=1] (10,10) -- (90,10);         (outline of the path above)
+//! \draw[limn2,line width=1.5bp,line cap=butt,dash pattern=on 4bp off 2bp] (1,2) -- (3,4);
+//! \fill[limn2] (20,20) circle[radius=2];                (a dot marker)
+//! \node[anchor=south west,inner sep=0pt,text=limn3,font=…] at (72,67) {text};
 //! \end{tikzpicture}
 //! ```
+//!
+//! Marks (line pieces, markers, arrow heads, labels) are painted at their place among
+//! the fills, as in every format. A label is a node placed by its anchor, so LaTeX
+//! typesets it in the document's font at the label's size; its text is escaped so that
+//! it prints as given (`%`, `_`, `&`, `{`, `}`, `#`, `$`, `\`, `~`, `^`, `<`, `>`, `|`).
 //!
 //! Coordinates are the picture's pixel coordinates, written as they are: the picture's
 //! options make one unit one PostScript point (`bp`, the unit of PDF) and turn y down, so
@@ -35,12 +43,14 @@
 //! With [`TikzOptions::standalone`] the picture is wrapped in a document of the
 //! `standalone` class, which `pdflatex` or `lualatex` compiles as it is.
 
+use std::cell::RefCell;
 use std::collections::HashMap;
 use std::io::Write;
 
+use super::marks::{paint_mark, MarkSink};
 use super::number::{alpha_milli, push_milli, push_num, push_uint, rgb_u8, Sink};
-use super::runs::{check, reversals, walk, Frag};
-use super::{PaintError, PaintStats, Painter, Picture};
+use super::runs::{check, reversals, walk_with_marks, Frag};
+use super::{Label, LabelAnchor, Mark, PaintError, PaintStats, Painter, Picture};
 
 /// The largest page side, in pixels, that TikZ output accepts: three times it (the guard
 /// box) stays below TeX's largest length.
@@ -164,7 +174,7 @@ impl Painter for TikzPainter {
         check_tex_limits(picture, checked.outline.map_or(0.0, |o| o.width))?;
         let d = self.options.decimals;
         let mut sink = Sink::new(out);
-        let mut stats = PaintStats::default();
+        let stats = PaintStats::default();
         let mut palette = Palette::default();
         let seams = if picture.seams.is_finite() && picture.seams > 0.0 {
             picture.seams.min(MAX_TIKZ_STROKE)
@@ -216,15 +226,18 @@ impl Painter for TikzPainter {
                 o.width,
             )
         });
-        let mut object: Option<u32> = None;
-        let counts = walk(picture, &checked.guard, style_key, |run, &(rgb, alpha)| {
-            let b = &mut sink.buf;
-            let o = run[0].src.object;
-            if object != Some(o) {
-                push_object_comment(b, picture.objects.get(o as usize));
-                object = Some(o);
-            }
-            let id = palette.name(b, rgb);
+        let state = RefCell::new(State {
+            sink,
+            stats,
+            palette,
+            object: None,
+        });
+        let on_run = |run: &[Frag<'_>], &(rgb, alpha): &([u8; 3], u16)| {
+            let mut st = state.borrow_mut();
+            let st = &mut *st;
+            st.enter(picture, run[0].src.object);
+            let b = &mut st.sink.buf;
+            let id = st.palette.name(b, rgb);
             let stroked = seams > 0.0 && alpha >= 1000;
             let mut points = 0;
             let mut open = false;
@@ -250,12 +263,12 @@ impl Painter for TikzPainter {
                 points += f.points.len();
             }
             b.extend_from_slice(b";\n");
-            stats.paths += 1;
-            stats.approximated += run.iter().filter(|f| f.colors.is_some()).count();
+            st.stats.paths += 1;
+            st.stats.approximated += run.iter().filter(|f| f.colors.is_some()).count();
 
             if let Some((orgb, oalpha, owidth)) = outline {
                 if run.iter().any(Frag::has_outline) {
-                    let oid = palette.name(b, orgb);
+                    let oid = st.palette.name(b, orgb);
                     b.extend_from_slice(b"\\draw[");
                     push_color_name(b, oid);
                     opacity_option(b, b"draw opacity", oalpha);
@@ -269,20 +282,58 @@ impl Painter for TikzPainter {
                         push_outline(b, f, d);
                     }
                     b.extend_from_slice(b";\n");
-                    stats.strokes += 1;
+                    st.stats.strokes += 1;
                 }
             }
-            sink.maybe_flush()?;
+            st.sink.maybe_flush()?;
             Ok(())
-        })?;
+        };
+        let on_mark = |m: &Mark| {
+            let mut st = state.borrow_mut();
+            let st = &mut *st;
+            st.enter(picture, m.object);
+            let mut marks = TikzMarks {
+                b: &mut st.sink.buf,
+                palette: &mut st.palette,
+                d,
+            };
+            paint_mark(m, &checked.guard, &mut marks, &mut st.stats)?;
+            st.sink.maybe_flush()?;
+            Ok(())
+        };
+        let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
+        let State {
+            mut sink,
+            mut stats,
+            ..
+        } = state.into_inner();
         sink.buf.extend_from_slice(b"\\end{tikzpicture}\n");
         if self.options.standalone {
             sink.buf.extend_from_slice(b"\\end{document}\n");
         }
-        stats.skipped = counts.skipped;
-        stats.clipped = counts.clipped;
+        stats.skipped += counts.skipped;
+        stats.clipped += counts.clipped;
         stats.bytes = sink.finish()?;
         Ok(stats)
+    }
+}
+
+/// What the closures of [`TikzPainter::paint`] share.
+struct State<'w> {
+    sink: Sink<'w>,
+    stats: PaintStats,
+    palette: Palette,
+    /// The object of the last thing written.
+    object: Option<u32>,
+}
+
+impl State<'_> {
+    /// Writes the object comment when `object` differs from the last one.
+    fn enter(&mut self, picture: &Picture, object: u32) {
+        if self.object != Some(object) {
+            push_object_comment(&mut self.sink.buf, picture.objects.get(object as usize));
+            self.object = Some(object);
+        }
     }
 }
 
@@ -313,6 +364,178 @@ fn push_outline(b: &mut Vec<u8>, f: &Frag<'_>, d: u8) {
             b.extend_from_slice(b" -- cycle");
         }
     });
+}
+
+/// Marks as TikZ commands.
+struct TikzMarks<'b> {
+    b: &'b mut Vec<u8>,
+    palette: &'b mut Palette,
+    d: u8,
+}
+
+impl TikzMarks<'_> {
+    /// `[limnK,opacity option` for a paint of `color` (the caller closes the bracket).
+    fn open(&mut self, command: &[u8], color: [f64; 4], opacity: &[u8]) {
+        let id = self
+            .palette
+            .name(self.b, rgb_u8([color[0], color[1], color[2]]));
+        self.b.extend_from_slice(command);
+        self.b.push(b'[');
+        push_color_name(self.b, id);
+        opacity_option(self.b, opacity, alpha_milli(color[3]));
+    }
+
+    fn line_width(&mut self, width: f64) {
+        self.b.extend_from_slice(b",line width=");
+        push_num(self.b, width, self.d);
+        self.b.extend_from_slice(b"bp");
+    }
+}
+
+/// The TikZ name of a label anchor.
+fn anchor_name(a: LabelAnchor) -> &'static [u8] {
+    match a {
+        LabelAnchor::Center => b"center",
+        LabelAnchor::North => b"north",
+        LabelAnchor::South => b"south",
+        LabelAnchor::East => b"east",
+        LabelAnchor::West => b"west",
+        LabelAnchor::NorthEast => b"north east",
+        LabelAnchor::NorthWest => b"north west",
+        LabelAnchor::SouthEast => b"south east",
+        LabelAnchor::SouthWest => b"south west",
+    }
+}
+
+/// Appends `text` so that LaTeX prints it as given: its special characters escaped,
+/// control characters as spaces.
+fn push_latex_text(b: &mut Vec<u8>, text: &str) {
+    for c in text.chars() {
+        let escaped: &[u8] = match c {
+            '\\' => b"\\textbackslash{}",
+            '#' => b"\\#",
+            '$' => b"\\$",
+            '%' => b"\\%",
+            '&' => b"\\&",
+            '_' => b"\\_",
+            '{' => b"\\{",
+            '}' => b"\\}",
+            '^' => b"\\textasciicircum{}",
+            '~' => b"\\textasciitilde{}",
+            '<' => b"\\textless{}",
+            '>' => b"\\textgreater{}",
+            '|' => b"\\textbar{}",
+            c if c.is_control() => b" ",
+            c => {
+                let mut utf8 = [0; 4];
+                b.extend_from_slice(c.encode_utf8(&mut utf8).as_bytes());
+                continue;
+            }
+        };
+        b.extend_from_slice(escaped);
+    }
+}
+
+/// Labels become nodes at their anchor, so that LaTeX typesets the text in the
+/// document's font at the label's size: the anchor point is the one the other formats
+/// use, the box is LaTeX's (not the Helvetica box they place).
+impl MarkSink for TikzMarks<'_> {
+    fn polylines(
+        &mut self,
+        lines: &[Vec<[f64; 2]>],
+        closed: bool,
+        color: [f64; 4],
+        width: f64,
+        dash: &[f64],
+        offset: f64,
+    ) -> Result<(), PaintError> {
+        self.open(b"\\draw", color, b"draw opacity");
+        self.line_width(width);
+        self.b.extend_from_slice(b",line cap=butt");
+        if !dash.is_empty() {
+            self.b.extend_from_slice(b",dash pattern=");
+            for (i, &v) in dash.iter().enumerate() {
+                self.b
+                    .extend_from_slice(if i % 2 == 0 { b"on " } else { b"off " });
+                push_num(self.b, v, self.d);
+                self.b
+                    .extend_from_slice(if i + 1 < dash.len() { b"bp " } else { b"bp" });
+            }
+            if offset != 0.0 {
+                self.b.extend_from_slice(b",dash phase=");
+                push_num(self.b, offset, self.d);
+                self.b.extend_from_slice(b"bp");
+            }
+        }
+        self.b.push(b']');
+        for line in lines {
+            for (k, &p) in line.iter().enumerate() {
+                self.b
+                    .extend_from_slice(if k == 0 { b" " } else { b" -- " });
+                push_point(self.b, p, self.d);
+            }
+            if closed {
+                self.b.extend_from_slice(b" -- cycle");
+            }
+        }
+        self.b.extend_from_slice(b";\n");
+        Ok(())
+    }
+
+    fn circle(
+        &mut self,
+        c: [f64; 2],
+        r: f64,
+        color: [f64; 4],
+        stroke: Option<f64>,
+    ) -> Result<(), PaintError> {
+        match stroke {
+            None => self.open(b"\\fill", color, b"fill opacity"),
+            Some(w) => {
+                self.open(b"\\draw", color, b"draw opacity");
+                self.line_width(w);
+            }
+        }
+        self.b.extend_from_slice(b"] ");
+        push_point(self.b, c, self.d);
+        self.b.extend_from_slice(b" circle[radius=");
+        push_num(self.b, r, self.d);
+        self.b.extend_from_slice(b"];\n");
+        Ok(())
+    }
+
+    fn triangle(&mut self, points: [[f64; 2]; 3], color: [f64; 4]) -> Result<(), PaintError> {
+        self.open(b"\\fill", color, b"fill opacity");
+        self.b.push(b']');
+        for p in points {
+            self.b.push(b' ');
+            push_point(self.b, p, self.d);
+            self.b.extend_from_slice(b" --");
+        }
+        self.b.extend_from_slice(b" cycle;\n");
+        Ok(())
+    }
+
+    fn text(&mut self, _origin: [f64; 2], label: &Label) -> Result<bool, PaintError> {
+        let c = label.color;
+        let id = self.palette.name(self.b, rgb_u8([c[0], c[1], c[2]]));
+        self.b.extend_from_slice(b"\\node[anchor=");
+        self.b.extend_from_slice(anchor_name(label.anchor));
+        self.b.extend_from_slice(b",inner sep=0pt,text=");
+        push_color_name(self.b, id);
+        opacity_option(self.b, b"text opacity", alpha_milli(c[3]));
+        self.b.extend_from_slice(b",font=\\fontsize{");
+        push_num(self.b, label.size, self.d);
+        self.b.extend_from_slice(b"bp}{");
+        push_num(self.b, 1.2 * label.size, self.d);
+        self.b.extend_from_slice(b"bp}\\selectfont] at ");
+        let at = [label.at[0] + label.offset[0], label.at[1] + label.offset[1]];
+        push_point(self.b, at, self.d);
+        self.b.extend_from_slice(b" {");
+        push_latex_text(self.b, &label.text);
+        self.b.extend_from_slice(b"};\n");
+        Ok(false)
+    }
 }
 
 #[cfg(test)]
@@ -446,5 +669,101 @@ mod tests {
         ));
         let (_, text) = paint(&picture, TikzOptions::default());
         assert!(text.contains("% object: two lines\\par\n"));
+    }
+
+    fn marked_picture() -> Picture {
+        use crate::{ArrowHead, LinePiece, LineStyle, MarkKind, Marker, MarkerShape};
+        let mut picture = Picture::new(100, 100);
+        picture.objects = vec!["faces".into(), "curve".into(), "dots".into(), "note".into()];
+        for face in 0..2 {
+            let mut f = PaintFragment::new(
+                vec![[0.0, 0.0], [50.0, 0.0], [0.0, 50.0]],
+                [0.5, 0.5, 0.5, 1.0],
+            );
+            f.face = face;
+            picture.fragments.push(f);
+        }
+        let line = LinePiece {
+            points: vec![[1.0, 2.0], [30.0, 40.0], [60.0, 40.0]],
+            style: LineStyle {
+                color: [1.0, 0.0, 0.0, 0.5],
+                width: 1.5,
+                dash: vec![4.0, 2.0],
+            },
+            dash_offset: 3.0,
+            line: 0,
+        };
+        picture.marks = vec![
+            Mark {
+                before: 1,
+                object: 1,
+                kind: MarkKind::Line(line),
+            },
+            Mark {
+                before: 2,
+                object: 2,
+                kind: MarkKind::Marker(Marker {
+                    at: [20.0, 20.0],
+                    shape: MarkerShape::Dot,
+                    size: 4.0,
+                    color: [0.0, 0.0, 1.0, 1.0],
+                    stroke: 1.0,
+                }),
+            },
+            Mark {
+                before: 2,
+                object: 3,
+                kind: MarkKind::Label(Label {
+                    at: [70.0, 70.0],
+                    offset: [2.0, -3.0],
+                    anchor: LabelAnchor::SouthWest,
+                    text: "50% of x_1 & {y} \\ #2".into(),
+                    size: 9.0,
+                    color: [0.0, 0.0, 0.0, 1.0],
+                }),
+            },
+            Mark {
+                before: 2,
+                object: 1,
+                kind: MarkKind::Head(ArrowHead {
+                    points: [[60.0, 40.0], [55.0, 37.0], [55.0, 43.0]],
+                    color: [1.0, 0.0, 0.0, 1.0],
+                }),
+            },
+        ];
+        picture
+    }
+
+    #[test]
+    fn marks_are_painted_at_their_place_among_the_fills() {
+        let (stats, text) = paint(&marked_picture(), TikzOptions::default());
+        assert_eq!(
+            (
+                stats.paths,
+                stats.lines,
+                stats.markers,
+                stats.labels,
+                stats.heads
+            ),
+            (2, 1, 1, 1, 1)
+        );
+        let first_fill = text.find("\\fill[limn0]").unwrap();
+        let line = text
+            .find("\\draw[limn1,draw opacity=0.5,line width=1.5bp,line cap=butt,dash pattern=on 4bp off 2bp,dash phase=3bp] (1,2) -- (30,40) -- (60,40);")
+            .unwrap();
+        let second_fill = text[first_fill + 1..].find("\\fill[limn0]").unwrap() + first_fill + 1;
+        assert!(first_fill < line && line < second_fill, "{text}");
+        assert!(
+            text.contains("\\fill[limn2] (20,20) circle[radius=2];"),
+            "{text}"
+        );
+        assert!(text.contains(
+            "\\node[anchor=south west,inner sep=0pt,text=limn3,font=\\fontsize{9bp}{10.8bp}\\selectfont] at (72,67) {50\\% of x\\_1 \\& \\{y\\} \\textbackslash{} \\#2};"
+        ), "{text}");
+        assert!(
+            text.contains("\\fill[limn1] (60,40) -- (55,37) -- (55,43) -- cycle;"),
+            "{text}"
+        );
+        assert!(text.contains("% object: curve\n") && text.contains("% object: note\n"));
     }
 }
