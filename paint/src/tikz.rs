@@ -50,7 +50,7 @@ use std::io::Write;
 use super::marks::{paint_mark, MarkSink};
 use super::number::{alpha_milli, push_milli, push_num, push_uint, rgb_u8, Sink};
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{Label, LabelAnchor, Mark, PaintError, PaintStats, Painter, Picture};
+use super::{Label, Mark, PaintError, PaintStats, Painter, Picture};
 
 /// The largest page side, in pixels, that TikZ output accepts: three times it (the guard
 /// box) stays below TeX's largest length.
@@ -392,21 +392,6 @@ impl TikzMarks<'_> {
     }
 }
 
-/// The TikZ name of a label anchor.
-fn anchor_name(a: LabelAnchor) -> &'static [u8] {
-    match a {
-        LabelAnchor::Center => b"center",
-        LabelAnchor::North => b"north",
-        LabelAnchor::South => b"south",
-        LabelAnchor::East => b"east",
-        LabelAnchor::West => b"west",
-        LabelAnchor::NorthEast => b"north east",
-        LabelAnchor::NorthWest => b"north west",
-        LabelAnchor::SouthEast => b"south east",
-        LabelAnchor::SouthWest => b"south west",
-    }
-}
-
 /// Appends `text` so that LaTeX prints it as given: its special characters escaped,
 /// control characters as spaces.
 fn push_latex_text(b: &mut Vec<u8>, text: &str) {
@@ -520,7 +505,7 @@ impl MarkSink for TikzMarks<'_> {
         let c = label.color;
         let id = self.palette.name(self.b, rgb_u8([c[0], c[1], c[2]]));
         self.b.extend_from_slice(b"\\node[anchor=");
-        self.b.extend_from_slice(anchor_name(label.anchor));
+        self.b.extend_from_slice(label.anchor.name().as_bytes());
         self.b.extend_from_slice(b",inner sep=0pt,text=");
         push_color_name(self.b, id);
         opacity_option(self.b, b"text opacity", alpha_milli(c[3]));
@@ -716,7 +701,7 @@ mod tests {
                 kind: MarkKind::Label(Label {
                     at: [70.0, 70.0],
                     offset: [2.0, -3.0],
-                    anchor: LabelAnchor::SouthWest,
+                    anchor: crate::LabelAnchor::SouthWest,
                     text: "50% of x_1 & {y} \\ #2".into(),
                     size: 9.0,
                     color: [0.0, 0.0, 0.0, 1.0],
