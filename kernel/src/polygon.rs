@@ -23,9 +23,13 @@ pub(crate) struct Corner {
     pub(crate) original: bool,
 }
 
-/// Rounds an f64 error bound up to f32.
+/// Rounds an f64 error bound up to f32; a NaN bound (no bound) becomes infinite, so that
+/// the maxima taken over corners cannot drop it.
 #[inline]
 pub(crate) fn err32(e: f64) -> f32 {
+    if e.is_nan() {
+        return f32::INFINITY;
+    }
     let f = e as f32;
     if (f as f64) < e {
         f.next_up()
@@ -464,5 +468,7 @@ mod tests {
             assert!(err32(e) as f64 >= e);
         }
         assert_eq!(err32(0.0), 0.0);
+        assert_eq!(err32(f64::NAN), f32::INFINITY);
+        assert_eq!(err32(1e300), f32::INFINITY);
     }
 }

@@ -252,13 +252,16 @@ pub(crate) fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3
         let data = (x.e * SAFETY / dabs + q.abs() * t + ETA) / one_minus_t;
         let e = (data + U * q.abs() + ETA) * SAFETY;
         pos[j] = q;
-        err = err.max(e);
+        // An infinite coefficient bound times a zero value gives a NaN bound, which means
+        // no bound at all; `f64::max` would drop it and keep the other coordinates'.
+        err = if e.is_nan() {
+            f64::INFINITY
+        } else {
+            err.max(e)
+        };
     }
     if pos.iter().any(|v| !v.is_finite()) {
         return None;
-    }
-    if err.is_nan() {
-        err = f64::INFINITY;
     }
     Some((pos, err))
 }

@@ -243,3 +243,32 @@ fn split_through_vertices_keeps_both_pieces_proper() {
         PolygonSide::CoplanarOpposite
     );
 }
+
+/// A raw triangle with one corner near 1e161 and the others at the origin's scale, cut
+/// through its interior: the support plane's offset bound overflows, and the cut vertices
+/// must still be told apart from input points (they were taken as exact, off the support
+/// plane).
+#[test]
+fn split_of_a_huge_triangle_keeps_its_cut_vertices_implicit() {
+    let k = kernel();
+    let tri = [
+        [-8.960959184079691e161, 0.6858768669052598, 0.0],
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, -0.27887452517226574],
+    ];
+    let polys = k.face_polygons(&tri.map(glam::DVec3::from_array)).unwrap();
+    assert_eq!(polys.len(), 1);
+    let poly = &polys[0];
+    let h = make_cut(&k, poly, &Cut::ThroughInterior([0, 0, 1], [0, 1, 0])).unwrap();
+    let (f, b) = checked_split(&k, poly, &h);
+    let (f, b) = (f.unwrap(), b.unwrap());
+    assert_eq!((f.len(), b.len()), (3, 4));
+    for p in [&f, &b] {
+        for i in 0..p.len() {
+            let (pos, err) = p.vertex_approx(i);
+            if !tri.contains(&pos) {
+                assert!(err > 0.0, "cut vertex {pos:?} claims to be exact");
+            }
+        }
+    }
+}

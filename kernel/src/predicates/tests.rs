@@ -330,6 +330,9 @@ fn approximate_encloses_the_exact_intersection() {
         Style::Spread(-200, 120),
         Style::Spread(200, 120),
         Style::Scaled(-1000),
+        // Magnitudes from 1e-289 to 1e162 mixed with zeros: coefficient bounds overflow
+        // while values stay finite (an infinite bound times a zero is NaN).
+        Style::Spread(540, 1500),
     ] {
         let mut n = 0;
         let mut tries = 0;
@@ -371,4 +374,38 @@ fn approximate_encloses_the_exact_intersection() {
         counts.push(n);
     }
     assert!(counts.iter().all(|&n| n == 1500), "{counts:?}");
+}
+
+/// The split of a raw triangle with corners near 1e161 and 0 by a plane through its
+/// interior: the support plane's offset bound overflows, and the NaN bound it gives a
+/// cut vertex must read as no bound (not as the vertex exactly).
+#[test]
+fn approximate_reports_overflowed_bounds_as_infinite() {
+    let tri = [
+        [-8.960959184079691e161, 0.6858768669052598, 0.0],
+        [0.0, 0.0, 0.0],
+        [0.0, 0.0, -0.27887452517226574],
+    ];
+    let support = Plane::through(tri[0], tri[1], tri[2]).unwrap();
+    assert!(support.error_bounds().1.is_infinite());
+    let edge = Plane::edge(tri[0], tri[1], 1, false);
+    let c = -2.9869863946932303e161;
+    let cut = Plane::through(
+        [c, 0.2286256223017533, -0.09295817505742192],
+        [c, 0.2286256223017533, -0.09295814525509953],
+        [c, 0.22862565210407568, -0.09295817505742192],
+    )
+    .unwrap();
+    let (pos, err) = approximate(&support, &edge, &cut).expect("the planes meet in a point");
+    let (x, d) = homogeneous_dyadic(&support, &edge, &cut);
+    assert!(!d.is_zero());
+    for j in 0..3 {
+        assert!(
+            err.is_infinite() || within(&x[j], &d, pos[j], err),
+            "coordinate {j}: {} ± {err} misses the exact vertex",
+            pos[j]
+        );
+    }
+    // The vertex is not representable, so no bound may claim it exactly.
+    assert!(err > 0.0);
 }
