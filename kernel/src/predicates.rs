@@ -132,7 +132,8 @@ impl PlaneF {
 /// sums and products of non-negative terms, each rounded to nearest, so over the few
 /// levels of Cramer's rule they fall short of the true bound by a relative `O(30u)` at
 /// most; the result is multiplied by `1 + 2⁻³⁰`, far more than that. An overflow makes a
-/// value or a bound infinite or NaN, which [`approximate`] reports as no approximation.
+/// value or a bound infinite or NaN (an infinite bound times a zero value), which
+/// [`approximate`] reports as no approximation or as an infinite bound.
 #[derive(Debug, Clone, Copy)]
 struct Mr {
     v: f64,
@@ -214,7 +215,12 @@ fn plane_mr(p: &Plane) -> ([Mr; 3], Mr) {
 /// An approximation of the intersection of three planes with a bound on the error of
 /// every coordinate, from Cramer's rule with a priori error bounds ([`Mr`]). `None` when
 /// the determinant's bound does not keep it at least half its magnitude away from zero
-/// (the planes are, or are nearly, parallel to a common line) or something overflows.
+/// (the planes are, or are nearly, parallel to a common line) or a coordinate or the
+/// determinant overflows. A coordinate's bound that overflows, or is NaN because a
+/// plane's coefficient bound overflowed (an infinite bound times a zero value), makes the
+/// returned bound infinite: the filters then leave the vertex to exact evaluation, and
+/// the position is only a hint. The bound is never 0, which would claim the position is
+/// the vertex exactly.
 ///
 /// With `X = X̃ ± e_X`, `D = D̃ ± e_D` and `t = e_D / |D̃| ≤ ½`, each coordinate obeys
 /// `|X/D − X̃/D̃| ≤ (e_X/|D̃| + |X̃/D̃|·t) / (1 − t)`; the quotient's own rounding adds
