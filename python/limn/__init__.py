@@ -4,7 +4,8 @@
 >>> v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], float)
 >>> stats = limn.render_mesh(v, [[0, 1, 2]], "tri.svg")   # doctest: +SKIP
 
-``render_mesh`` draws one mesh; ``Scene`` holds several meshes, lights and a camera
+``render_mesh`` draws one mesh; ``Scene`` holds several meshes, lines, point markers,
+labels, lights and a camera
 (perspective, orthographic, or a 4x4 view-projection matrix); ``limn.matplotlib.savefig``
 writes a matplotlib figure whose 3D axes are ordered exactly by limn.
 """
@@ -45,6 +46,13 @@ def _colors(colors: Any) -> Optional[np.ndarray]:
     if c.ndim != 2 or c.shape[1] not in (3, 4):
         raise ValueError(f"colors must have shape (M, 3) or (M, 4), not {c.shape}")
     return c
+
+
+def _points(what: str, points: Any) -> np.ndarray:
+    p = np.ascontiguousarray(points, dtype=np.float64)
+    if p.ndim != 2 or p.shape[1] != 3:
+        raise ValueError(f"{what} must have shape (N, 3), not {p.shape}")
+    return p
 
 
 def render_mesh(
@@ -128,6 +136,108 @@ class Scene:
             _vertices(vertices), _faces(faces), colors=_colors(colors), opacity=opacity, name=name
         )
 
+    def add_line(
+        self,
+        points: Any,
+        *,
+        color: Sequence[float] = (0.0, 0.0, 0.0),
+        width: float = 1.0,
+        dash: Optional[Sequence[float]] = None,
+        head: bool = False,
+        name: str = "line",
+    ) -> int:
+        """Add a polyline through ``points`` ``(N, 3)`` (N >= 2); return its index.
+
+        It is drawn only where visible: hidden exactly by the faces in front of it, drawn
+        over a face whose plane holds it (a wireframe on its own surface shows).
+        color: (r, g, b) or (r, g, b, a) in 0..1; width: pixels; dash: lengths in pixels
+        (dash, gap, ...), ``None`` for solid; head: an arrow head at the last point when
+        that point is visible. Raises ``ValueError`` (and leaves the scene unchanged) on
+        a bad shape, a non-finite point, a colour outside 0..1 or a width that is not
+        positive.
+        """
+        p = _points("points", points)
+        return self._s.add_line(
+            p,
+            [float(c) for c in color],
+            float(width),
+            [] if dash is None else [float(d) for d in dash],
+            bool(head),
+            name=name,
+        )
+
+    def add_points(
+        self,
+        positions: Any,
+        *,
+        marker: str = "dot",
+        size: Any = 4.0,
+        color: Any = (0.0, 0.0, 0.0),
+        name: str = "points",
+    ) -> int:
+        """Add point markers at ``positions`` ``(N, 3)``; return the index of the first.
+
+        A marker is drawn whole where its anchor is visible and not at all where a face
+        hides it. marker: ``dot``, ``circle``, ``square``, ``triangle``, ``cross`` or
+        ``plus``; size: diameter in pixels, one number or one per point ``(N,)``; color:
+        one (r, g, b[, a]) or one per point ``(N, 3)`` / ``(N, 4)``, in 0..1. Raises
+        ``ValueError`` (scene unchanged) on bad shapes, non-finite values or an unknown
+        marker.
+        """
+        p = _points("positions", positions)
+        n = p.shape[0]
+        sizes = np.asarray(size, dtype=np.float64)
+        if sizes.ndim == 0:
+            sizes = np.full(n, float(sizes))
+        colors = np.asarray(color, dtype=np.float64)
+        if colors.ndim == 1:
+            colors = np.broadcast_to(colors, (n, colors.shape[0]))
+        if sizes.ndim != 1:
+            raise ValueError(f"size must be one number or shape ({n},), not {sizes.shape}")
+        if colors.ndim != 2:
+            raise ValueError(f"color must be one colour or shape ({n}, 3|4), not {colors.shape}")
+        return self._s.add_points(
+            p,
+            str(marker),
+            np.ascontiguousarray(sizes),
+            np.ascontiguousarray(colors),
+            name=name,
+        )
+
+    def add_label(
+        self,
+        at: Sequence[float],
+        text: str,
+        *,
+        size: float = 10.0,
+        color: Sequence[float] = (0.0, 0.0, 0.0),
+        anchor: str = "center",
+        offset: Tuple[float, float] = (0.0, 0.0),
+        name: str = "label",
+    ) -> int:
+        """Add a one-line text label at the 3D point ``at``; return its index.
+
+        Shown where ``at`` is visible. size: font size in points (pixels of the picture);
+        anchor: which point of the text box sits at the projected point plus ``offset``
+        (TikZ names: ``center``, ``north``, ``south east``, ...; ``south`` puts the text
+        above the point); offset: pixels, x right, y down. Raises ``ValueError`` on a
+        non-finite position, a text with a line break or an unknown anchor.
+        """
+        a = tuple(float(x) for x in at)
+        if len(a) != 3:
+            raise ValueError(f"at must be a 3D point, not {at!r}")
+        o = tuple(float(x) for x in offset)
+        if len(o) != 2:
+            raise ValueError(f"offset must be (x, y), not {offset!r}")
+        return self._s.add_label(
+            a, str(text), float(size), [float(c) for c in color], str(anchor), o, name=name
+        )
+
+    @property
+    def mark_counts(self) -> Tuple[int, int, int]:
+        """Numbers of lines, point markers and labels added so far."""
+        return self._s.mark_counts
+
     def add_light(
         self,
         kind: str,
@@ -209,3 +319,16 @@ class Scene:
         """The painted polygons, back to front: ``(face, points (n, 2) in pixels with y
         down, fill (r, g, b, a), original_edges)``; seam flaps included."""
         return self._s.paint(sort=sort, arith=arith, seams=seams)
+
+    def paint_with_marks(
+        self, *, sort: str = "adaptive", arith: str = "exact", seams: float = 0.5
+    ) -> Tuple[list, list]:
+        """``paint()``'s polygons and the visible lines, markers, labels and arrow heads
+        as dicts in paint order. Each has ``before`` (paint it before that polygon; the
+        polygons' count means after all) and ``kind``: ``"line"`` (``points (n, 2)``,
+        ``color``, ``width``, ``dash``, ``dash_offset``), ``"marker"`` (``at``,
+        ``shape``, ``size``, ``color``, ``stroke``), ``"label"`` (``at``, ``offset``,
+        ``anchor``, ``text``, ``size``, ``color``) or ``"head"`` (``points (3, 2)``,
+        ``color``); ``index`` is the input line, point (over all ``add_points`` calls) or
+        label it shows, ``None`` for heads. Pixels, y down."""
+        return self._s.paint_with_marks(sort=sort, arith=arith, seams=seams)

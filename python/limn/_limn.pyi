@@ -34,6 +34,34 @@ class Scene:
         opacity: Optional[float] = ...,
         name: str = ...,
     ) -> int: ...
+    mark_counts: Tuple[int, int, int]
+    def add_line(
+        self,
+        points: npt.NDArray[np.float64],
+        color: List[float],
+        width: float,
+        dash: List[float],
+        head: bool,
+        name: str = ...,
+    ) -> int: ...
+    def add_points(
+        self,
+        positions: npt.NDArray[np.float64],
+        marker: str,
+        sizes: npt.NDArray[np.float64],
+        colors: npt.NDArray[np.float64],
+        name: str = ...,
+    ) -> int: ...
+    def add_label(
+        self,
+        at: Tuple[float, float, float],
+        text: str,
+        size: float,
+        color: List[float],
+        anchor: str,
+        offset: Tuple[float, float],
+        name: str = ...,
+    ) -> int: ...
     def add_light(
         self,
         kind: str,
@@ -64,3 +92,9 @@ class Scene:
     def paint(
         self, sort: str = ..., arith: str = ..., seams: float = ...
     ) -> List[Tuple[int, npt.NDArray[np.float64], Tuple[float, float, float, float], List[bool]]]: ...
+    def paint_with_marks(
+        self, sort: str = ..., arith: str = ..., seams: float = ...
+    ) -> Tuple[
+        List[Tuple[int, npt.NDArray[np.float64], Tuple[float, float, float, float], List[bool]]],
+        List[Dict[str, Any]],
+    ]: ...

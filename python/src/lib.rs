@@ -9,6 +9,7 @@
 
 mod camera;
 mod errors;
+mod marks;
 mod mesh;
 mod render;
 mod scene;

@@ -5,8 +5,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use limn_depthsort::{order, Arith, OrderOptions, Ordered, SortMode};
-use limn_paint::{painter_for, picture, Format, PaintStats, Style};
+use limn_depthsort::{order_with_marks, Arith, OrderOptions, Ordered, SortMode};
+use limn_paint::{painter_for, picture_with_marks, Format, PaintStats, Style};
 use limn_scene::{Effects, Scene};
 use numpy::PyReadonlyArray2;
 use pyo3::prelude::*;
@@ -93,10 +93,12 @@ pub(crate) fn render_scene<'py>(
     let t0 = Instant::now();
     let format = format_of(path, format)?;
     let cam = spec.camera(scene)?;
-    let ordered = py.detach(|| order(scene, &cam, oo)).map_err(value_error)?;
+    let (ordered, marks) = py
+        .detach(|| order_with_marks(scene, &cam, oo))
+        .map_err(value_error)?;
     let t_order = ms(t0);
     let t1 = Instant::now();
-    let pic = picture(scene, &ordered, style);
+    let pic = picture_with_marks(scene, &ordered, &marks, style);
     let ps = write_atomic(path, |w| painter_for(format).paint(&pic, w))?;
     let t_write = ms(t1);
     stats_dict(py, scene, &ordered, oo, &ps, [t_load, t_order, t_write])

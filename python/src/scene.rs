@@ -1,13 +1,14 @@
 //! `limn.Scene`: several meshes, lights and a camera; render, check against a
 //! reference, or hand the painted polygons to another drawing system.
 
+use std::collections::{HashMap, VecDeque};
 use std::path::PathBuf;
 use std::time::Instant;
 
 use glam::DVec3;
 use limn_check::paint;
-use limn_depthsort::order;
-use limn_paint::{picture, Outline, Style};
+use limn_depthsort::order_with_marks;
+use limn_paint::{picture_with_marks, Mark, MarkKind, Outline, Style};
 use limn_scene::{Light, LightKind, Scene};
 use limn_zbuffer::{DepthFormat, Method};
 use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
@@ -24,6 +25,60 @@ use crate::render::{command_style, order_options, render_scene};
 pub(crate) struct PyScene {
     scene: Scene,
     camera: CameraSpec,
+}
+
+/// A painted polygon: face, points `(n, 2)` in pixels, fill RGBA, original edges.
+type Painted<'py> = (
+    u32,
+    Bound<'py, PyArray2<f64>>,
+    (f64, f64, f64, f64),
+    Vec<bool>,
+);
+
+/// Pixel points as an `(n, 2)` array.
+fn xy<'py>(py: Python<'py>, pts: &[[f64; 2]]) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let rows: Vec<Vec<f64>> = pts.iter().map(|p| p.to_vec()).collect();
+    PyArray2::from_vec2(py, &rows).map_err(value_error)
+}
+
+/// One painted mark as a dict (see `paint_with_marks`).
+fn mark_dict<'py>(py: Python<'py>, m: &Mark) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("before", m.before)?;
+    let rgba = |c: [f64; 4]| (c[0], c[1], c[2], c[3]);
+    match &m.kind {
+        MarkKind::Line(l) => {
+            d.set_item("kind", "line")?;
+            d.set_item("points", xy(py, &l.points)?)?;
+            d.set_item("color", rgba(l.style.color))?;
+            d.set_item("width", l.style.width)?;
+            d.set_item("dash", l.style.dash.clone())?;
+            d.set_item("dash_offset", l.dash_offset)?;
+        }
+        MarkKind::Marker(k) => {
+            d.set_item("kind", "marker")?;
+            d.set_item("at", (k.at[0], k.at[1]))?;
+            d.set_item("shape", k.shape.name())?;
+            d.set_item("size", k.size)?;
+            d.set_item("color", rgba(k.color))?;
+            d.set_item("stroke", k.stroke)?;
+        }
+        MarkKind::Label(l) => {
+            d.set_item("kind", "label")?;
+            d.set_item("at", (l.at[0], l.at[1]))?;
+            d.set_item("offset", (l.offset[0], l.offset[1]))?;
+            d.set_item("anchor", l.anchor.name())?;
+            d.set_item("text", l.text.clone())?;
+            d.set_item("size", l.size)?;
+            d.set_item("color", rgba(l.color))?;
+        }
+        MarkKind::Head(h) => {
+            d.set_item("kind", "head")?;
+            d.set_item("points", xy(py, &h.points)?)?;
+            d.set_item("color", rgba(h.color))?;
+        }
+    }
+    Ok(d)
 }
 
 /// One of the reference methods by name.
@@ -70,6 +125,70 @@ impl PyScene {
         name: &str,
     ) -> PyResult<u32> {
         add_mesh(&mut self.scene, name, &vertices, &faces, &colors, opacity)
+    }
+
+    /// Adds a polyline through `points` `(N, 3)`; returns its index.
+    #[pyo3(signature = (points, color, width, dash, head, name="line"))]
+    #[allow(clippy::too_many_arguments)]
+    fn add_line(
+        &mut self,
+        points: PyReadonlyArray2<'_, f64>,
+        color: Vec<f64>,
+        width: f64,
+        dash: Vec<f64>,
+        head: bool,
+        name: &str,
+    ) -> PyResult<u32> {
+        crate::marks::add_line(&mut self.scene, name, &points, &color, width, &dash, head)
+    }
+
+    /// Adds point markers at `positions` `(N, 3)`, one size `(N,)` and one colour
+    /// `(N, 3|4)` each; returns the index of the first.
+    #[pyo3(signature = (positions, marker, sizes, colors, name="points"))]
+    fn add_points(
+        &mut self,
+        positions: PyReadonlyArray2<'_, f64>,
+        marker: &str,
+        sizes: PyReadonlyArray1<'_, f64>,
+        colors: PyReadonlyArray2<'_, f64>,
+        name: &str,
+    ) -> PyResult<u32> {
+        crate::marks::add_points(&mut self.scene, name, &positions, marker, &sizes, &colors)
+    }
+
+    /// Adds a text label anchored at `at`; returns its index.
+    #[pyo3(signature = (at, text, size, color, anchor, offset, name="label"))]
+    #[allow(clippy::too_many_arguments)]
+    fn add_label(
+        &mut self,
+        at: (f64, f64, f64),
+        text: &str,
+        size: f64,
+        color: Vec<f64>,
+        anchor: &str,
+        offset: (f64, f64),
+        name: &str,
+    ) -> PyResult<u32> {
+        crate::marks::add_label(
+            &mut self.scene,
+            name,
+            at,
+            text,
+            size,
+            &color,
+            anchor,
+            offset,
+        )
+    }
+
+    /// Numbers of lines, point markers and labels.
+    #[getter]
+    fn mark_counts(&self) -> (usize, usize, usize) {
+        (
+            self.scene.lines.len(),
+            self.scene.points.len(),
+            self.scene.labels.len(),
+        )
     }
 
     /// Adds a light: `"ambient"`, `"directional"` (`vector` points towards the light),
@@ -247,43 +366,85 @@ impl PyScene {
     /// right, y down): a list of `(face, points (n, 2), fill (r, g, b, a), original
     /// edges)`, seam flaps `seams` pixels wide included.
     #[pyo3(signature = (sort="adaptive", arith="exact", seams=0.5))]
-    #[allow(clippy::type_complexity)]
     fn paint<'py>(
         &self,
         py: Python<'py>,
         sort: &str,
         arith: &str,
         seams: f64,
-    ) -> PyResult<
-        Vec<(
-            u32,
-            Bound<'py, PyArray2<f64>>,
-            (f64, f64, f64, f64),
-            Vec<bool>,
-        )>,
-    > {
+    ) -> PyResult<Vec<Painted<'py>>> {
+        Ok(self.paint_with_marks(py, sort, arith, seams)?.0)
+    }
+
+    /// [`PyScene::paint`] and the visible marks: a list of dicts with `before` (the
+    /// index of the polygon they are painted before; the polygons' count = after all)
+    /// and `kind` (`"line"`: `points (n, 2)`, `color`, `width`, `dash`, `dash_offset`;
+    /// `"marker"`: `at`, `shape`, `size`, `color`, `stroke`; `index`: the input line,
+    /// point or label (in the order they were added; `None` for heads); `"label"`: `at`, `offset`,
+    /// `anchor`, `text`, `size`, `color`; `"head"`: `points (3, 2)`, `color`).
+    #[pyo3(signature = (sort="adaptive", arith="exact", seams=0.5))]
+    fn paint_with_marks<'py>(
+        &self,
+        py: Python<'py>,
+        sort: &str,
+        arith: &str,
+        seams: f64,
+    ) -> PyResult<(Vec<Painted<'py>>, Vec<Bound<'py, PyDict>>)> {
         let oo = order_options(sort, arith)?;
         if !(seams >= 0.0 && seams.is_finite()) {
             return Err(value_error(format!("seams {seams} is not valid")));
         }
         self.scene.validate().map_err(value_error)?;
         let cam = self.camera.camera(&self.scene)?;
-        let ordered = py
-            .detach(|| order(&self.scene, &cam, &oo))
+        let (ordered, marks) = py
+            .detach(|| order_with_marks(&self.scene, &cam, &oo))
             .map_err(value_error)?;
         let style = Style {
             seams,
             ..command_style()
         };
-        let pic = picture(&self.scene, &ordered, &style);
-        pic.fragments
+        let pic = picture_with_marks(&self.scene, &ordered, &marks, &style);
+        let polys = pic
+            .fragments
             .into_iter()
             .map(|f| {
-                let pts: Vec<Vec<f64>> = f.points.iter().map(|p| p.to_vec()).collect();
-                let arr = PyArray2::from_vec2(py, &pts).map_err(value_error)?;
+                let arr = xy(py, &f.points)?;
                 let [r, g, b, a] = f.fill;
                 Ok((f.face, arr, (r, g, b, a), f.original_edges))
             })
-            .collect()
+            .collect::<PyResult<Vec<_>>>()?;
+        // The picture's markers and labels carry no input index: they come in the order
+        // of the visible anchors at each position (a stable sort), so the first unused
+        // anchor at the same pixel is theirs.
+        let queue = |v: &[limn_depthsort::VisibleAnchor]| {
+            let mut q: HashMap<[u64; 2], VecDeque<u32>> = HashMap::new();
+            for a in v {
+                q.entry(a.at.map(f64::to_bits))
+                    .or_default()
+                    .push_back(a.index);
+            }
+            q
+        };
+        let (mut points, mut labels) = (queue(&marks.points), queue(&marks.labels));
+        let marks = pic
+            .marks
+            .iter()
+            .map(|m| {
+                let index = match &m.kind {
+                    MarkKind::Line(l) => Some(l.line),
+                    MarkKind::Marker(k) => points
+                        .get_mut(&k.at.map(f64::to_bits))
+                        .and_then(VecDeque::pop_front),
+                    MarkKind::Label(l) => labels
+                        .get_mut(&l.at.map(f64::to_bits))
+                        .and_then(VecDeque::pop_front),
+                    MarkKind::Head(_) => None,
+                };
+                let d = mark_dict(py, m)?;
+                d.set_item("index", index)?;
+                Ok(d)
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        Ok((polys, marks))
     }
 }

@@ -285,3 +285,105 @@ def test_figures_without_3d_axes_are_saved_unchanged(tmp_path):
     lm.savefig(fig, tmp_path / "b.svg", metadata={"Date": None})
     assert (tmp_path / "a.svg").read_bytes() == (tmp_path / "b.svg").read_bytes()
     plt.close(fig)
+
+
+# --- lines, points and labels ------------------------------------------------------
+
+
+def square_with_marks():
+    """A unit square in the plane z = 0 seen from +z, a line passing behind it and in
+    front of it, one point behind its middle and one in front of it."""
+    s = limn.Scene()
+    s.add_mesh(
+        np.array([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], float),
+        [[0, 1, 2, 3]],
+        colors=[[0.2, 0.4, 0.85]],
+    )
+    s.add_line([[-3, 0.5, -1], [3, 0.5, -1]], color=(1, 0, 0), width=2.0, dash=[6, 3])
+    s.add_line([[-3, -0.5, 1], [3, -0.5, 1]], color=(0, 0.6, 0), head=True)
+    s.add_points([[0, 0, -1], [0.3, 0.3, 1]], marker="circle", size=[6, 8], color=(0, 0, 0))
+    s.add_label((0.3, 0.3, 1), "front", anchor="south", offset=(0, -4))
+    s.add_label((0, 0, -1), "behind")
+    s.set_camera(eye=(0, 0, 6), target=(0, 0, 0), size=(200, 200))
+    return s
+
+
+def test_lines_points_and_labels_are_hidden_by_the_faces_in_front(tmp_path):
+    s = square_with_marks()
+    assert s.mark_counts == (2, 2, 2)
+    polys, marks = s.paint_with_marks()
+    kinds = {(m["kind"], m["index"]) for m in marks}
+    # The point and the label behind the square are hidden; those in front are shown.
+    assert ("marker", 1) in kinds and ("marker", 0) not in kinds
+    assert ("label", 0) in kinds and ("label", 1) not in kinds
+    # The line behind shows only left and right of the square; the one in front whole.
+    behind = [m for m in marks if m["kind"] == "line" and m["index"] == 0]
+    front = [m for m in marks if m["kind"] == "line" and m["index"] == 1]
+    assert len(behind) == 2 and len(front) == 1
+    # The square's left edge at x = -1 projects to where the hidden part starts.
+    xs = sorted(float(m["points"][:, 0].max()) for m in behind)
+    left = 100 - (1 / 6) * 100 / np.tan(np.radians(22.5))
+    assert abs(xs[0] - left) < 1e-6, (xs, left)
+    # Marks in front are painted after the square.
+    assert all(m["before"] == len(polys) for m in marks)
+    assert any(m["kind"] == "head" for m in marks)
+    out = tmp_path / "m.svg"
+    stats = s.render(out)
+    data = out.read_bytes()
+    assert b"front" in data and b"behind" not in data and stats["paths_out"] > 0
+
+
+def test_marks_are_hidden_exactly_through_orthographic_and_matrix_cameras():
+    s = square_with_marks()
+    s.set_camera(eye=(0, 0, 6), target=(0, 0, 0), size=(200, 200), projection="orthographic")
+    _, marks = s.paint_with_marks()
+    kinds = {(m["kind"], m["index"]) for m in marks}
+    assert ("marker", 1) in kinds and ("marker", 0) not in kinds
+    # Seen along parallel rays, the hidden stretch of the line behind is exactly the
+    # square's width: its pieces end where the square's edges project.
+    behind = sorted(
+        (m["points"] for m in marks if m["kind"] == "line" and m["index"] == 0),
+        key=lambda p: p[0, 0],
+    )
+    front = [m["points"] for m in marks if m["kind"] == "line" and m["index"] == 1][0]
+    sq = [p for _, p, _, _ in s.paint(seams=0)][0]
+    assert abs(behind[0][:, 0].max() - sq[:, 0].min()) < 1e-9
+    assert abs(behind[1][:, 0].min() - sq[:, 0].max()) < 1e-9
+    assert front[:, 0].max() - front[:, 0].min() > 150
+    # A 4x4 orthographic matrix looking down -z: the same decisions.
+    m = np.diag([0.25, 0.25, -0.1, 1.0])
+    s.set_camera(matrix=m, size=(200, 200))
+    _, marks2 = s.paint_with_marks()
+    assert {(m["kind"], m["index"]) for m in marks2} == kinds
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda s: s.add_line(np.zeros((3, 2))), "shape"),
+        (lambda s: s.add_line(np.zeros((1, 3))), "at least 2"),
+        (lambda s: s.add_line([[0, 0, 0], [np.nan, 0, 0]]), "not finite"),
+        (lambda s: s.add_line(np.eye(3), color=(2, 0, 0)), "outside 0..1"),
+        (lambda s: s.add_line(np.eye(3), width=0), "positive"),
+        (lambda s: s.add_line(np.eye(3), dash=[0, 0]), "dash"),
+        (lambda s: s.add_points(np.zeros((2, 2))), "shape"),
+        (lambda s: s.add_points([[0, 0, 0], [0, np.inf, 0]]), "not finite"),
+        (lambda s: s.add_points(np.eye(3), marker="star"), "unknown marker"),
+        (lambda s: s.add_points(np.eye(3), size=[1, 2]), "one per point"),
+        (lambda s: s.add_points(np.eye(3), size=[1, -2, 1]), "positive"),
+        (lambda s: s.add_points(np.eye(3), color=np.ones((2, 3))), "one per point"),
+        (lambda s: s.add_label((0, np.nan, 0), "x"), "not finite"),
+        (lambda s: s.add_label((0, 0, 0), "a\nb"), "one line"),
+        (lambda s: s.add_label((0, 0, 0), "x", anchor="up"), "unknown anchor"),
+        (lambda s: s.add_label((0, 0, 0), "x", size=0), "positive"),
+    ],
+)
+def test_bad_marks_raise_value_error_and_change_nothing(tmp_path, call, message):
+    s = limn.Scene()
+    s.add_mesh(np.eye(3), [[0, 1, 2]])
+    with pytest.raises(ValueError, match=message):
+        call(s)
+    assert s.mark_counts == (0, 0, 0)
+    s.render(tmp_path / "a.svg")  # the scene is still whole
+    assert [p.name for p in tmp_path.iterdir()] == ["a.svg"]
+
