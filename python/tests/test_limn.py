@@ -387,3 +387,93 @@ def test_bad_marks_raise_value_error_and_change_nothing(tmp_path, call, message)
     s.render(tmp_path / "a.svg")  # the scene is still whole
     assert [p.name for p in tmp_path.iterdir()] == ["a.svg"]
 
+
+# --- lines and points through the matplotlib bridge ---------------------------------
+
+BELOW = (0.9, 0.1, 0.1)
+ABOVE = (0.1, 0.7, 0.2)
+
+
+def scatter_around_a_plane(size=(4, 3)):
+    """A flat blue square at z = 0 and one scatter of points: red ones under the square
+    (hidden from above), green ones over it."""
+    fig = plt.figure(figsize=size)
+    ax = fig.add_subplot(projection="3d")
+    x, y = np.meshgrid(np.linspace(-1, 1, 6), np.linspace(-1, 1, 6))
+    ax.plot_surface(x, y, 0 * x, color=PLANE_COLOUR, shade=False, linewidth=0)
+    g = np.linspace(-0.45, 0.45, 4)
+    px, py = (a.ravel() for a in np.meshgrid(g, g))
+    below = np.c_[px, py, np.full(px.shape, -0.15)]
+    above = np.c_[px + 0.1, py + 0.1, np.full(px.shape, 0.25)]
+    # One point above the plane's front corner, nearest the viewer: matplotlib draws
+    # the whole scatter at the depth of its nearest point, so in front of the plane.
+    above = np.r_[above, [[0.95, -0.95, 0.45]]]
+    pts = np.r_[below, above]
+    colours = [BELOW] * len(below) + [ABOVE] * len(above)
+    ax.scatter(pts[:, 0], pts[:, 1], pts[:, 2], c=colours, s=40, depthshade=False)
+    ax.set_zlim(-0.5, 0.5)
+    ax.view_init(elev=40, azim=-60)
+    return fig, ax, below, above
+
+
+def count_colour(img, want):
+    return int((np.abs(img[:, :, :3] - np.asarray(want)).max(axis=2) < 0.08).sum())
+
+
+def test_scatter_points_behind_a_surface_are_hidden(tmp_path):
+    fig, ax, below, above = scatter_around_a_plane()
+    fig.savefig(tmp_path / "mpl.svg")
+    lm.savefig(fig, tmp_path / "limn.svg")
+    mine = raster((tmp_path / "limn.svg").read_bytes(), 2.0)
+    theirs = raster((tmp_path / "mpl.svg").read_bytes(), 2.0)
+    for p in below:
+        # The plane, or a point above it, covers each point below.
+        c = colour_at(fig, ax, mine, p)
+        assert not near(c, BELOW), (p, c)
+    for p in above:
+        assert near(colour_at(fig, ax, mine, p), ABOVE), p
+    # No pixel of a hidden point in the bridge's picture; matplotlib's export, which
+    # gives the whole scatter one depth, shows them on top of the plane.
+    assert count_colour(mine, BELOW) == 0
+    assert count_colour(theirs, BELOW) > 100
+    mpl_wrong = sum(near(colour_at(fig, ax, theirs, p), BELOW) for p in below)
+    assert mpl_wrong > 0
+    assert all(c.get_visible() for c in ax.collections)
+    plt.close(fig)
+
+
+def test_a_wireframe_on_its_surface_shows_and_lines_behind_it_do_not(tmp_path):
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")
+    n = 7
+    x, y = np.meshgrid(np.linspace(-1, 1, n), np.linspace(-1, 1, n))
+    z = 0.1 * x - 0.05 * y  # planar, so every wireframe segment lies on a face
+    ax.plot_surface(x, y, z, color=HEIGHT_COLOUR, shade=False, linewidth=0)
+    ax.plot_wireframe(x, y, z, color="k", linewidth=1.5)
+    # A dashed line just under the surface, hidden by it.
+    lx = np.array([-0.5, 0.5])
+    ax.plot(lx, [0.1, 0.1], 0.1 * lx - 0.005 - 0.1, color=ABOVE, linewidth=3, linestyle="--")
+    ax.set_zlim(-0.5, 0.5)
+    ax.view_init(elev=60, azim=-50)
+    lm.savefig(fig, tmp_path / "w.svg")
+    img = raster((tmp_path / "w.svg").read_bytes(), 3.0)
+    shown = 0
+    for i in range(n):
+        for j in range(n - 1):
+            # The middle of each wireframe segment along x, and one between rows (on the
+            # surface only).
+            px = (x[i, j] + x[i, j + 1]) / 2
+            p = (px, y[i, j], 0.1 * px - 0.05 * y[i, j])
+            c = colour_at(fig, ax, img, p)
+            shown += near(c, (0, 0, 0))
+            if i < n - 1:
+                q = (px, (y[i, j] + y[i + 1, j]) / 2)
+                c = colour_at(fig, ax, img, (q[0], q[1], 0.1 * q[0] - 0.05 * q[1]))
+                assert near(c, HEIGHT_COLOUR), (q, c)
+    assert shown == n * (n - 1), shown
+    assert count_colour(img, ABOVE) == 0
+    # Without the surface the line shows (so the check above can fail).
+    ax.collections[0].set_visible(False)
+    lm.savefig(fig, tmp_path / "bare.svg")
+    assert count_colour(raster((tmp_path / "bare.svg").read_bytes(), 3.0), ABOVE) > 100
+    plt.close(fig)
