@@ -86,14 +86,12 @@ def _camera(ax: Any, renderer: Any, points: np.ndarray) -> Tuple[np.ndarray, flo
 
 def _lines(artist: Any) -> List[np.ndarray]:
     """A ``Line3D``'s runs of finite points (matplotlib breaks lines at NaN)."""
-    xs, ys, zs = (np.asarray(np.ma.filled(c, np.nan), dtype=float) for c in artist.get_data_3d())
-    pts = np.c_[np.broadcast_to(xs, np.broadcast(xs, ys, zs).shape).ravel(),
-                np.broadcast_to(ys, np.broadcast(xs, ys, zs).shape).ravel(),
-                np.broadcast_to(zs, np.broadcast(xs, ys, zs).shape).ravel()]
-    return _runs(pts)
+    xyz = (np.asarray(np.ma.filled(c, np.nan), dtype=float) for c in artist.get_data_3d())
+    return _runs(np.c_[tuple(a.ravel() for a in np.broadcast_arrays(*xyz))])
 
 
 def _runs(pts: np.ndarray) -> List[np.ndarray]:
+    """The runs of consecutive finite rows of ``pts``."""
     ok = np.isfinite(pts).all(axis=1)
     runs, start = [], None
     for i, good in enumerate(list(ok) + [False]):
@@ -137,7 +135,6 @@ class _Lines:
 
     def add_line_collection(self, coll: Any) -> None:
         segs = coll._segments3d
-        n = len(segs)
         col = np.asarray(coll.get_colors(), dtype=float).reshape(-1, 4)
         lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
         ls = coll.get_linestyles()
@@ -149,7 +146,6 @@ class _Lines:
             for r in _runs(np.asarray(seg, dtype=float).reshape(-1, 3)):
                 if len(r) >= 2:
                     self.lines.append((r, c, w, dash))
-        del n
 
     def add_scatter(self, coll: Any, p2p: float) -> None:
         from matplotlib.collections import PathCollection
