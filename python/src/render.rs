@@ -5,7 +5,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use limn_depthsort::{order_with_marks, Arith, OrderOptions, Ordered, SortMode};
+use limn_depthsort::{order_with_marks, Arith, MarkStats, OrderOptions, Ordered, SortMode};
 use limn_paint::{painter_for, picture_with_marks, Format, PaintStats, Style};
 use limn_scene::{Effects, Scene};
 use numpy::PyReadonlyArray2;
@@ -101,7 +101,14 @@ pub(crate) fn render_scene<'py>(
     let pic = picture_with_marks(scene, &ordered, &marks, style);
     let ps = write_atomic(path, |w| painter_for(format).paint(&pic, w))?;
     let t_write = ms(t1);
-    stats_dict(py, scene, &ordered, oo, &ps, [t_load, t_order, t_write])
+    stats_dict(
+        py,
+        scene,
+        &ordered,
+        oo,
+        (&ps, &marks.stats),
+        [t_load, t_order, t_write],
+    )
 }
 
 /// The statistics of `limn --stats`, with the same keys.
@@ -110,7 +117,7 @@ pub(crate) fn stats_dict<'py>(
     scene: &Scene,
     ordered: &Ordered,
     oo: &OrderOptions,
-    ps: &PaintStats,
+    (ps, marks): (&PaintStats, &MarkStats),
     [load, order, write]: [f64; 3],
 ) -> PyResult<Bound<'py, PyDict>> {
     let s = &ordered.stats;
@@ -147,6 +154,24 @@ pub(crate) fn stats_dict<'py>(
     d.set_item("arith", oo.arith.name())?;
     d.set_item("effects", effects)?;
     d.set_item("warnings", scene.warnings.clone())?;
+    let l = PyDict::new(py);
+    let mark_counts: [(&str, usize); 9] = [
+        ("lines", marks.lines),
+        ("segments_in", marks.segments_in),
+        ("pieces_out", marks.pieces_out),
+        ("hidden_pieces", marks.hidden_pieces),
+        ("markers", marks.markers_in),
+        ("markers_shown", marks.markers_shown),
+        ("labels", marks.labels_in),
+        ("labels_shown", marks.labels_shown),
+        ("exact_tests", marks.exact_tests),
+    ];
+    for (k, v) in mark_counts {
+        l.set_item(k, v)?;
+    }
+    l.set_item("line_paths_out", ps.lines)?;
+    l.set_item("ms", marks.ms)?;
+    d.set_item("lines", l)?;
     let t = PyDict::new(py);
     t.set_item("load", load)?;
     t.set_item("order", order)?;

@@ -331,6 +331,8 @@ def test_lines_points_and_labels_are_hidden_by_the_faces_in_front(tmp_path):
     stats = s.render(out)
     data = out.read_bytes()
     assert b"front" in data and b"behind" not in data and stats["paths_out"] > 0
+    assert (stats["lines"]["markers"], stats["lines"]["markers_shown"]) == (2, 1)
+    assert (stats["lines"]["labels"], stats["lines"]["labels_shown"]) == (2, 1)
 
 
 def test_marks_are_hidden_exactly_through_orthographic_and_matrix_cameras():
