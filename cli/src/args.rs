@@ -16,6 +16,10 @@ pub struct Cli {
     /// What to do.
     #[command(subcommand)]
     pub command: Command,
+    /// Worker threads for ordering and writing (the output is the same for every count)
+    /// [default: one per core]
+    #[arg(long, global = true, value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    pub threads: Option<u16>,
 }
 
 impl Cli {
@@ -57,6 +61,7 @@ const MAIN_HELP: &str = "Examples:
   limn demo                              # the built-in scene to demo.svg
   limn render bunny.obj -o bunny.pdf     # any mesh or scene file, framed automatically
   limn check bunny.obj --against raycast # the painter's picture against ray casting
+  limn render big.obj --threads 1        # on one core (the same output as on all)
 
 Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
 limit reached; no output file is left), 2 usage error, 3 `check` found pixels that \

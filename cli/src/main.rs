@@ -30,6 +30,16 @@ fn main() -> ExitCode {
         let _ = e.print();
         return ExitCode::from(2);
     }
+    if let Some(n) = cli.threads {
+        // Only fails when a pool already exists, which nothing here creates before.
+        if let Err(e) = rayon::ThreadPoolBuilder::new()
+            .num_threads(usize::from(n))
+            .build_global()
+        {
+            eprintln!("limn: error: cannot start {n} threads: {e}");
+            return ExitCode::from(1);
+        }
+    }
     let run = match cli.command {
         args::Command::Render(a) => render::render(a),
         args::Command::Demo(a) => demo::run(a),

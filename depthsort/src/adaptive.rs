@@ -3,6 +3,7 @@
 //! strongly connected components (cycles and interpenetrations), recursively.
 
 use limn_kernel::Kernel;
+use rayon::prelude::*;
 
 use crate::bsp::{choose_splitter, partition, push_parts, push_parts_as, Task};
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
@@ -188,21 +189,37 @@ pub(crate) fn components(n: usize, start: &[u32], adj: &[u32]) -> Vec<Vec<u32>> 
     out
 }
 
+/// Candidate pairs per parallel task: below this, splitting the work costs more than it
+/// saves.
+const PAIRS_PER_TASK: usize = 64;
+
 /// Orders one set: constraints, components, and tasks for the stack.
 fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
     let n = set.len();
-    let mut edges: Vec<(u32, u32)> = Vec::new();
     let mut pairs = Vec::new();
     box_pairs(ctx, &set, |i, j| pairs.push((i as u32, j as u32)));
-    let margin = ctx.margin;
-    for (i, j) in pairs {
-        let (p, q) = (set[i as usize], set[j as usize]);
-        let (pp, qq) = (&ctx.pieces[p as usize], &ctx.pieces[q as usize]);
-        if convex_disjoint(&pp.pts, &qq.pts, margin) {
-            continue;
-        }
+    // The pair tests only read the pieces: they run in parallel, and the results come
+    // back in the order of `pairs` whatever the number of threads.
+    let shared: &Ctx<'_, K> = ctx;
+    let margin = shared.margin;
+    let tested: Vec<Option<Pair>> = pairs
+        .par_iter()
+        .with_min_len(PAIRS_PER_TASK)
+        .map(|&(i, j)| {
+            let (p, q) = (set[i as usize], set[j as usize]);
+            let (pp, qq) = (&shared.pieces[p as usize], &shared.pieces[q as usize]);
+            if convex_disjoint(&pp.pts, &qq.pts, margin) {
+                None
+            } else {
+                Some(shared.pair(p, q))
+            }
+        })
+        .collect();
+    let mut edges: Vec<(u32, u32)> = Vec::new();
+    for (&(i, j), pair) in pairs.iter().zip(tested) {
+        let Some(pair) = pair else { continue };
         ctx.stats.candidate_pairs += 1;
-        match ctx.pair(p, q) {
+        match pair {
             Pair::Free => {}
             Pair::FirstBefore => edges.push((i, j)),
             Pair::SecondBefore => edges.push((j, i)),

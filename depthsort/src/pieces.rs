@@ -94,16 +94,38 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         parent: u32,
         eye_front: Option<bool>,
     ) -> u32 {
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let piece = self.piece(poly, face, parent, eye_front, &mut scratch);
+        self.scratch = scratch;
+        self.push(piece)
+    }
+
+    /// Adds a piece made by [`Ctx::piece`]; returns its id.
+    pub fn push(&mut self, piece: Piece<K>) -> u32 {
+        self.pieces.push(piece);
+        (self.pieces.len() - 1) as u32
+    }
+
+    /// A piece with its projection, not yet added (`scratch` is working space).
+    /// `eye_front` is computed when `None`.
+    pub fn piece(
+        &self,
+        poly: K::Polygon,
+        face: u32,
+        parent: u32,
+        eye_front: Option<bool>,
+        scratch: &mut Vec<DVec3>,
+    ) -> Piece<K> {
         let plane = self.k.support(&poly);
         let eye_front = eye_front.unwrap_or_else(|| self.eye_side(&plane) == Side::Front);
         // Depth: clip w (the distance along the view axis) for a perspective camera,
         // normalised device depth for any other.
         let by_w = self.camera.is_perspective();
-        self.scratch.clear();
-        self.k.vertices_world(&poly, &mut self.scratch);
-        let mut pts = Vec::with_capacity(self.scratch.len());
+        scratch.clear();
+        self.k.vertices_world(&poly, scratch);
+        let mut pts = Vec::with_capacity(scratch.len());
         let (mut dmin, mut dmax, mut dsum) = (f64::INFINITY, f64::NEG_INFINITY, 0.0);
-        for &p in &self.scratch {
+        for &p in scratch.iter() {
             let pr = self.camera.project_with(&self.vp, p);
             pts.push([pr.x, pr.y]);
             let d = if by_w { pr.w } else { pr.z };
@@ -113,7 +135,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         }
         let dmean = dsum / pts.len().max(1) as f64;
         let bbox = bbox(&pts);
-        self.pieces.push(Piece {
+        Piece {
             poly,
             plane,
             face,
@@ -125,8 +147,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             dmin,
             dmax,
             dmean,
-        });
-        (self.pieces.len() - 1) as u32
+        }
     }
 
     /// Splits piece `id` by the plane of piece `by`. Returns the ids of the part on the

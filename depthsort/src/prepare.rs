@@ -2,14 +2,16 @@
 //! edge-on (exactly), clip at the near plane (exactly), and drop what lies outside the
 //! picture (conservatively, in floats).
 
+use glam::DVec3;
 use limn_kernel::Kernel;
 use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
 use crate::options::{CullMode, OrderError};
-use crate::pieces::{Ctx, NONE};
-use crate::view::view_planes;
+use crate::pieces::{Ctx, Piece, NONE};
+use crate::view::{view_planes, ViewPlanes};
+use rayon::prelude::*;
 
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
 /// (between vertex positions) must be used exactly once in each direction within the
@@ -35,7 +37,7 @@ pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
             }
         }
     }
-    edges.sort_unstable();
+    edges.par_sort_unstable();
     for (i, &(o, a, b)) in edges.iter().enumerate() {
         let o = o as usize;
         if !ok[o] {
@@ -73,81 +75,43 @@ pub(crate) fn prepare<K: Kernel>(
     // The plane through the eye facing forward: what lies behind it is behind the camera
     // (not in view at all); only what lies between it and the near plane is lost.
     let planes = view_planes(ctx, near)?;
-    let (near_plane, eye_plane, frustum) = (&planes.near, planes.eye.as_ref(), &planes.sides);
-    let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
+    // Faces are converted, culled, clipped and projected independently, in parallel;
+    // their pieces are then added in face order, so ids do not depend on the threads.
+    let shared: &Ctx<'_, K> = ctx;
+    let outs: Vec<Result<Option<FaceOut<K>>, OrderError>> = (0..scene.faces.len())
+        .into_par_iter()
+        .with_min_len(FACES_PER_TASK)
+        .map_init(Vec::new, |scratch, fi| {
+            if hidden[fi] {
+                return Ok(None);
+            }
+            let cull_back = closed[scene.faces[fi].object as usize];
+            prepare_face(shared, scene, fi, cull_back, &planes, scratch).map(Some)
+        })
+        .collect();
     let mut items = Vec::new();
-    let mut corners = Vec::new();
-    for (fi, face) in scene.faces.iter().enumerate() {
+    for (fi, out) in outs.into_iter().enumerate() {
         ctx.stats.faces_in += 1;
-        if hidden[fi] {
+        let Some(out) = out? else {
             ctx.stats.faces_coincident += 1;
             continue;
-        }
-        corners.clear();
-        corners.extend(face.vertices.iter().map(|&v| scene.vertices[v as usize]));
-        let polys = ctx.k.face_polygons(&corners)?;
-        if polys.is_empty() {
+        };
+        if out.degenerate {
             ctx.stats.faces_degenerate += 1;
             continue;
         }
-        let cull_back = closed[face.object as usize];
+        ctx.stats.splits += out.splits;
         let mut kept_any = false;
-        let mut culled_all = true;
-        let mut intact = true;
-        let mut facing = None;
-        let mut lost_to_near = false;
-        for poly in polys {
-            let plane = ctx.k.support(&poly);
-            let side = ctx.eye_side(&plane);
-            if *facing.get_or_insert(side) != side {
-                intact = false;
+        for (piece, in_picture) in out.pieces {
+            let id = ctx.push(piece);
+            if in_picture {
+                kept_any = true;
+                items.push(id);
             }
-            match side {
-                Side::On => {
-                    intact = false;
-                    continue;
-                }
-                Side::Back if cull_back => {
-                    intact = false;
-                    continue;
-                }
-                _ => {}
-            }
-            culled_all = false;
-            let poly = match ctx.k.classify(&poly, near_plane) {
-                PolygonSide::Front => poly,
-                PolygonSide::Spanning => {
-                    intact = false;
-                    lost_to_near |= lost_in_view(ctx, &poly, near_plane, eye_plane, frustum);
-                    ctx.stats.splits += 1;
-                    match ctx.k.split(&poly, near_plane).0 {
-                        Some(p) => p,
-                        None => continue,
-                    }
-                }
-                _ => {
-                    intact = false;
-                    lost_to_near |= lost_in_view(ctx, &poly, near_plane, eye_plane, frustum);
-                    continue;
-                }
-            };
-            let id = ctx.add(poly, fi as u32, NONE, Some(side == Side::Front));
-            let b = ctx.pieces[id as usize].bbox;
-            // Entirely outside the picture (with a one-pixel margin): never painted.
-            if b.max_x < -1.0
-                || b.min_x > w + 1.0
-                || b.max_y < -1.0
-                || b.min_y > h + 1.0
-                || !b.min_x.is_finite()
-            {
-                continue;
-            }
-            kept_any = true;
-            items.push(id);
         }
-        whole[fi] = intact && kept_any;
-        ctx.stats.faces_near_clipped += lost_to_near as usize;
-        if culled_all {
+        whole[fi] = out.intact && kept_any;
+        ctx.stats.faces_near_clipped += out.lost_to_near as usize;
+        if out.culled_all {
             ctx.stats.faces_culled += 1;
         } else if !kept_any {
             ctx.stats.faces_clipped += 1;
@@ -155,6 +119,99 @@ pub(crate) fn prepare<K: Kernel>(
     }
     ctx.stats.polygons = items.len();
     Ok((items, whole))
+}
+
+/// Faces per parallel task in [`prepare`].
+const FACES_PER_TASK: usize = 64;
+
+/// What preparing one face gives.
+struct FaceOut<K: Kernel> {
+    /// The face has zero area (or is not simple).
+    degenerate: bool,
+    /// Every polygon of the face was culled (back-facing or seen edge-on).
+    culled_all: bool,
+    /// No polygon was culled, clipped or seen from the other side.
+    intact: bool,
+    /// The near plane cut away a part the camera would see.
+    lost_to_near: bool,
+    /// Near-plane splits made.
+    splits: usize,
+    /// The pieces, each with whether it can be painted inside the picture.
+    pieces: Vec<(Piece<K>, bool)>,
+}
+
+/// Converts, culls, clips and projects face `fi` (reading the context only).
+fn prepare_face<K: Kernel>(
+    ctx: &Ctx<'_, K>,
+    scene: &Scene,
+    fi: usize,
+    cull_back: bool,
+    planes: &ViewPlanes<K::Plane>,
+    scratch: &mut Vec<DVec3>,
+) -> Result<FaceOut<K>, OrderError> {
+    let face = &scene.faces[fi];
+    scratch.clear();
+    scratch.extend(face.vertices.iter().map(|&v| scene.vertices[v as usize]));
+    let polys = ctx.k.face_polygons(scratch)?;
+    let mut out = FaceOut {
+        degenerate: polys.is_empty(),
+        culled_all: true,
+        intact: true,
+        lost_to_near: false,
+        splits: 0,
+        pieces: Vec::with_capacity(polys.len()),
+    };
+    let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
+    let mut facing = None;
+    for poly in polys {
+        let plane = ctx.k.support(&poly);
+        let side = ctx.eye_side(&plane);
+        if *facing.get_or_insert(side) != side {
+            out.intact = false;
+        }
+        match side {
+            Side::On => {
+                out.intact = false;
+                continue;
+            }
+            Side::Back if cull_back => {
+                out.intact = false;
+                continue;
+            }
+            _ => {}
+        }
+        out.culled_all = false;
+        let lost = |poly: &K::Polygon| {
+            lost_in_view(ctx, poly, &planes.near, planes.eye.as_ref(), &planes.sides)
+        };
+        let poly = match ctx.k.classify(&poly, &planes.near) {
+            PolygonSide::Front => poly,
+            PolygonSide::Spanning => {
+                out.intact = false;
+                out.lost_to_near |= lost(&poly);
+                out.splits += 1;
+                match ctx.k.split(&poly, &planes.near).0 {
+                    Some(p) => p,
+                    None => continue,
+                }
+            }
+            _ => {
+                out.intact = false;
+                out.lost_to_near |= lost(&poly);
+                continue;
+            }
+        };
+        let piece = ctx.piece(poly, fi as u32, NONE, Some(side == Side::Front), scratch);
+        let b = piece.bbox;
+        // Entirely outside the picture (with a one-pixel margin): never painted.
+        let outside = b.max_x < -1.0
+            || b.min_x > w + 1.0
+            || b.max_y < -1.0
+            || b.min_y > h + 1.0
+            || !b.min_x.is_finite();
+        out.pieces.push((piece, !outside));
+    }
+    Ok(out)
 }
 
 /// Whether the near plane cuts away a part of `poly` that the camera would see: some of
