@@ -5,126 +5,20 @@
 use limn_kernel::Kernel;
 use rayon::prelude::*;
 
-use crate::bsp::{choose_splitter, partition, push_parts, push_parts_as, Task};
-use crate::geom::{boxes_meet, convex_disjoint, Box2};
+use crate::broad::{box_pairs, estimated_box_pairs};
+use crate::bsp::{choose_splitter, partition, push_parts_as, Task, SCORE_SAMPLE};
+use crate::geom::{boxes_meet, convex_disjoint};
 use crate::occlusion::Pair;
 use crate::pieces::Ctx;
 
-/// A component larger than this, holding more than four fifths of its set, is dense.
-const DENSE_MIN: usize = 256;
-/// BSP levels applied to a dense component before its parts are analysed again.
-const DENSE_LEVELS: u32 = 5;
+/// Parts of a split component up to this size are always analysed again (the analysis
+/// of a small set is cheap whatever its density).
+const ALWAYS_ANALYSE: usize = 4;
 
-/// Pieces whose box covers more grid cells than this are tested against everything.
-const MAX_CELLS_PER_ITEM: usize = 64;
-
-/// Calls `f(i, j)` (indices into `set`, i ≠ j, each unordered pair once) for every pair
-/// whose screen boxes meet, using a uniform grid over the set's extent.
-pub(crate) fn box_pairs<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32], mut f: impl FnMut(usize, usize)) {
-    let n = set.len();
-    if n < 2 {
-        return;
-    }
-    let m = ctx.margin;
-    let boxes: Vec<Box2> = set
-        .iter()
-        .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
-        .collect();
-    if n <= 24 {
-        for i in 0..n {
-            for j in i + 1..n {
-                if boxes_meet(&boxes[i], &boxes[j], 0.0) {
-                    f(i, j);
-                }
-            }
-        }
-        return;
-    }
-    let mut u = Box2::EMPTY;
-    let (mut sw, mut sh) = (0.0, 0.0);
-    for b in &boxes {
-        u = u.union(b);
-        sw += b.width();
-        sh += b.height();
-    }
-    let (uw, uh) = (u.width().max(1e-300), u.height().max(1e-300));
-    // Cells about the size of an average box, at most ~2n cells in all.
-    let avg = ((sw / n as f64) * (sh / n as f64)).sqrt().max(1e-300);
-    let mut gx = ((uw / avg).ceil() as usize).clamp(1, 4096);
-    let mut gy = ((uh / avg).ceil() as usize).clamp(1, 4096);
-    while gx * gy > 2 * n + 16 {
-        gx = (gx / 2).max(1);
-        gy = (gy / 2).max(1);
-    }
-    let (cw, ch) = (uw / gx as f64, uh / gy as f64);
-    let cell_x = |x: f64| (((x - u.min_x) / cw) as isize).clamp(0, gx as isize - 1) as usize;
-    let cell_y = |y: f64| (((y - u.min_y) / ch) as isize).clamp(0, gy as isize - 1) as usize;
-    let mut big = Vec::new();
-    let mut counts = vec![0u32; gx * gy + 1];
-    let mut ranges = Vec::with_capacity(n);
-    for (i, b) in boxes.iter().enumerate() {
-        let (x0, x1, y0, y1) = (
-            cell_x(b.min_x),
-            cell_x(b.max_x),
-            cell_y(b.min_y),
-            cell_y(b.max_y),
-        );
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > MAX_CELLS_PER_ITEM {
-            big.push(i);
-            ranges.push(None);
-            continue;
-        }
-        ranges.push(Some((x0, x1, y0, y1)));
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                counts[y * gx + x + 1] += 1;
-            }
-        }
-    }
-    for c in 1..counts.len() {
-        counts[c] += counts[c - 1];
-    }
-    let mut fill = counts.clone();
-    let mut cells = vec![0u32; counts[gx * gy] as usize];
-    for (i, r) in ranges.iter().enumerate() {
-        if let Some((x0, x1, y0, y1)) = *r {
-            for y in y0..=y1 {
-                for x in x0..=x1 {
-                    let c = y * gx + x;
-                    cells[fill[c] as usize] = i as u32;
-                    fill[c] += 1;
-                }
-            }
-        }
-    }
-    for c in 0..gx * gy {
-        let list = &cells[counts[c] as usize..counts[c + 1] as usize];
-        let (cx, cy) = (c % gx, c / gx);
-        for (a, &i) in list.iter().enumerate() {
-            for &j in &list[a + 1..] {
-                let (bi, bj) = (&boxes[i as usize], &boxes[j as usize]);
-                if !boxes_meet(bi, bj, 0.0) {
-                    continue;
-                }
-                // Report the pair only in the cell holding the corner of the overlap.
-                if cell_x(bi.min_x.max(bj.min_x)) == cx && cell_y(bi.min_y.max(bj.min_y)) == cy {
-                    f(i as usize, j as usize);
-                }
-            }
-        }
-    }
-    let mut is_big = vec![false; n];
-    for &i in &big {
-        is_big[i] = true;
-    }
-    for &i in &big {
-        for j in 0..n {
-            if j != i && (!is_big[j] || j > i) && boxes_meet(&boxes[i], &boxes[j], 0.0) {
-                f(i, j);
-            }
-        }
-    }
-}
+/// Cost of one candidate-pair test in the units of the cost model of [`analysis_pays`]
+/// (one polygon classified against a plane): two classifications, often two exact
+/// splits into halves and their projections, and the separating-axis tests.
+const PAIR_COST: usize = 32;
 
 /// Strongly connected components of a graph given in CSR form, in topological order
 /// (a component comes before every component it has edges to). Iterative Tarjan.
@@ -189,32 +83,57 @@ pub(crate) fn components(n: usize, start: &[u32], adj: &[u32]) -> Vec<Vec<u32>> 
     out
 }
 
+/// Fewer candidate pairs than this are tested on the calling thread (handing them out
+/// costs more than it saves).
+const PARALLEL_PAIRS: usize = 512;
+
 /// Candidate pairs per parallel task: below this, splitting the work costs more than it
 /// saves.
 const PAIRS_PER_TASK: usize = 64;
 
 /// Orders one set: constraints, components, and tasks for the stack.
 fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
-    let n = set.len();
+    let pairs = candidate_pairs(ctx, &set);
+    order_set_with(ctx, set, pairs, stack);
+}
+
+/// The pairs of `set` whose screen boxes meet (indices into `set`).
+fn candidate_pairs<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> Vec<(u32, u32)> {
     let mut pairs = Vec::new();
-    box_pairs(ctx, &set, |i, j| pairs.push((i as u32, j as u32)));
+    box_pairs(ctx, set, |i, j| pairs.push((i as u32, j as u32)));
+    pairs
+}
+
+/// [`order_set`] with the candidate pairs already found.
+fn order_set_with<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    set: Vec<u32>,
+    pairs: Vec<(u32, u32)>,
+    stack: &mut Vec<Task>,
+) {
+    let n = set.len();
     // The pair tests only read the pieces: they run in parallel, and the results come
     // back in the order of `pairs` whatever the number of threads.
     let shared: &Ctx<'_, K> = ctx;
     let margin = shared.margin;
-    let tested: Vec<Option<Pair>> = pairs
-        .par_iter()
-        .with_min_len(PAIRS_PER_TASK)
-        .map(|&(i, j)| {
-            let (p, q) = (set[i as usize], set[j as usize]);
-            let (pp, qq) = (&shared.pieces[p as usize], &shared.pieces[q as usize]);
-            if convex_disjoint(&pp.pts, &qq.pts, margin) {
-                None
-            } else {
-                Some(shared.pair(p, q))
-            }
-        })
-        .collect();
+    let test = |&(i, j): &(u32, u32)| {
+        let (p, q) = (set[i as usize], set[j as usize]);
+        let (pp, qq) = (&shared.pieces[p as usize], &shared.pieces[q as usize]);
+        if convex_disjoint(&pp.pts, &qq.pts, margin) {
+            None
+        } else {
+            Some(shared.pair(p, q))
+        }
+    };
+    let tested: Vec<Option<Pair>> = if pairs.len() < PARALLEL_PAIRS {
+        pairs.iter().map(test).collect()
+    } else {
+        pairs
+            .par_iter()
+            .with_min_len(PAIRS_PER_TASK)
+            .map(test)
+            .collect()
+    };
     let mut edges: Vec<(u32, u32)> = Vec::new();
     for (&(i, j), pair) in pairs.iter().zip(tested) {
         let Some(pair) = pair else { continue };
@@ -244,6 +163,7 @@ fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Tas
         fill[a as usize] += 1;
     }
     let comps = components(n, &start, &adj);
+
     for comp in comps.into_iter().rev() {
         let members: Vec<u32> = comp.iter().map(|&i| set[i as usize]).collect();
         if members.len() == 1 {
@@ -251,14 +171,64 @@ fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Tas
         } else {
             ctx.stats.components += 1;
             ctx.stats.largest_component = ctx.stats.largest_component.max(members.len());
-            let m = members.len();
-            if m > DENSE_MIN && m * 5 > n * 4 {
-                stack.push(Task::Deep(members, DENSE_LEVELS));
-            } else {
-                stack.push(Task::Split(members));
-            }
+            stack.push(Task::Split(members));
         }
     }
+}
+
+/// Sets larger than this are probed ([`cycles_everywhere`]) before being analysed.
+const PROBE_MIN: usize = 256;
+/// Members of a set probed by [`cycles_everywhere`].
+const PROBE_SAMPLE: usize = 64;
+
+/// Whether the occlusion graph of `set` is, as measured on a sample, certain to be one
+/// cycle nearly everywhere, so that analysing the whole set would be wasted. Pieces that
+/// pierce each other (a conflict: each must be painted before the other) form two-cycles;
+/// when a piece is in conflict with one other piece or more on average, the conflicts
+/// form a giant connected part, as in a random graph of that mean degree, and so does the
+/// occlusion graph's largest component. The mean is measured on [`PROBE_SAMPLE`] evenly
+/// spaced members against the whole set (in parallel; the count does not depend on the
+/// threads).
+fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
+    let n = set.len();
+    let m = ctx.margin;
+    let conflicts: usize = (0..PROBE_SAMPLE)
+        .into_par_iter()
+        .map(|k| {
+            let p = set[k * n / PROBE_SAMPLE];
+            let pp = &ctx.pieces[p as usize];
+            let bp = pp.bbox.grown(m);
+            set.iter()
+                .filter(|&&q| {
+                    let qq = &ctx.pieces[q as usize];
+                    q != p
+                        && boxes_meet(&bp, &qq.bbox.grown(m), 0.0)
+                        && !convex_disjoint(&pp.pts, &qq.pts, m)
+                        && ctx.pair(p, q) == Pair::Conflict
+                })
+                .count()
+        })
+        .sum();
+    conflicts >= PROBE_SAMPLE
+}
+
+/// The candidate pairs of `set`, a part of a split component, when analysing it (testing those pairs) is
+/// expected to cost less than finishing it by BSP; `None` otherwise. The cost is counted,
+/// not timed, so the decision is the same on every run, machine and thread count: the
+/// analysis costs its candidate pairs (estimated on the set itself from how its screen
+/// boxes overlap in x and in y) at [`PAIR_COST`] each;
+/// BSP costs, per level of a balanced tree, one classification per member plus the
+/// scoring of `candidates` splitters on a sample. Until the analysis pays, the set is
+/// split one BSP level further and its parts are asked again.
+fn analysis_pays<K: Kernel>(
+    ctx: &Ctx<'_, K>,
+    set: &[u32],
+    candidates: usize,
+) -> Option<Vec<(u32, u32)>> {
+    let n = set.len();
+    let levels = (usize::BITS - n.leading_zeros()) as usize;
+    let bsp = levels * (n + candidates * n.min(SCORE_SAMPLE));
+    (estimated_box_pairs(ctx, set) * PAIR_COST <= bsp).then(|| candidate_pairs(ctx, set))
 }
 
 /// The adaptive order of `set`.
@@ -275,6 +245,8 @@ pub(crate) fn adaptive<K: Kernel>(
             Task::Order(s) => {
                 if s.len() <= 1 {
                     out.extend(s);
+                } else if s.len() > PROBE_MIN && cycles_everywhere(ctx, &s) {
+                    stack.push(Task::Split(s));
                 } else {
                     order_set(ctx, s, &mut stack);
                 }
@@ -282,16 +254,20 @@ pub(crate) fn adaptive<K: Kernel>(
             Task::Split(s) => {
                 let sp = choose_splitter(ctx, &s, candidates);
                 let (far, cop, near) = partition(ctx, &s, sp);
-                push_parts(&mut stack, far, cop, near);
+                push_parts_as(&mut stack, far, cop, near, Task::Deep);
             }
-            Task::Deep(s, levels) => {
-                if levels == 0 || s.len() <= DENSE_MIN / 4 {
+            Task::Deep(s) => {
+                if s.len() <= ALWAYS_ANALYSE {
                     stack.push(Task::Order(s));
+                    continue;
+                }
+                if let Some(pairs) = analysis_pays(ctx, &s, candidates) {
+                    order_set_with(ctx, s, pairs, &mut stack);
                     continue;
                 }
                 let sp = choose_splitter(ctx, &s, candidates);
                 let (far, cop, near) = partition(ctx, &s, sp);
-                push_parts_as(&mut stack, far, cop, near, |v| Task::Deep(v, levels - 1));
+                push_parts_as(&mut stack, far, cop, near, Task::Deep);
             }
         }
     }

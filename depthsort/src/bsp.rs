@@ -7,7 +7,7 @@ use crate::occlusion::Rel;
 use crate::pieces::Ctx;
 
 /// How many pieces a splitter candidate is scored against, at most.
-const SCORE_SAMPLE: usize = 512;
+pub(crate) const SCORE_SAMPLE: usize = 512;
 
 /// Picks a splitter among `candidates` random members of `set`: the one whose plane
 /// crosses the fewest other members (scored on a deterministic sample of at most
@@ -89,9 +89,10 @@ pub(crate) enum Task {
     Split(Vec<u32>),
     /// Output these pieces in this order.
     Emit(Vec<u32>),
-    /// A dense component: split it by this many BSP levels before analysing the parts
-    /// again (each analysis of a set that is nearly all one cycle is wasted work).
-    Deep(Vec<u32>, u32),
+    /// A part of a split component: analyse it when that is expected to cost less than
+    /// finishing it by BSP, split it further otherwise (analysing a set that is nearly
+    /// all one cycle is wasted work).
+    Deep(Vec<u32>),
 }
 
 /// Pushes the three parts of a partition so that they are processed far, plane, near.
@@ -124,7 +125,7 @@ pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: us
     while let Some(t) = stack.pop() {
         match t {
             Task::Emit(v) => out.extend(v),
-            Task::Order(s) | Task::Split(s) | Task::Deep(s, _) => {
+            Task::Order(s) | Task::Split(s) | Task::Deep(s) => {
                 if s.len() <= 1 {
                     out.extend(s);
                     continue;

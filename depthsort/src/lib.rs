@@ -32,6 +32,7 @@
 //! ```
 
 mod adaptive;
+mod broad;
 mod bsp;
 mod coincident;
 mod feature_edges;
