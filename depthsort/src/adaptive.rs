@@ -119,7 +119,7 @@ fn order_set_with<K: Kernel>(
     let test = |&(i, j): &(u32, u32)| {
         let (p, q) = (set[i as usize], set[j as usize]);
         let (pp, qq) = (&shared.pieces[p as usize], &shared.pieces[q as usize]);
-        if convex_disjoint(&pp.pts, &qq.pts, margin) {
+        if shared.apart_by_construction(p, q) || convex_disjoint(&pp.pts, &qq.pts, margin) {
             None
         } else {
             Some(shared.pair(p, q))

@@ -22,7 +22,8 @@ pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
         let mut j = i + 1;
         while j < order.len()
             && ctx.pieces[order[j] as usize].face == face
-            && ctx.rel(order[j], order[i]) == Rel::Coplanar
+            && (root(ctx, order[j]) == root(ctx, order[i])
+                || ctx.rel(order[j], order[i]) == Rel::Coplanar)
         {
             j += 1;
         }
@@ -34,6 +35,15 @@ pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
         i = j;
     }
     out
+}
+
+/// The polygon piece `p` was split from (itself when it was not split from one): pieces
+/// with the same root lie in its plane, which needs no test.
+fn root<K: Kernel>(ctx: &Ctx<'_, K>, mut p: u32) -> u32 {
+    while ctx.pieces[p as usize].parent != NONE {
+        p = ctx.pieces[p as usize].parent;
+    }
+    p
 }
 
 /// Pieces of one face in one plane never overlap each other in projection, so any order within the

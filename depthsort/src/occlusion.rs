@@ -79,6 +79,9 @@ impl<K: Kernel> Ctx<'_, K> {
     /// may overlap. Coplanar pieces of different faces: the later face in input order is
     /// painted last (it wins); pieces of one face never constrain each other.
     pub fn pair(&self, p: u32, q: u32) -> Pair {
+        if self.apart_by_construction(p, q) {
+            return Pair::Free;
+        }
         // Neighbours in a mesh share a vertex and usually only touch on screen. When a
         // plane side would need exact evaluation (nearly coplanar neighbours), the sector
         // test at the shared vertex, made of well-conditioned orientations through the
@@ -121,6 +124,16 @@ impl<K: Kernel> Ctx<'_, K> {
             return Pair::Free;
         }
         pair
+    }
+
+    /// Whether `p` and `q` are pieces of the two halves of one quad (triangles sharing a
+    /// diagonal) that face the eye alike: each half's projection then lies on its own side
+    /// of the projected diagonal (both turn the same way, and they run along the diagonal
+    /// in opposite directions), so their projections only touch and neither can hide the
+    /// other. Exact: facing is decided exactly, and nothing else is computed.
+    pub fn apart_by_construction(&self, p: u32, q: u32) -> bool {
+        let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
+        pp.face == qq.face && pp.eye_front == qq.eye_front && self.quad_halves[pp.face as usize]
     }
 
     /// Whether some corner of `p` projects to exactly the same screen point as a corner

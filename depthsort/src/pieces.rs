@@ -51,6 +51,9 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     pub limit: usize,
     /// Whether a split was refused because of `limit`.
     pub exceeded: bool,
+    /// Per input face: whether it is a quad given as two triangles that share a diagonal
+    /// (a quad not exactly planar as given, or not convex).
+    pub quad_halves: Vec<bool>,
     rng: SplitMix,
     scratch: Vec<DVec3>,
 }
@@ -76,6 +79,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             dmargin: 1e-9 * far.abs().max(1e-300),
             limit: usize::MAX,
             exceeded: false,
+            quad_halves: Vec::new(),
             rng: SplitMix::new(seed),
             scratch: Vec::new(),
         }

@@ -90,6 +90,7 @@ pub(crate) fn prepare<K: Kernel>(
         })
         .collect();
     let mut items = Vec::new();
+    ctx.quad_halves = vec![false; scene.faces.len()];
     for (fi, out) in outs.into_iter().enumerate() {
         ctx.stats.faces_in += 1;
         let Some(out) = out? else {
@@ -101,6 +102,7 @@ pub(crate) fn prepare<K: Kernel>(
             continue;
         }
         ctx.stats.splits += out.splits;
+        ctx.quad_halves[fi] = out.quad_halves;
         let mut kept_any = false;
         for (piece, in_picture) in out.pieces {
             let id = ctx.push(piece);
@@ -136,6 +138,8 @@ struct FaceOut<K: Kernel> {
     lost_to_near: bool,
     /// Near-plane splits made.
     splits: usize,
+    /// The face is a quad converted into two polygons (sharing a diagonal).
+    quad_halves: bool,
     /// The pieces, each with whether it can be painted inside the picture.
     pieces: Vec<(Piece<K>, bool)>,
 }
@@ -155,6 +159,7 @@ fn prepare_face<K: Kernel>(
     let polys = ctx.k.face_polygons(scratch)?;
     let mut out = FaceOut {
         degenerate: polys.is_empty(),
+        quad_halves: face.vertices.len() == 4 && polys.len() == 2,
         culled_all: true,
         intact: true,
         lost_to_near: false,
