@@ -7,7 +7,7 @@ use rayon::prelude::*;
 
 use crate::broad::{box_pairs, estimated_box_pairs};
 use crate::bsp::{choose_splitter, partition, push_parts_as, Task, SCORE_SAMPLE};
-use crate::geom::{boxes_meet, convex_disjoint};
+use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
 use crate::pieces::Ctx;
 
@@ -192,18 +192,22 @@ const PROBE_SAMPLE: usize = 64;
 fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
     let n = set.len();
     let m = ctx.margin;
+    let boxes: Vec<Box2> = set
+        .iter()
+        .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
+        .collect();
     let conflicts: usize = (0..PROBE_SAMPLE)
         .into_par_iter()
         .map(|k| {
-            let p = set[k * n / PROBE_SAMPLE];
+            let a = k * n / PROBE_SAMPLE;
+            let (p, bp) = (set[a], &boxes[a]);
             let pp = &ctx.pieces[p as usize];
-            let bp = pp.bbox.grown(m);
-            set.iter()
-                .filter(|&&q| {
-                    let qq = &ctx.pieces[q as usize];
-                    q != p
-                        && boxes_meet(&bp, &qq.bbox.grown(m), 0.0)
-                        && !convex_disjoint(&pp.pts, &qq.pts, m)
+            (0..n)
+                .filter(|&b| {
+                    let q = set[b];
+                    b != a
+                        && boxes_meet(bp, &boxes[b], 0.0)
+                        && !convex_disjoint(&pp.pts, &ctx.pieces[q as usize].pts, m)
                         && ctx.pair(p, q) == Pair::Conflict
                 })
                 .count()

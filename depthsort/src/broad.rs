@@ -30,6 +30,10 @@ const MAX_CELLS_PER_ITEM: usize = 64;
 /// comparison of x extents, then a box test).
 const CELL_PAIR_COST: usize = 4;
 
+/// Pairs looked at in grid cells per box below which the grid is used without comparing
+/// it with the sweep (counting the sweep's pairs costs a sort).
+const CROWDED: usize = 32;
+
 /// Calls `f(i, j)` (i ≠ j, each unordered pair once) for every pair of `boxes` that
 /// meet, using a uniform grid over their extent.
 fn grid_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
@@ -93,7 +97,7 @@ fn grid_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
         .map(|&c| (c as usize) * (c as usize) / 2)
         .sum::<usize>()
         + big.len() * n;
-    if cell_work * CELL_PAIR_COST > x_overlaps(boxes) + n {
+    if cell_work > CROWDED * n && cell_work * CELL_PAIR_COST > x_overlaps(boxes) + n {
         return sweep_pairs(boxes, f);
     }
     for c in 1..counts.len() {

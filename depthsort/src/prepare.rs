@@ -89,7 +89,15 @@ pub(crate) fn prepare<K: Kernel>(
             prepare_face(shared, scene, fi, cull_back, &planes, scratch).map(Some)
         })
         .collect();
-    let mut items = Vec::new();
+    let made: usize = outs
+        .iter()
+        .map(|o| {
+            o.as_ref()
+                .map_or(0, |o| o.as_ref().map_or(0, |o| o.pieces.len()))
+        })
+        .sum();
+    ctx.pieces.reserve(made);
+    let mut items = Vec::with_capacity(made);
     ctx.quad_halves = vec![false; scene.faces.len()];
     for (fi, out) in outs.into_iter().enumerate() {
         ctx.stats.faces_in += 1;
@@ -164,7 +172,7 @@ fn prepare_face<K: Kernel>(
         intact: true,
         lost_to_near: false,
         splits: 0,
-        pieces: Vec::with_capacity(polys.len()),
+        pieces: Vec::new(),
     };
     let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
     let mut facing = None;
