@@ -75,61 +75,60 @@ pub(crate) fn prepare<K: Kernel>(
     // The plane through the eye facing forward: what lies behind it is behind the camera
     // (not in view at all); only what lies between it and the near plane is lost.
     let planes = view_planes(ctx, near)?;
-    // Faces are converted, culled, clipped and projected independently, in parallel;
-    // their pieces are then added in face order, so ids do not depend on the threads.
-    let shared: &Ctx<'_, K> = ctx;
-    let outs: Vec<Result<Option<FaceOut<K>>, OrderError>> = (0..scene.faces.len())
-        .into_par_iter()
-        .with_min_len(FACES_PER_TASK)
-        .map_init(Vec::new, |scratch, fi| {
-            if hidden[fi] {
-                return Ok(None);
-            }
-            let cull_back = closed[scene.faces[fi].object as usize];
-            prepare_face(shared, scene, fi, cull_back, &planes, scratch).map(Some)
-        })
-        .collect();
-    let made: usize = outs
-        .iter()
-        .map(|o| {
-            o.as_ref()
-                .map_or(0, |o| o.as_ref().map_or(0, |o| o.pieces.len()))
-        })
-        .sum();
-    ctx.pieces.reserve(made);
-    let mut items = Vec::with_capacity(made);
+    // Faces are converted, culled, clipped and projected independently, in parallel, a
+    // block at a time (so that the pieces waiting to be added stay few); their pieces are
+    // then added in face order, so ids do not depend on the threads.
+    let mut items = Vec::new();
     ctx.quad_halves = vec![false; scene.faces.len()];
-    for (fi, out) in outs.into_iter().enumerate() {
-        ctx.stats.faces_in += 1;
-        let Some(out) = out? else {
-            ctx.stats.faces_coincident += 1;
-            continue;
-        };
-        if out.degenerate {
-            ctx.stats.faces_degenerate += 1;
-            continue;
-        }
-        ctx.stats.splits += out.splits;
-        ctx.quad_halves[fi] = out.quad_halves;
-        let mut kept_any = false;
-        for (piece, in_picture) in out.pieces {
-            let id = ctx.push(piece);
-            if in_picture {
-                kept_any = true;
-                items.push(id);
+    for block in (0..scene.faces.len()).step_by(FACES_PER_BLOCK) {
+        let end = (block + FACES_PER_BLOCK).min(scene.faces.len());
+        let shared: &Ctx<'_, K> = ctx;
+        let outs: Vec<Result<Option<FaceOut<K>>, OrderError>> = (block..end)
+            .into_par_iter()
+            .with_min_len(FACES_PER_TASK)
+            .map_init(Vec::new, |scratch, fi| {
+                if hidden[fi] {
+                    return Ok(None);
+                }
+                let cull_back = closed[scene.faces[fi].object as usize];
+                prepare_face(shared, scene, fi, cull_back, &planes, scratch).map(Some)
+            })
+            .collect();
+        for (fi, out) in (block..end).zip(outs) {
+            ctx.stats.faces_in += 1;
+            let Some(out) = out? else {
+                ctx.stats.faces_coincident += 1;
+                continue;
+            };
+            if out.degenerate {
+                ctx.stats.faces_degenerate += 1;
+                continue;
             }
-        }
-        whole[fi] = out.intact && kept_any;
-        ctx.stats.faces_near_clipped += out.lost_to_near as usize;
-        if out.culled_all {
-            ctx.stats.faces_culled += 1;
-        } else if !kept_any {
-            ctx.stats.faces_clipped += 1;
+            ctx.stats.splits += out.splits;
+            ctx.quad_halves[fi] = out.quad_halves;
+            let mut kept_any = false;
+            for (piece, in_picture) in out.pieces {
+                let id = ctx.push(piece);
+                if in_picture {
+                    kept_any = true;
+                    items.push(id);
+                }
+            }
+            whole[fi] = out.intact && kept_any;
+            ctx.stats.faces_near_clipped += out.lost_to_near as usize;
+            if out.culled_all {
+                ctx.stats.faces_culled += 1;
+            } else if !kept_any {
+                ctx.stats.faces_clipped += 1;
+            }
         }
     }
     ctx.stats.polygons = items.len();
     Ok((items, whole))
 }
+
+/// Faces prepared in parallel before their pieces are added, in [`prepare`].
+const FACES_PER_BLOCK: usize = 8192;
 
 /// Faces per parallel task in [`prepare`].
 const FACES_PER_TASK: usize = 64;
