@@ -23,10 +23,14 @@
 //! ```
 
 mod camera;
+mod look;
 mod model;
 mod shade;
 pub mod shapes;
 
 pub use camera::{Camera, CameraError, Projected, Projection, Viewpoint, DEFAULT_VIEW_DIRECTION};
+pub use look::{Fog, FogError, FogFalloff, ParseShadingError, Shading};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
-pub use shade::{interpolated_normal, polygon_normal, shade_face, shade_point, Effects, Rgb};
+pub use shade::{
+    interpolated_normal, polygon_normal, shade_face, shade_in_scene, shade_point, Effects, Rgb,
+};

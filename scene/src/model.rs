@@ -3,7 +3,7 @@
 use glam::DVec3;
 use thiserror::Error;
 
-use crate::Camera;
+use crate::{Camera, Fog, Shading};
 
 /// Errors raised while building a scene in code.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -175,6 +175,10 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Camera given by the input, if any.
     pub camera: Option<Camera>,
+    /// The interpolation asked for (`None`: the default rule of [`Shading::of_face`]).
+    pub shading: Option<Shading>,
+    /// Depth cueing, when asked for.
+    pub fog: Option<Fog>,
     /// Warnings collected while loading (missing MTL, dropped faces, ...).
     pub warnings: Vec<String>,
     /// The files the scene was read from: the input and every file it referenced
