@@ -103,12 +103,12 @@ pub fn run(a: DemoArgs) -> Result<ExitCode> {
     let style = Style {
         seamless: true,
         smooth: true,
-        seams: Style::default().seams,
         background: Some([1.0, 1.0, 1.0, 1.0]),
         outline: a.outline.then_some(Outline {
             color: [0.1, 0.1, 0.1, 1.0],
             width: 1.0,
         }),
+        ..Style::default()
     };
     let pic = picture(&scene, &ordered, &style);
     let ps = write_atomic(&output, &[], |w| Ok(painter_for(format).paint(&pic, w)?))?;

@@ -61,6 +61,7 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     let style = Style {
         seamless: true,
         smooth: true,
+        tolerance: a.shading_tolerance,
         seams: a.seams,
         background: match a.background {
             Some(Background::None) => None,

@@ -77,9 +77,11 @@ mod model;
 mod number;
 mod painter;
 mod pdf;
+pub mod phong;
 mod png;
 mod runs;
 mod seams;
+mod smooth;
 mod svg;
 mod tikz;
 

@@ -32,5 +32,6 @@ pub use camera::{Camera, CameraError, Projected, Projection, Viewpoint, DEFAULT_
 pub use look::{Fog, FogError, FogFalloff, ParseShadingError, Shading};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
 pub use shade::{
-    interpolated_normal, polygon_normal, shade_face, shade_in_scene, shade_point, Effects, Rgb,
+    interpolated_normal, polygon_normal, shade_face, shade_in_scene, shade_point, shade_sided,
+    shade_sided_in_scene, Effects, FaceNormals, Rgb,
 };

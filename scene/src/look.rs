@@ -170,13 +170,19 @@ mod tests {
         fog.validate().unwrap();
         let eye = DVec3::ZERO;
         // Before start: unchanged; at 3/4 of the way: a quarter of the colour left.
-        assert_eq!(fog.apply([0.2, 0.4, 0.6], DVec3::new(0.0, 0.0, -1.0), eye), [0.2, 0.4, 0.6]);
+        assert_eq!(
+            fog.apply([0.2, 0.4, 0.6], DVec3::new(0.0, 0.0, -1.0), eye),
+            [0.2, 0.4, 0.6]
+        );
         let c = fog.apply([0.2, 0.4, 0.6], DVec3::new(0.0, 0.0, -5.0), eye);
         let want = [0.25 * 0.2 + 0.75, 0.25 * 0.4 + 0.75, 0.25 * 0.6 + 0.75];
         for k in 0..3 {
             assert!((c[k] - want[k]).abs() < 1e-15, "{c:?} vs {want:?}");
         }
-        assert_eq!(fog.apply([0.2, 0.4, 0.6], DVec3::new(0.0, 9.0, 0.0), eye), [1.0; 3]);
+        assert_eq!(
+            fog.apply([0.2, 0.4, 0.6], DVec3::new(0.0, 9.0, 0.0), eye),
+            [1.0; 3]
+        );
     }
 
     #[test]

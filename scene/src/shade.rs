@@ -100,12 +100,26 @@ pub fn polygon_normal(points: &[DVec3]) -> DVec3 {
 /// The colour of a point with normal `n` (any length) seen from `eye`, under `lights`
 /// (a white headlight when empty). `illum 0` returns `Kd` unchanged.
 pub fn shade_point(m: &Material, p: DVec3, n: DVec3, eye: DVec3, lights: &[Light]) -> Rgb {
+    shade_sided(m, p, n, n, eye, lights)
+}
+
+/// [`shade_point`] with the lit side chosen by `side` (the face's geometric normal)
+/// instead of `n`: an interpolated normal of a face seen from its front may turn away
+/// from the eye near a silhouette, and must not flip there (the colour would jump).
+pub fn shade_sided(
+    m: &Material,
+    p: DVec3,
+    n: DVec3,
+    side: DVec3,
+    eye: DVec3,
+    lights: &[Light],
+) -> Rgb {
     if m.illum == 0 {
         return m.kd;
     }
     let to_eye = (eye - p).normalize_or_zero();
     let mut n = n.normalize_or_zero();
-    if n.dot(to_eye) < 0.0 {
+    if side.dot(eye - p) < 0.0 {
         n = -n; // two-sided lighting
     }
     const HEADLIGHT: [Light; 1] = [Light {
@@ -163,35 +177,58 @@ pub fn shade_point(m: &Material, p: DVec3, n: DVec3, eye: DVec3, lights: &[Light
 /// interpolate barycentrically; larger faces use the fan triangle from the first corner
 /// that contains `p` (the nearest one when rounding puts `p` just outside all of them).
 pub fn interpolated_normal(scene: &Scene, face: u32, p: DVec3) -> Option<DVec3> {
-    let f = &scene.faces[face as usize];
-    let ns = f.normals.as_ref()?;
-    let c: Vec<DVec3> = f
-        .vertices
-        .iter()
-        .map(|&v| scene.vertices[v as usize])
-        .collect();
-    let n: Vec<DVec3> = ns.iter().map(|&i| scene.normals[i as usize]).collect();
-    let mut best: Option<(f64, DVec3)> = None;
-    for i in 1..c.len() - 1 {
-        let (a, b, d) = (c[0], c[i], c[i + 1]);
-        let nrm = (b - a).cross(d - a);
-        let den = nrm.length_squared();
-        if den <= 0.0 || !den.is_finite() {
-            continue;
-        }
-        let wa = (d - b).cross(p - b).dot(nrm) / den;
-        let wb = (a - d).cross(p - d).dot(nrm) / den;
-        let wd = 1.0 - wa - wb;
-        let worst = wa.min(wb).min(wd);
-        let interp = n[0] * wa + n[i] * wb + n[i + 1] * wd;
-        if best.is_none_or(|(w, _)| worst > w) {
-            best = Some((worst, interp));
-        }
-        if worst >= 0.0 {
-            break;
-        }
+    FaceNormals::new(scene, face)?.at(p)
+}
+
+/// A face's corners and vertex normals, gathered once for many
+/// [`interpolated_normal`] look-ups (per-point shading asks for thousands per face).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceNormals {
+    corners: Vec<DVec3>,
+    normals: Vec<DVec3>,
+}
+
+impl FaceNormals {
+    /// The corners and normals of `face`; `None` when it has no vertex normals.
+    pub fn new(scene: &Scene, face: u32) -> Option<FaceNormals> {
+        let f = &scene.faces[face as usize];
+        let ns = f.normals.as_ref()?;
+        Some(FaceNormals {
+            corners: f
+                .vertices
+                .iter()
+                .map(|&v| scene.vertices[v as usize])
+                .collect(),
+            normals: ns.iter().map(|&i| scene.normals[i as usize]).collect(),
+        })
     }
-    best.map(|(_, v)| v).filter(|v| v.length_squared() > 0.0)
+
+    /// The interpolated normal at `p`, as [`interpolated_normal`]; `None` when it
+    /// vanishes or every fan triangle is degenerate.
+    pub fn at(&self, p: DVec3) -> Option<DVec3> {
+        let (c, n) = (&self.corners, &self.normals);
+        let mut best: Option<(f64, DVec3)> = None;
+        for i in 1..c.len() - 1 {
+            let (a, b, d) = (c[0], c[i], c[i + 1]);
+            let nrm = (b - a).cross(d - a);
+            let den = nrm.length_squared();
+            if den <= 0.0 || !den.is_finite() {
+                continue;
+            }
+            let wa = (d - b).cross(p - b).dot(nrm) / den;
+            let wb = (a - d).cross(p - d).dot(nrm) / den;
+            let wd = 1.0 - wa - wb;
+            let worst = wa.min(wb).min(wd);
+            let interp = n[0] * wa + n[i] * wb + n[i + 1] * wd;
+            if best.is_none_or(|(w, _)| worst > w) {
+                best = Some((worst, interp));
+            }
+            if worst >= 0.0 {
+                break;
+            }
+        }
+        best.map(|(_, v)| v).filter(|v| v.length_squared() > 0.0)
+    }
 }
 
 /// The flat colour of face `face` seen from `eye`: lit at its centroid with its geometric
@@ -212,7 +249,19 @@ pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
 /// [`shade_point`] under the scene's lights, then seen through the scene's fog (when it
 /// has one; `illum 0` colours stay exactly `Kd`).
 pub fn shade_in_scene(scene: &Scene, m: &Material, p: DVec3, n: DVec3, eye: DVec3) -> Rgb {
-    let c = shade_point(m, p, n, eye, &scene.lights);
+    shade_sided_in_scene(scene, m, p, n, n, eye)
+}
+
+/// [`shade_sided`] under the scene's lights, then through the scene's fog.
+pub fn shade_sided_in_scene(
+    scene: &Scene,
+    m: &Material,
+    p: DVec3,
+    n: DVec3,
+    side: DVec3,
+    eye: DVec3,
+) -> Rgb {
+    let c = shade_sided(m, p, n, side, eye, &scene.lights);
     match &scene.fog {
         Some(fog) if m.illum >= 1 => fog.apply(c, p, eye),
         _ => c,

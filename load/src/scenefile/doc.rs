@@ -15,6 +15,7 @@ pub(crate) struct Doc {
     pub(crate) mesh: Vec<Spanned<MeshDoc>>,
     #[serde(default)]
     pub(crate) light: Vec<Spanned<LightDoc>>,
+    pub(crate) fog: Option<Spanned<FogDoc>>,
 }
 
 #[derive(Deserialize)]
@@ -51,6 +52,33 @@ pub(crate) struct OutputDoc {
     pub(crate) sort: Option<SortDoc>,
     pub(crate) arith: Option<ArithDoc>,
     pub(crate) cull: Option<CullDoc>,
+    pub(crate) shading: Option<ShadingDoc>,
+}
+
+#[derive(Deserialize, Clone, Copy, Debug)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum ShadingDoc {
+    Flat,
+    Gouraud,
+    Phong,
+}
+
+#[derive(Deserialize, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum FogModeDoc {
+    Linear,
+    Exponential,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FogDoc {
+    #[serde(alias = "colour")]
+    pub(crate) color: Option<Spanned<ColourDoc>>,
+    pub(crate) start: Option<f64>,
+    pub(crate) end: Option<f64>,
+    pub(crate) mode: Option<FogModeDoc>,
+    pub(crate) density: Option<f64>,
 }
 
 #[derive(Deserialize)]

@@ -20,6 +20,15 @@
 //! sort = "adaptive"         # adaptive | bsp | newell | simple
 //! arith = "exact"           # exact | float
 //! cull = "auto"             # auto | on | off
+//! shading = "phong"         # flat | gouraud | phong (default: gouraud where there
+//!                           # are vertex normals, see limn_scene::Shading)
+//!
+//! [fog]                     # optional depth cueing (lit materials only)
+//! color = [1.0, 1.0, 1.0]   # default white
+//! start = 2.0               # distance from the eye where fog begins (default 0)
+//! end = 10.0                # linear fog: full fog from here on
+//! # mode = "exponential"    # linear (default) | exponential: exp(-density·(d - start))
+//! # density = 0.3           # exponential only, instead of end
 //!
 //! [[mesh]]
 //! path = "bunny.obj"        # relative to this file; obj, stl, ply, gltf, glb
@@ -44,6 +53,7 @@
 //! include another one. Unknown keys are errors.
 
 mod doc;
+mod effects;
 mod settings;
 
 use std::ops::Range;
@@ -198,6 +208,14 @@ pub(crate) fn parse(
         scene.lights.push(settings::light(&cx, l)?);
     }
     let options = settings::options(&cx, &doc)?;
+    scene.shading = doc
+        .output
+        .as_ref()
+        .and_then(|o| o.shading)
+        .map(effects::shading);
+    if let Some(f) = &doc.fog {
+        scene.fog = Some(effects::fog(&cx, f)?);
+    }
     if let Some(cam) = &doc.camera {
         let size = options.size.unwrap_or((800, 600));
         scene.camera = Some(settings::camera(&cx, cam, &scene, size)?);
