@@ -5,7 +5,11 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use limn_depthsort::order;
-use limn_paint::{painter_for, picture, Format, Outline, Painter, Style, TikzOptions, TikzPainter};
+use limn_paint::{
+    painter_for, picture, Format, Outline, Painter, Style, SvgOptions, SvgPainter, TikzOptions,
+    TikzPainter,
+};
+use limn_scene::Effects;
 
 use crate::args::{Background, MethodArg, RenderArgs};
 use crate::losses::losses;
@@ -58,10 +62,18 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     let t2 = Instant::now();
     progress.phase("writing");
     let fo = &loaded.opts;
+    // SVG draws Phong in two approximations (Phong to Gouraud triangles, those to
+    // gradients and flat pieces): each gets half of the tolerance.
+    let phong_in_svg = format == Format::Svg && Effects::of(&loaded.scene).phong;
+    let tolerance = if phong_in_svg {
+        a.shading_tolerance / 2.0
+    } else {
+        a.shading_tolerance
+    };
     let style = Style {
         seamless: true,
         smooth: true,
-        tolerance: a.shading_tolerance,
+        tolerance,
         seams: a.seams,
         background: match a.background {
             Some(Background::None) => None,
@@ -81,6 +93,10 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
             standalone: a.standalone,
             ..TikzOptions::default()
+        })),
+        Format::Svg => Box::new(SvgPainter::new(SvgOptions {
+            tolerance,
+            ..SvgOptions::default()
         })),
         _ => painter_for(format),
     };
