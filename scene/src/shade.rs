@@ -206,8 +206,18 @@ impl FaceNormals {
     /// The interpolated normal at `p`, as [`interpolated_normal`]; `None` when it
     /// vanishes or every fan triangle is degenerate.
     pub fn at(&self, p: DVec3) -> Option<DVec3> {
-        let (c, n) = (&self.corners, &self.normals);
-        let mut best: Option<(f64, DVec3)> = None;
+        let ([a, b, c], w) = self.weights(p)?;
+        let n = &self.normals;
+        Some(n[a] * w[0] + n[b] * w[1] + n[c] * w[2]).filter(|v| v.length_squared() > 0.0)
+    }
+
+    /// The fan triangle (corner indices `0, i, i + 1`) that contains `p` (the nearest
+    /// when rounding puts `p` just outside all of them) and `p`'s barycentric
+    /// coordinates in it: the weights [`FaceNormals::at`] gives the corners' normals,
+    /// for interpolating anything else given per corner.
+    pub fn weights(&self, p: DVec3) -> Option<([usize; 3], [f64; 3])> {
+        let c = &self.corners;
+        let mut best: Option<(f64, [usize; 3], [f64; 3])> = None;
         for i in 1..c.len() - 1 {
             let (a, b, d) = (c[0], c[i], c[i + 1]);
             let nrm = (b - a).cross(d - a);
@@ -219,15 +229,24 @@ impl FaceNormals {
             let wb = (a - d).cross(p - d).dot(nrm) / den;
             let wd = 1.0 - wa - wb;
             let worst = wa.min(wb).min(wd);
-            let interp = n[0] * wa + n[i] * wb + n[i + 1] * wd;
-            if best.is_none_or(|(w, _)| worst > w) {
-                best = Some((worst, interp));
+            if best.is_none_or(|(w, ..)| worst > w) {
+                best = Some((worst, [0, i, i + 1], [wa, wb, wd]));
             }
             if worst >= 0.0 {
                 break;
             }
         }
-        best.map(|(_, v)| v).filter(|v| v.length_squared() > 0.0)
+        best.map(|(_, idx, w)| (idx, w))
+    }
+
+    /// The face's corners.
+    pub fn corners(&self) -> &[DVec3] {
+        &self.corners
+    }
+
+    /// The face's vertex normals, one per corner.
+    pub fn normals(&self) -> &[DVec3] {
+        &self.normals
     }
 }
 
