@@ -21,7 +21,7 @@
 //! gradients and flat pieces within [`SvgOptions::tolerance`] of its linear
 //! interpolation (see `svg_smooth.rs`). An opaque one is first filled whole with the
 //! mean of its colours, so the hairlines viewers leave between its pieces show that
-//! colour, not what lies behind. Each gradient is a `<linearGradient id="sN"
+//! colour, not what lies behind (when it is drawn as two pieces or more). Each gradient is a `<linearGradient id="sN"
 //! gradientUnits="userSpaceOnUse">` written just before the path that uses it.
 //!
 //! The `svg` crate could build the same document, but it stores numbers as `f32` and
@@ -149,7 +149,21 @@ impl Painter for SvgPainter {
                     open_group(b, picture.objects.get(object as usize));
                     group = Some(object);
                 }
-                if !smooth || alpha >= 1000 {
+                // Smooth runs: their pieces, and whether a cover must hide the hairlines
+                // between them (only when there are two or more).
+                let pieces: Vec<Vec<svg_smooth::Piece>> = if smooth {
+                    run.iter()
+                        .filter_map(|f| {
+                            f.colors
+                                .as_ref()
+                                .map(|cs| svg_smooth::pieces(&f.points, cs, tolerance))
+                        })
+                        .collect()
+                } else {
+                    Vec::new()
+                };
+                let cover = pieces.iter().map(Vec::len).sum::<usize>() > 1;
+                if !smooth || (alpha >= 1000 && cover) {
                     b.extend_from_slice(b"<path d=\"");
                     for (f, reverse) in run.iter().zip(reversals(run)) {
                         for (k, p) in f.oriented(reverse).enumerate() {
