@@ -47,8 +47,11 @@ fn lit_sphere(rings: u32, segments: u32) -> Scene {
     s
 }
 
+/// How one configuration changes the base scene.
+type Change = fn(&mut Scene);
+
 /// The effect configurations measured: a name and how the scene is changed.
-fn configs() -> Vec<(&'static str, fn(&mut Scene))> {
+fn configs() -> Vec<(&'static str, Change)> {
     vec![
         ("unlit (illum 0)", |s| {
             s.materials[0].illum = 0;

@@ -109,7 +109,7 @@ fn refine(
         return;
     }
     let mids = [0, 1, 2].map(|i| s.corner((t[i].world + t[(i + 1) % 3].world) * 0.5));
-    if !(too_curved(s, &t) || !within(s, &t, &mids)) {
+    if !too_curved(s, &t) && within(s, &t, &mids) {
         out.push(GouraudTriangle { corners: t, edges });
         return;
     }

@@ -49,7 +49,7 @@ fn draw(
         ..Style::default()
     };
     let pic = picture(&scene, &ordered, &style);
-    (pic, ordered.camera.clone(), ordered.near, ordered.far)
+    (pic, ordered.camera, ordered.near, ordered.far)
 }
 
 /// The world point of face `face` seen at pixel position `px`.
