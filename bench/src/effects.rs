@@ -195,15 +195,30 @@ pub fn run(quick: bool, runs: usize) -> Result<String> {
     );
     let reps = runs.max(5) * 3;
     let (mut full, mut flat) = (Vec::new(), Vec::new());
-    for _ in 0..reps {
-        let t = Instant::now();
-        let p = picture(&unlit, &ordered, &style);
-        let _ = write(&svg, &p);
-        full.push(t.elapsed().as_secs_f64() * 1e3);
-        let t = Instant::now();
-        let p = flat_only_picture(&unlit, &ordered, &style);
-        let _ = write(&svg, &p);
-        flat.push(t.elapsed().as_secs_f64() * 1e3);
+    for rep in 0..reps {
+        // Each path builds, writes and drops its picture inside its own timing; the
+        // order alternates so that neither always runs on the other's leftovers.
+        let full_path = || {
+            let t = Instant::now();
+            let p = picture(&unlit, &ordered, &style);
+            let _ = write(&svg, &p);
+            drop(p);
+            t.elapsed().as_secs_f64() * 1e3
+        };
+        let flat_path = || {
+            let t = Instant::now();
+            let p = flat_only_picture(&unlit, &ordered, &style);
+            let _ = write(&svg, &p);
+            drop(p);
+            t.elapsed().as_secs_f64() * 1e3
+        };
+        if rep % 2 == 0 {
+            full.push(full_path());
+            flat.push(flat_path());
+        } else {
+            flat.push(flat_path());
+            full.push(full_path());
+        }
     }
     let (full, flat) = (median(full), median(flat));
     writeln!(

@@ -12,11 +12,13 @@
 //! there, in every channel; the other half is the margin for the points between samples
 //! (where clamping at full intensity puts kinks in the colour, sampling at the full
 //! tolerance let differences of 1.15 times the tolerance through; with the margin the
-//! worst seen on a glossy sphere is 0.66 of it, `tests/phong_shading.rs`). Two guards make the sampling trustworthy on highlights smaller than a
-//! triangle: a triangle of a specular material is also split while the angle `θ`
-//! between two of its corner normals has `θ² · Ns > 1` (a highlight is about
-//! `1/√Ns` radians wide, so it cannot hide between samples); and splitting stops when
-//! the longest projected edge is at most [`MIN_EDGE_PX`] or after [`MAX_DEPTH`] levels,
+//! worst seen on a glossy sphere is 0.66 of it, `tests/phong_shading.rs`).
+//!
+//! Two guards make the sampling trustworthy on highlights smaller than a triangle: a
+//! triangle of a specular material is also split while the angle `θ` between two of its
+//! corner normals has `θ² · Ns > 1` (`Ns` capped at 1000; a highlight is about `1/√Ns`
+//! radians wide, so it cannot hide between samples); and splitting stops when the
+//! longest projected edge is at most [`MIN_EDGE_PX`] or after [`MAX_DEPTH`] levels,
 //! where per-pixel output could not show more.
 //!
 //! Pieces meeting at a T-junction may disagree along it by up to twice the tolerance;

@@ -8,6 +8,10 @@ use limn_scene::{polygon_normal, shade_sided_in_scene, Camera, FaceNormals, Mate
 use crate::phong::{subdivide, Surface};
 use crate::PaintFragment;
 
+/// The highlight guard of [`crate::phong`] uses at most this specular exponent
+/// (narrower highlights are left to the colour samples).
+pub(crate) const MAX_GUARDED_EXPONENT: f64 = 1000.0;
+
 /// What smooth shading needs to know about the view.
 pub(crate) struct View<'a> {
     /// The camera the fragments were projected with.
@@ -88,7 +92,8 @@ impl<'a> FaceLight<'a> {
             normal: &normal,
             project: &project,
             highlight: if m.illum >= 2 && m.ks.iter().any(|&k| k > 0.0) {
-                m.ns.max(1.0)
+                // Capped so that an extreme exponent cannot ask for millions of pieces.
+                m.ns.clamp(1.0, MAX_GUARDED_EXPONENT)
             } else {
                 0.0
             },
