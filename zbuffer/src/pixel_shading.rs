@@ -1,5 +1,5 @@
 //! Smooth shading per pixel, for every method that yields a face id per pixel: the
-//! world point seen at the pixel centre (the eye ray met with the face's plane) is
+//! world point seen at the pixel centre (the pixel's ray met with the face's plane) is
 //! shaded with the face's mode ([`Shading::of_face`]): Gouraud interpolates the
 //! corners' colours with the point's barycentric weights (perspective-correct, as
 //! they are taken in world space), Phong interpolates the normals and lights the point.
@@ -55,14 +55,21 @@ pub(crate) fn shade(
             };
             let x = (i % frame.width as usize) as f64 + 0.5;
             let y = (i / frame.width as usize) as f64 + 0.5;
-            let ndc = DVec4::new(x / w * 2.0 - 1.0, 1.0 - y / h * 2.0, -1.0, 1.0);
-            let q = inv * ndc;
-            let dir = q.truncate() / q.w - eye;
+            // The pixel's ray from the near to the far plane (any projection).
+            let at = |z: f64| {
+                let q = inv * DVec4::new(x / w * 2.0 - 1.0, 1.0 - y / h * 2.0, z, 1.0);
+                q.truncate() / q.w
+            };
+            let (near, far) = (at(-1.0), at(1.0));
+            let dir = far - near;
             let den = dir.dot(s.side);
             if den == 0.0 || !den.is_finite() {
                 return flat[id as usize];
             }
-            let p = eye + dir * ((s.origin - eye).dot(s.side) / den);
+            let p = near + dir * ((s.origin - near).dot(s.side) / den);
+            if !p.is_finite() {
+                return flat[id as usize];
+            }
             let m = &scene.materials[scene.faces[id as usize].material as usize];
             let c = if s.phong {
                 let n = s.normals.at(p).unwrap_or(s.side);

@@ -356,6 +356,27 @@ fn flat_colours_are_shade_face() {
 /// the corners' colours; flat faces keep `shade_face`.
 #[test]
 fn smooth_faces_are_shaded_per_pixel() {
+    smooth_per_pixel(Camera::new(
+        glam::DVec3::new(0.0, 0.0, 4.0),
+        glam::DVec3::ZERO,
+        64,
+        64,
+    ));
+}
+
+/// The same under a parallel projection: every pixel's ray runs along the view axis.
+#[test]
+fn smooth_faces_are_shaded_per_pixel_in_parallel_projection() {
+    smooth_per_pixel(Camera::orthographic(
+        glam::DVec3::new(0.0, 0.0, 4.0),
+        glam::DVec3::ZERO,
+        2.5,
+        64,
+        64,
+    ));
+}
+
+fn smooth_per_pixel(cam: Camera) {
     use limn_scene::{
         polygon_normal, shade_sided_in_scene, shapes, FaceNormals, Light, LightKind, Material,
         Shading,
@@ -368,7 +389,6 @@ fn smooth_faces_are_shaded_per_pixel() {
         kind: LightKind::Point(glam::DVec3::new(2.0, 3.0, 4.0)),
         color: [1.0; 3],
     }];
-    let cam = Camera::new(glam::DVec3::new(0.0, 0.0, 4.0), glam::DVec3::ZERO, 64, 64);
     let opts = RenderOptions::default();
     let (near, far) = cam.near_far(&s);
     let inv = cam.view_projection(near, far).inverse();
@@ -380,11 +400,17 @@ fn smooth_faces_are_shaded_per_pixel() {
             1.0,
         );
         let q = inv * ndc;
-        let dir = q.truncate() / q.w - cam.eye;
+        let on_near = q.truncate() / q.w;
+        // From the eye through the pixel, or along the view axis without perspective.
+        let (from, dir) = if cam.is_perspective() {
+            (cam.eye, on_near - cam.eye)
+        } else {
+            (on_near, cam.forward())
+        };
         let pts = s.face_points(face);
         let n = polygon_normal(&pts);
         let c = pts.iter().copied().sum::<glam::DVec3>() / 3.0;
-        (cam.eye + dir * ((c - cam.eye).dot(n) / dir.dot(n)), n)
+        (from + dir * ((c - from).dot(n) / dir.dot(n)), n)
     };
     let mut distinct = std::collections::HashSet::new();
     for mode in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
