@@ -5,6 +5,7 @@
 //! bytes, and pixels that disagree with exact ray casting outside the edge band. Every
 //! SVG is rasterised the same way, without anti-aliasing.
 
+mod effects;
 mod limn_runs;
 mod lines_bench;
 mod peers;
@@ -36,6 +37,20 @@ enum Cmd {
     /// Time a surface with its grid lines and a point scatter, hidden exactly, in every
     /// format (Markdown).
     Lines(lines_bench::LinesArgs),
+    /// Print what each shading effect costs (Markdown): a 100k-triangle lit sphere,
+    /// the effects machinery on an unlit scene against the flat-only path, SVG bytes
+    /// against the shading tolerance.
+    Effects(EffectsArgs),
+}
+
+#[derive(Debug, clap::Args)]
+struct EffectsArgs {
+    /// A 10k-triangle sphere instead of 100k.
+    #[arg(long)]
+    quick: bool,
+    /// Runs per measurement (the median is reported).
+    #[arg(long, default_value_t = 3)]
+    runs: usize,
 }
 
 #[derive(Debug, clap::Args)]
@@ -85,6 +100,10 @@ fn main() -> Result<()> {
     let a = match Cli::parse().command {
         Cmd::Table(a) => a,
         Cmd::Lines(l) => return lines_bench::run(l),
+        Cmd::Effects(e) => {
+            print!("{}", effects::run(e.quick, e.runs.max(1))?);
+            return Ok(());
+        }
     };
     let runs = a.runs.unwrap_or(if a.quick { 3 } else { 5 });
     let peer_dir = a

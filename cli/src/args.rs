@@ -7,6 +7,7 @@ use clap::error::ErrorKind;
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use limn_depthsort::{Arith, CullMode, SortMode};
 use limn_paint::Format;
+use limn_scene::Shading;
 
 /// Draw 3D polygon scenes as resolution-independent pictures with hidden surfaces
 /// removed exactly.
@@ -78,6 +79,7 @@ const RENDER_HELP: &str = "Examples:
   limn render part.stl -o p.svg --style hidden-line --hidden dashed
   limn render part.stl -o p.svg --style hidden-line --fill none --crease 20  # plotter lines
   limn render plot.toml -o plot.pdf              # [[line]], [[points]], [[label]] hidden exactly
+  limn render bunny.obj -o b.pdf --shading phong --shading-tolerance 0.002
 
 Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
 limit reached; no output file is left), 2 usage error.";
@@ -126,6 +128,10 @@ fn arith_parser() -> impl TypedValueParser<Value = Arith> {
 
 fn cull_parser() -> impl TypedValueParser<Value = CullMode> {
     named(&CullMode::ALL, CullMode::name, CullMode::from_name)
+}
+
+fn shading_parser() -> impl TypedValueParser<Value = Shading> {
+    named(&Shading::ALL, Shading::name, |s| s.parse().ok())
 }
 
 fn format_parser() -> impl TypedValueParser<Value = Format> {
@@ -205,6 +211,12 @@ pub struct ViewArgs {
     /// Write statistics as one JSON object to PATH (`-` = standard output).
     #[arg(long, value_name = "PATH|-")]
     pub stats: Option<PathBuf>,
+    /// Interpolation across lit faces with vertex normals: flat, gouraud (colours at
+    /// the vertices) or phong (lighting per point; image-space methods per pixel,
+    /// vector outputs within --shading-tolerance) [default: the scene file's, else
+    /// gouraud where there are vertex normals].
+    #[arg(long, value_parser = shading_parser())]
+    pub shading: Option<Shading>,
     /// Print nothing but errors.
     #[arg(long, short)]
     pub quiet: bool,
@@ -239,6 +251,11 @@ pub struct RenderArgs {
     /// scene file's, else none].
     #[arg(long, value_name = "COLOUR", value_parser = parse_background)]
     pub background: Option<Background>,
+    /// Largest difference per colour channel (0..1) between the painted picture and
+    /// per-point shading where the format cannot interpolate exactly: Phong in every
+    /// vector format, Gouraud in SVG [default: 1/255, one 8-bit step].
+    #[arg(long, value_name = "T", default_value_t = 1.0 / 255.0, value_parser = parse_tolerance)]
+    pub shading_tolerance: f64,
     /// How to render: painter's order (vector) or an image-space method (PNG only).
     #[arg(long, value_enum, default_value_t = MethodArg::Painter)]
     pub method: MethodArg,
@@ -417,6 +434,19 @@ fn parse_distance(s: &str) -> Result<f64, String> {
         .map_err(|_| format!("`{s}` is not a number"))?;
     if !(v.is_finite() && v > 0.0) {
         return Err(format!("distance `{s}` must be a positive number"));
+    }
+    Ok(v)
+}
+
+fn parse_tolerance(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if !(v > 0.0 && v <= 1.0) {
+        return Err(format!(
+            "shading tolerance `{s}` must be above 0 and at most 1"
+        ));
     }
     Ok(v)
 }

@@ -12,13 +12,18 @@ use std::time::Instant;
 use anyhow::Result;
 use glam::{DMat3, DVec3};
 use limn_depthsort::{order, OrderOptions};
-use limn_paint::{painter_for, picture, Outline, Style};
+use limn_paint::{painter_for, picture, Format, Outline, Painter, Style, SvgOptions, SvgPainter};
 use limn_scene::{shapes, Camera, Light, LightKind, Material, Scene, SceneError};
 
 use crate::args::DemoArgs;
 use crate::output::write_atomic;
 use crate::setup::format_of;
 use crate::stats::{write_stats, Drawn, Timing};
+
+/// The demo's shading tolerance: 4/255 per channel. Its glossy sphere in SVG takes
+/// about 1.2 MB at the default 1/255 (gradients and flat pieces, see BENCHMARKS.md),
+/// which is too much for a first picture; at 4/255 the highlight still shows no steps.
+const DEMO_TOLERANCE: f64 = 4.0 / 255.0;
 
 /// Builds the demo scene.
 pub fn scene() -> Result<Scene, SceneError> {
@@ -103,15 +108,23 @@ pub fn run(a: DemoArgs) -> Result<ExitCode> {
     let style = Style {
         seamless: true,
         smooth: true,
-        seams: Style::default().seams,
         background: Some([1.0, 1.0, 1.0, 1.0]),
         outline: a.outline.then_some(Outline {
             color: [0.1, 0.1, 0.1, 1.0],
             width: 1.0,
         }),
+        tolerance: DEMO_TOLERANCE,
+        ..Style::default()
     };
     let pic = picture(&scene, &ordered, &style);
-    let ps = write_atomic(&output, &[], |w| Ok(painter_for(format).paint(&pic, w)?))?;
+    let painter: Box<dyn Painter> = match format {
+        Format::Svg => Box::new(SvgPainter::new(SvgOptions {
+            tolerance: DEMO_TOLERANCE,
+            ..SvgOptions::default()
+        })),
+        _ => painter_for(format),
+    };
+    let ps = write_atomic(&output, &[], |w| Ok(painter.paint(&pic, w)?))?;
     let t3 = Instant::now();
     let timing = Timing {
         load: (t1 - t0).as_secs_f64() * 1e3,

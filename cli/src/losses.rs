@@ -45,10 +45,6 @@ pub fn losses(
                 "translucent fills or outlines: EPS has no opacity, so they are \
                             blended with the background instead"
             }
-            Format::Svg => {
-                "smoothly shaded fragments: SVG has no mesh gradient, so each is \
-                            filled with the mean of its corner colours"
-            }
             Format::Tikz => {
                 "smoothly shaded fragments: TikZ has no triangle-mesh shading, so each \
                             is filled with the mean of its corner colours"

@@ -7,8 +7,9 @@ use anyhow::{bail, Context, Result};
 use limn_depthsort::order_with_marks;
 use limn_paint::{
     hidden_line_picture, hidden_line_scene, painter_for, picture_with_marks, Format,
-    HiddenLineStyle, Outline, Painter, Style, TikzOptions, TikzPainter,
+    HiddenLineStyle, Outline, Painter, Style, SvgOptions, SvgPainter, TikzOptions, TikzPainter,
 };
+use limn_scene::Effects;
 
 use crate::args::{Background, FillArg, HiddenArg, MethodArg, RenderArgs, StyleArg};
 use crate::losses::losses;
@@ -73,9 +74,18 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
     let t2 = Instant::now();
     progress.phase("writing");
     let fo = &loaded.opts;
+    // SVG draws Phong in two approximations (Phong to Gouraud triangles, those to
+    // gradients and flat pieces): each gets half of the tolerance.
+    let phong_in_svg = format == Format::Svg && Effects::of(&loaded.scene).phong;
+    let tolerance = if phong_in_svg {
+        a.shading_tolerance / 2.0
+    } else {
+        a.shading_tolerance
+    };
     let style = Style {
         seamless: true,
         smooth: true,
+        tolerance,
         seams: a.seams,
         background,
         outline: (a.outline || fo.outline == Some(true)).then(|| {
@@ -94,6 +104,10 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
             standalone: a.standalone,
             ..TikzOptions::default()
+        })),
+        Format::Svg => Box::new(SvgPainter::new(SvgOptions {
+            tolerance,
+            ..SvgOptions::default()
         })),
         _ => painter_for(format),
     };

@@ -28,7 +28,7 @@ pub fn load(path: &Path, view: &ViewArgs) -> Result<Loaded> {
     let is_toml = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("toml"));
-    let loaded = if is_toml {
+    let mut loaded = if is_toml {
         let (scene, opts) = load_scene_file(path, &opts).map_err(explain)?;
         Loaded { scene, opts }
     } else {
@@ -38,6 +38,9 @@ pub fn load(path: &Path, view: &ViewArgs) -> Result<Loaded> {
             opts: SceneOptions::default(),
         }
     };
+    if let Some(s) = view.shading {
+        loaded.scene.shading = Some(s);
+    }
     if !view.quiet {
         for w in &loaded.scene.warnings {
             eprintln!("limn: warning: {w}");

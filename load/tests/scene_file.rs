@@ -235,3 +235,56 @@ fn mesh_errors_name_the_scene_line_and_the_mesh() {
     assert!(matches!(e, LoadError::Unsupported { .. }), "{e}");
     assert_at(&e, &p, Some(2));
 }
+
+#[test]
+fn shading_and_fog() {
+    use limn_scene::{Fog, FogFalloff, Shading};
+    let d = dir();
+    let p = scene(
+        d.path(),
+        "[output]\nshading = \"phong\"\n[[mesh]]\npath = \"tri.obj\"\n[fog]\ncolor = \"#ffffff\"\nstart = 1\nend = 4\n",
+    );
+    let s = ok(&p);
+    assert_eq!(s.shading, Some(Shading::Phong));
+    assert_eq!(
+        s.fog,
+        Some(Fog {
+            color: [1.0; 3],
+            start: 1.0,
+            end: 4.0,
+            falloff: FogFalloff::Linear,
+        })
+    );
+    let p = scene(
+        d.path(),
+        "[[mesh]]\npath = \"tri.obj\"\n[fog]\nmode = \"exponential\"\ndensity = 0.25\n",
+    );
+    let s = ok(&p);
+    assert_eq!(s.shading, None);
+    assert_eq!(
+        s.fog.map(|f| f.falloff),
+        Some(FogFalloff::Exponential { density: 0.25 })
+    );
+    for (bad, line) in [
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n\n[fog]\nstart = 3\nend = 2\n",
+            4,
+        ),
+        ("[[mesh]]\npath = \"tri.obj\"\n[fog]\nstart = 1\n", 3),
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[fog]\nmode = \"exponential\"\nend = 3\n",
+            3,
+        ),
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[fog]\nend = 3\ncolor = [2, 0, 0]\n",
+            5,
+        ),
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[output]\nshading = \"smooth\"\n",
+            4,
+        ),
+    ] {
+        let p = scene(d.path(), bad);
+        assert_at(&err(&p), &p, Some(line));
+    }
+}

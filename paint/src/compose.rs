@@ -3,12 +3,14 @@
 //! covers and seam flaps.
 
 use glam::DVec3;
-use limn_scene::{interpolated_normal, shade_face, shade_point, Scene};
+use limn_scene::{shade_face, Scene, Shading};
 
 use limn_depthsort::Ordered;
 
 use crate::covers::covers;
+use crate::phong::DEFAULT_TOLERANCE;
 use crate::seams::seam_flaps;
+use crate::smooth::{FaceLight, View};
 use crate::{Outline, PaintFragment, Picture};
 
 /// How to turn an order into a picture.
@@ -23,10 +25,16 @@ pub struct Style {
     /// cuts leave no anti-aliasing seams (the picture is otherwise the same; see
     /// [`covers`]). Default: `true`.
     pub seamless: bool,
-    /// Gouraud shading for lit faces with vertex normals: colours are computed at the
-    /// fragment's vertices (normals interpolated over the input face) and interpolated
-    /// by the painter. Faces without normals stay flat. Default: `true`.
+    /// Smooth shading for lit faces with vertex normals, as the scene asks
+    /// ([`Scene::shading`], see [`Shading::of_face`]): Gouraud (colours computed at the
+    /// fragment's vertices, normals interpolated over the input face, interpolated by
+    /// the painter) or Phong (the fragment split into Gouraud triangles within
+    /// [`Style::tolerance`] of per-point shading). `false` draws every face flat.
+    /// Default: `true`.
     pub smooth: bool,
+    /// Phong shading: the largest difference per channel (colours in [0, 1]) between
+    /// the painted Gouraud triangles and per-point shading; must be > 0. Default 1/255.
+    pub tolerance: f64,
     /// Width in pixels of the seam flaps (see [`crate::seam_flaps`]); 0 = none. Default:
     /// 0.5 px.
     pub seams: f64,
@@ -39,6 +47,7 @@ impl Default for Style {
             outline: None,
             seamless: true,
             smooth: true,
+            tolerance: DEFAULT_TOLERANCE,
             seams: 0.5,
         }
     }
@@ -52,6 +61,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     let mut cache: Vec<Option<[f64; 4]>> = vec![None; scene.faces.len()];
     let cover = covers(scene, ordered);
     let mut fragments = Vec::with_capacity(ordered.fragments.len());
+    let mut view: Option<View<'_>> = None;
     for (f, cover) in ordered.fragments.iter().zip(&cover) {
         let face = &scene.faces[f.face as usize];
         let fill = *cache[f.face as usize].get_or_insert_with(|| {
@@ -67,33 +77,43 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
             _ => (f.points.clone(), f.original_edges.clone()),
         };
         let m = &scene.materials[face.material as usize];
-        let vertex_colors = (style.smooth && m.illum >= 1 && face.normals.is_some()).then(|| {
-            let world: Vec<DVec3> = if use_cover {
-                face.vertices
-                    .iter()
-                    .map(|&v| scene.vertices[v as usize])
-                    .collect()
-            } else {
-                f.world.clone()
-            };
-            world
-                .iter()
-                .map(|&p| {
-                    let n = interpolated_normal(scene, f.face, p)
-                        .unwrap_or_else(|| limn_scene::polygon_normal(&scene.face_points(f.face)));
-                    let c = shade_point(m, p, n, cam.eye, &scene.lights);
-                    [c[0], c[1], c[2], fill[3]]
-                })
-                .collect()
-        });
-        fragments.push(PaintFragment {
+        let shading = if style.smooth {
+            Shading::of_face(scene.shading, face, m)
+        } else {
+            Shading::Flat
+        };
+        let mut frag = PaintFragment {
             points,
             fill,
-            vertex_colors,
+            vertex_colors: None,
             face: f.face,
             object: face.object,
             original_edges,
-        });
+        };
+        if shading == Shading::Flat {
+            fragments.push(frag);
+            continue;
+        }
+        let world: Vec<DVec3> = if use_cover {
+            face.vertices
+                .iter()
+                .map(|&v| scene.vertices[v as usize])
+                .collect()
+        } else {
+            f.world.clone()
+        };
+        let light = FaceLight::new(scene, f.face);
+        if shading == Shading::Phong && world.len() == frag.points.len() {
+            let view = view.get_or_insert_with(|| View {
+                camera: cam,
+                vp: cam.view_projection(ordered.near, ordered.far),
+                tolerance: style.tolerance,
+            });
+            light.phong(&frag, &world, view, &mut fragments);
+        } else {
+            frag.vertex_colors = Some(light.vertex_colors(&world, cam.eye, fill[3]));
+            fragments.push(frag);
+        }
     }
     let fragments = if style.seams.is_finite() && style.seams > 0.0 {
         seam_flaps(fragments, style.seams)

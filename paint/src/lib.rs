@@ -11,7 +11,7 @@
 //!
 //! | backend | writer | Gouraud fragments | opacity < 1 |
 //! |---|---|---|---|
-//! | [`SvgPainter`] | text written directly | average colour (counted as approximated) | `fill-opacity` |
+//! | [`SvgPainter`] | text written directly | linear gradients and flat pieces within a tolerance | `fill-opacity` |
 //! | [`PdfPainter`] | `pdf-writer` | type-4 free-form triangle-mesh shading | `ExtGState` `/ca` |
 //! | [`EpsPainter`] | text written directly | `shfill` with a type-4 shading | blended with the backdrop (approximated) |
 //! | [`PngPainter`] | tiny-skia, anti-aliased | interpolated per pixel | source-over blending |
@@ -88,10 +88,13 @@ mod model;
 mod number;
 mod painter;
 mod pdf;
+pub mod phong;
 mod png;
 mod runs;
 mod seams;
+mod smooth;
 mod svg;
+mod svg_smooth;
 mod tikz;
 
 pub use annotate::{head_length, marker_stroke, picture_with_marks};

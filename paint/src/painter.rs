@@ -21,7 +21,7 @@ pub struct PaintStats {
     /// Fragments clipped to the guard box or dropped outside it.
     pub clipped: usize,
     /// Fragments (and outline paths) the format could only approximate: translucency in
-    /// EPS, Gouraud shading in SVG and TikZ.
+    /// EPS, Gouraud shading in TikZ.
     pub approximated: usize,
     /// Line pieces stroked (marks of kind [`crate::MarkKind::Line`]).
     pub lines: usize,

@@ -19,9 +19,10 @@ fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
 
 /// Adds seam flaps: viewers anti-alias each path on its own, so where two fills meet
 /// along an edge both edge pixels are only partly covered and the background shows
-/// through as a hairline. For every edge an opaque flat fragment shares (end points
-/// equal) with an opaque fragment of another face painted *later*, a flap in the first
-/// fragment's colour is painted right after it: the part of the later fragment within
+/// through as a hairline. For every edge an opaque fragment shares (end points equal)
+/// with an opaque fragment of another face painted *later*, a flap in the first
+/// fragment's colour (for a smooth fragment: the mean of the edge's end colours, flat)
+/// is painted right after it: the part of the later fragment within
 /// `width` pixels of the shared edge. The later fragment covers its flaps entirely, so
 /// the picture stays exactly the same at every point (the flap only fills the
 /// anti-aliased pixels under the shared edge): silhouettes, edges against faces painted
@@ -54,7 +55,7 @@ pub fn seam_flaps_indexed(
     // output with their flaps after them: no fragment is copied.
     let mut flaps: Vec<Vec<PaintFragment>> = vec![Vec::new(); fragments.len()];
     for (i, f) in fragments.iter().enumerate() {
-        if !opaque(f) || f.vertex_colors.is_some() {
+        if !opaque(f) {
             continue;
         }
         let n = f.points.len();
@@ -68,7 +69,21 @@ pub fn seam_flaps_indexed(
                 continue;
             };
             if let Some(flap) = flap(&fragments[j].points, a, b, width) {
-                let mut p = PaintFragment::new(flap, f.fill);
+                // A smooth fragment's flap takes the colour half-way along the edge.
+                let fill = match &f.vertex_colors {
+                    Some(cs) if cs.len() == n => {
+                        let (ca, cb) = (cs[e], cs[(e + 1) % n]);
+                        [0, 1, 2, 3].map(|k| {
+                            if k == 3 {
+                                f.fill[3]
+                            } else {
+                                0.5 * (ca[k] + cb[k])
+                            }
+                        })
+                    }
+                    _ => f.fill,
+                };
+                let mut p = PaintFragment::new(flap, fill);
                 p.face = f.face;
                 p.object = f.object;
                 p.original_edges = vec![false; p.points.len()];
@@ -76,13 +91,29 @@ pub fn seam_flaps_indexed(
             }
         }
     }
+    // A smooth fragment's flaps wait until the consecutive smooth fragments of its face
+    // are out (Phong pieces): a flap between them would split the painters' run of the
+    // face. Every later face is painted after that run, so each flap still comes first.
     let mut out = Vec::with_capacity(fragments.len() + flaps.iter().map(Vec::len).sum::<usize>());
     let mut at = Vec::with_capacity(fragments.len());
+    let mut waiting: Vec<PaintFragment> = Vec::new();
     for (f, fl) in fragments.into_iter().zip(flaps) {
+        let smooth_run = out
+            .last()
+            .is_some_and(|l: &PaintFragment| l.face == f.face && l.vertex_colors.is_some());
+        if !(smooth_run && f.vertex_colors.is_some()) {
+            out.append(&mut waiting);
+        }
+        let smooth = f.vertex_colors.is_some();
         at.push(out.len());
         out.push(f);
-        out.extend(fl);
+        if smooth {
+            waiting.extend(fl);
+        } else {
+            out.extend(fl);
+        }
     }
+    out.append(&mut waiting);
     (out, at)
 }
 

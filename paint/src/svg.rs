@@ -18,8 +18,14 @@
 //! Object names go in `data-name` (XML-escaped) because names need not be unique nor free
 //! of spaces, which rules out `id` and `class`; an object index out of range gives a `<g>`
 //! without `data-name`. Stroke width, caps, joins and opacity are set once on `<svg>` and
-//! inherited by the outline paths. SVG has no Gouraud shading: a fragment with vertex
-//! colours is filled with their mean and counted in [`PaintStats::approximated`].
+//! inherited by the outline paths.
+//!
+//! SVG has no mesh gradient: a fragment with vertex colours is drawn as linear
+//! gradients and flat pieces within [`SvgOptions::tolerance`] of its linear
+//! interpolation (see `svg_smooth.rs`). An opaque one is first filled whole with the
+//! mean of its colours, so the hairlines viewers leave between its pieces show that
+//! colour, not what lies behind (when it is drawn as two pieces or more). Each gradient is a `<linearGradient id="sN"
+//! gradientUnits="userSpaceOnUse">` written just before the path that uses it.
 //!
 //! The `svg` crate could build the same document, but it stores numbers as `f32` and
 //! allocates per attribute; the benchmark `paint` compares both (see BENCHMARKS.md).
@@ -32,24 +38,31 @@ use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{Label, PaintError, PaintStats, Painter, Picture};
+use super::{svg_smooth, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`SvgPainter`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SvgOptions {
     /// Maximal decimals for coordinates and the outline width. Default 2 (a hundredth of
     /// a pixel); at most 9.
     pub decimals: u8,
+    /// Smooth fills: the largest difference per channel (colours in [0, 1]) between
+    /// the written colours and the linear interpolation of a fragment's vertex colours.
+    /// Must be > 0; default 1/255.
+    pub tolerance: f64,
 }
 
 impl Default for SvgOptions {
     fn default() -> Self {
-        SvgOptions { decimals: 2 }
+        SvgOptions {
+            decimals: 2,
+            tolerance: crate::phong::DEFAULT_TOLERANCE,
+        }
     }
 }
 
 /// Writes SVG 1.1 text.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct SvgPainter {
     /// How numbers are written.
     pub options: SvgOptions,
@@ -62,9 +75,14 @@ impl SvgPainter {
     }
 }
 
-/// What makes two fragments' fills identical in SVG.
-fn style_key(f: &Frag<'_>) -> ([u8; 3], u16) {
-    (rgb_u8(f.flat_rgb()), alpha_milli(f.alpha()))
+/// What makes two fragments' fills identical in SVG (smooth fragments: the mean
+/// colour of the cover painted under their pieces).
+fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool) {
+    (
+        rgb_u8(f.flat_rgb()),
+        alpha_milli(f.alpha()),
+        f.colors.is_some(),
+    )
 }
 
 impl Painter for SvgPainter {
@@ -116,6 +134,12 @@ impl Painter for SvgPainter {
         }
 
         let group: Cell<Option<u32>> = Cell::new(None);
+        let tolerance = if self.options.tolerance > 0.0 {
+            self.options.tolerance
+        } else {
+            crate::phong::DEFAULT_TOLERANCE
+        };
+        let gradients = Cell::new(0u64);
         let sink = RefCell::new(sink);
         let stats = RefCell::new(stats);
         let enter = |b: &mut Vec<u8>, object: u32| {
@@ -127,35 +151,55 @@ impl Painter for SvgPainter {
                 group.set(Some(object));
             }
         };
-        let on_run = |run: &[Frag<'_>], &(rgb, alpha): &([u8; 3], u16)| {
+        let on_run = |run: &[Frag<'_>], &(rgb, alpha, smooth): &([u8; 3], u16, bool)| {
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
             let b = &mut sink.buf;
             enter(b, run[0].src.object);
-            b.extend_from_slice(b"<path d=\"");
-            for (f, reverse) in run.iter().zip(reversals(run)) {
-                for (k, p) in f.oriented(reverse).enumerate() {
-                    b.push(match k {
-                        0 => b'M',
-                        1 => b'L',
-                        _ => b' ',
-                    });
-                    push_point(b, p, d);
+            // Smooth runs: their pieces, and whether a cover must hide the hairlines
+            // between them (only when there are two or more).
+            let pieces: Vec<Vec<svg_smooth::Piece>> = if smooth {
+                run.iter()
+                    .filter_map(|f| {
+                        f.colors
+                            .as_ref()
+                            .map(|cs| svg_smooth::pieces(&f.points, cs, tolerance))
+                    })
+                    .collect()
+            } else {
+                Vec::new()
+            };
+            let cover = pieces.iter().map(Vec::len).sum::<usize>() > 1;
+            if !smooth || (alpha >= 1000 && cover) {
+                b.extend_from_slice(b"<path d=\"");
+                for (f, reverse) in run.iter().zip(reversals(run)) {
+                    for (k, p) in f.oriented(reverse).enumerate() {
+                        b.push(match k {
+                            0 => b'M',
+                            1 => b'L',
+                            _ => b' ',
+                        });
+                        push_point(b, p, d);
+                    }
+                    b.push(b'Z');
                 }
-                b.push(b'Z');
-            }
-            b.extend_from_slice(b"\" fill=\"");
-            push_hex_color(b, rgb);
-            b.push(b'"');
-            opacity_attr(b, b"fill-opacity", alpha);
-            if seams > 0.0 && alpha >= 1000 {
-                b.extend_from_slice(b" stroke=\"");
+                b.extend_from_slice(b"\" fill=\"");
                 push_hex_color(b, rgb);
                 b.push(b'"');
+                opacity_attr(b, b"fill-opacity", alpha);
+                if seams > 0.0 && alpha >= 1000 {
+                    b.extend_from_slice(b" stroke=\"");
+                    push_hex_color(b, rgb);
+                    b.push(b'"');
+                }
+                b.extend_from_slice(b"/>\n");
+                stats.paths += 1;
             }
-            b.extend_from_slice(b"/>\n");
-            stats.paths += 1;
-            stats.approximated += run.iter().filter(|f| f.colors.is_some()).count();
+            let mut g = gradients.get();
+            for piece in &pieces {
+                stats.paths += write_pieces(b, piece, alpha, d, &mut g);
+            }
+            gradients.set(g);
 
             if let Some(o) = checked.outline {
                 if run.iter().any(Frag::has_outline) {
@@ -202,6 +246,79 @@ impl Painter for SvgPainter {
         stats.bytes = sink.finish()?;
         Ok(stats)
     }
+}
+
+/// Writes smooth-fill pieces: flat ones grouped by written colour into one path each
+/// (they tile the fragment, so the order among them does not matter), then each
+/// gradient before its own path. Returns the number of paths.
+fn write_pieces(
+    b: &mut Vec<u8>,
+    pieces: &[svg_smooth::Piece],
+    alpha: u16,
+    d: u8,
+    gradients: &mut u64,
+) -> usize {
+    use std::collections::BTreeMap;
+    let mut flat: BTreeMap<[u8; 3], Vec<[[f64; 2]; 3]>> = BTreeMap::new();
+    let mut paths = 0;
+    let tri_path = |b: &mut Vec<u8>, tri: &[[f64; 2]; 3]| {
+        b.push(b'M');
+        push_point(b, tri[0], d);
+        b.push(b'L');
+        push_point(b, tri[1], d);
+        b.push(b' ');
+        push_point(b, tri[2], d);
+        b.push(b'Z');
+    };
+    for p in pieces {
+        match *p {
+            svg_smooth::Piece::Flat { tri, rgb } => flat.entry(rgb_u8(rgb)).or_default().push(tri),
+            svg_smooth::Piece::Gradient {
+                tri,
+                from,
+                to,
+                c0,
+                c1,
+            } => {
+                b.extend_from_slice(b"<linearGradient id=\"s");
+                push_uint(b, *gradients);
+                b.extend_from_slice(b"\" gradientUnits=\"userSpaceOnUse\" x1=\"");
+                push_num(b, from[0], d + 1);
+                b.extend_from_slice(b"\" y1=\"");
+                push_num(b, from[1], d + 1);
+                b.extend_from_slice(b"\" x2=\"");
+                push_num(b, to[0], d + 1);
+                b.extend_from_slice(b"\" y2=\"");
+                push_num(b, to[1], d + 1);
+                b.extend_from_slice(b"\"><stop stop-color=\"");
+                push_hex_color(b, rgb_u8(c0));
+                b.extend_from_slice(b"\"/><stop offset=\"1\" stop-color=\"");
+                push_hex_color(b, rgb_u8(c1));
+                b.extend_from_slice(b"\"/></linearGradient>\n<path d=\"");
+                tri_path(b, &tri);
+                b.extend_from_slice(b"\" fill=\"url(#s");
+                push_uint(b, *gradients);
+                b.extend_from_slice(b")\"");
+                opacity_attr(b, b"fill-opacity", alpha);
+                b.extend_from_slice(b"/>\n");
+                *gradients += 1;
+                paths += 1;
+            }
+        }
+    }
+    for (rgb, tris) in &flat {
+        b.extend_from_slice(b"<path d=\"");
+        for t in tris {
+            tri_path(b, t);
+        }
+        b.extend_from_slice(b"\" fill=\"");
+        push_hex_color(b, *rgb);
+        b.push(b'"');
+        opacity_attr(b, b"fill-opacity", alpha);
+        b.extend_from_slice(b"/>\n");
+        paths += 1;
+    }
+    paths
 }
 
 /// ` name="0.5"` when the opacity is below 1.

@@ -260,9 +260,23 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(200))]
 
     /// TikZ paints exactly the polygons and outlines SVG paints, in the same order,
-    /// colours and opacities: two independent text forms of one picture.
+    /// colours and opacities: two independent text forms of one picture. Smooth
+    /// fragments are flattened first (their fill the mean of their corner colours, as
+    /// TikZ paints them): SVG draws them as gradients and pieces instead.
     #[test]
     fn tikz_paints_what_svg_paints(picture in picture()) {
+        let mut picture = picture;
+        for f in &mut picture.fragments {
+            if let Some(cs) = f.vertex_colors.take() {
+                if cs.len() == f.points.len() && !cs.is_empty() {
+                    for k in 0..3 {
+                        f.fill[k] = cs.iter().map(|c| c[k]).sum::<f64>() / cs.len() as f64;
+                    }
+                } else {
+                    f.points.clear(); // invalid in both writers: skipped by both
+                }
+            }
+        }
         let mut svg = Vec::new();
         let s = painter_for(Format::Svg).paint(&picture, &mut svg).unwrap();
         let mut tikz = Vec::new();

@@ -189,7 +189,7 @@ fn out_of_range_object_gets_an_unnamed_group() {
 }
 
 #[test]
-fn gouraud_is_approximated_by_the_mean() {
+fn gouraud_is_a_mean_cover_under_pieces_within_the_tolerance() {
     let mut p = Picture::new(10, 10);
     let mut f = PaintFragment::new(vec![[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]], BLUE);
     f.vertex_colors = Some(vec![
@@ -197,10 +197,28 @@ fn gouraud_is_approximated_by_the_mean() {
         [0.0, 1.0, 0.0, 1.0],
         [0.0, 0.0, 1.0, 1.0],
     ]);
-    p.fragments.push(f);
+    p.fragments.push(f.clone());
     let (text, stats) = svg(&p);
-    assert!(text.contains("fill=\"#555555\""), "{text}");
-    assert_eq!(stats.approximated, 1);
+    // The cover in the mean colour first, then the pieces.
+    let cover = text
+        .find("d=\"M0 0L4 0 0 4Z\" fill=\"#555555\"")
+        .expect(&text);
+    assert!(text[cover..].matches("<path").count() > 4, "{text}");
+    assert_eq!(stats.approximated, 0);
+    // Colours on one line in RGB: one exact gradient.
+    f.vertex_colors = Some(vec![
+        [0.2, 0.2, 0.2, 1.0],
+        [0.6, 0.6, 0.6, 1.0],
+        [1.0, 1.0, 1.0, 1.0],
+    ]);
+    p.fragments = vec![f];
+    let (text, _) = svg(&p);
+    assert_eq!(text.matches("<linearGradient").count(), 1, "{text}");
+    assert!(
+        text.contains("<stop stop-color=\"#ffffff\"/><stop offset=\"1\" stop-color=\"#333333\"/>"),
+        "{text}"
+    );
+    assert!(text.contains("fill=\"url(#s0)\""), "{text}");
 }
 
 #[test]
@@ -210,9 +228,21 @@ fn decimals_option() {
         vec![[0.123456, 1.5], [4.0, 0.0], [0.0, 4.0]],
         BLUE,
     ));
-    let (text, _) = svg_with(SvgPainter::new(SvgOptions { decimals: 4 }), &p);
+    let (text, _) = svg_with(
+        SvgPainter::new(SvgOptions {
+            decimals: 4,
+            ..SvgOptions::default()
+        }),
+        &p,
+    );
     assert!(text.contains("d=\"M0.1235 1.5L4 0 0 4Z\""), "{text}");
-    let (text, _) = svg_with(SvgPainter::new(SvgOptions { decimals: 0 }), &p);
+    let (text, _) = svg_with(
+        SvgPainter::new(SvgOptions {
+            decimals: 0,
+            ..SvgOptions::default()
+        }),
+        &p,
+    );
     assert!(text.contains("d=\"M0 2L4 0 0 4Z\""), "{text}");
 }
 

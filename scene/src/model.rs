@@ -3,7 +3,7 @@
 use glam::DVec3;
 use thiserror::Error;
 
-use crate::{Camera, PointMark, Polyline, TextLabel};
+use crate::{Camera, Fog, PointMark, Polyline, Shading, TextLabel};
 
 /// Errors raised while building a scene in code.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -189,6 +189,10 @@ pub struct Scene {
     pub points: Vec<PointMark>,
     /// Text labels drawn when their anchor is visible.
     pub labels: Vec<TextLabel>,
+    /// The interpolation asked for (`None`: the default rule of [`Shading::of_face`]).
+    pub shading: Option<Shading>,
+    /// Depth cueing, when asked for.
+    pub fog: Option<Fog>,
     /// Warnings collected while loading (missing MTL, dropped faces, ...).
     pub warnings: Vec<String>,
     /// The files the scene was read from: the input and every file it referenced

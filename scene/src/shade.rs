@@ -8,7 +8,7 @@
 
 use glam::DVec3;
 
-use crate::{Light, LightKind, Material, Scene};
+use crate::{Light, LightKind, Material, Scene, Shading};
 
 /// A linear RGB colour, each channel in [0, 1].
 pub type Rgb = [f64; 3];
@@ -22,25 +22,28 @@ pub struct Effects {
     pub specular: bool,
     /// Some material is translucent (opacity < 1): blending in painter's order.
     pub transparency: bool,
-    /// Some lit face has vertex normals: Gouraud shading (colours computed at the
-    /// vertices and interpolated).
+    /// Some face is Gouraud-shaded (see [`Shading::of_face`]): colours computed at the
+    /// vertices and interpolated.
     pub smooth: bool,
+    /// Some face is Phong-shaded: normals interpolated, lighting per point.
+    pub phong: bool,
+    /// The scene has fog and some face is lit (fog never touches `illum 0` colours).
+    pub fog: bool,
 }
 
 impl Effects {
     /// The effects the faces of `scene` need.
     pub fn of(scene: &Scene) -> Effects {
         let mut used = vec![false; scene.materials.len()];
+        let mut e = Effects::default();
         for f in &scene.faces {
             used[f.material as usize] = true;
+            match Shading::of_face(scene.shading, f, &scene.materials[f.material as usize]) {
+                Shading::Flat => {}
+                Shading::Gouraud => e.smooth = true,
+                Shading::Phong => e.phong = true,
+            }
         }
-        let mut e = Effects {
-            smooth: scene
-                .faces
-                .iter()
-                .any(|f| f.normals.is_some() && scene.materials[f.material as usize].illum >= 1),
-            ..Effects::default()
-        };
         for (m, _) in scene.materials.iter().zip(&used).filter(|(_, &u)| u) {
             if m.illum >= 1 {
                 e.lighting = true;
@@ -52,6 +55,7 @@ impl Effects {
                 e.transparency = true;
             }
         }
+        e.fog = e.lighting && scene.fog.is_some();
         e
     }
 
@@ -69,6 +73,12 @@ impl Effects {
         }
         if self.smooth {
             v.push("gouraud");
+        }
+        if self.phong {
+            v.push("phong");
+        }
+        if self.fog {
+            v.push("fog");
         }
         v
     }
@@ -90,12 +100,26 @@ pub fn polygon_normal(points: &[DVec3]) -> DVec3 {
 /// The colour of a point with normal `n` (any length) seen from `eye`, under `lights`
 /// (a white headlight when empty). `illum 0` returns `Kd` unchanged.
 pub fn shade_point(m: &Material, p: DVec3, n: DVec3, eye: DVec3, lights: &[Light]) -> Rgb {
+    shade_sided(m, p, n, n, eye, lights)
+}
+
+/// [`shade_point`] with the lit side chosen by `side` (the face's geometric normal)
+/// instead of `n`: an interpolated normal of a face seen from its front may turn away
+/// from the eye near a silhouette, and must not flip there (the colour would jump).
+pub fn shade_sided(
+    m: &Material,
+    p: DVec3,
+    n: DVec3,
+    side: DVec3,
+    eye: DVec3,
+    lights: &[Light],
+) -> Rgb {
     if m.illum == 0 {
         return m.kd;
     }
     let to_eye = (eye - p).normalize_or_zero();
     let mut n = n.normalize_or_zero();
-    if n.dot(to_eye) < 0.0 {
+    if side.dot(eye - p) < 0.0 {
         n = -n; // two-sided lighting
     }
     const HEADLIGHT: [Light; 1] = [Light {
@@ -153,39 +177,82 @@ pub fn shade_point(m: &Material, p: DVec3, n: DVec3, eye: DVec3, lights: &[Light
 /// interpolate barycentrically; larger faces use the fan triangle from the first corner
 /// that contains `p` (the nearest one when rounding puts `p` just outside all of them).
 pub fn interpolated_normal(scene: &Scene, face: u32, p: DVec3) -> Option<DVec3> {
-    let f = &scene.faces[face as usize];
-    let ns = f.normals.as_ref()?;
-    let c: Vec<DVec3> = f
-        .vertices
-        .iter()
-        .map(|&v| scene.vertices[v as usize])
-        .collect();
-    let n: Vec<DVec3> = ns.iter().map(|&i| scene.normals[i as usize]).collect();
-    let mut best: Option<(f64, DVec3)> = None;
-    for i in 1..c.len() - 1 {
-        let (a, b, d) = (c[0], c[i], c[i + 1]);
-        let nrm = (b - a).cross(d - a);
-        let den = nrm.length_squared();
-        if den <= 0.0 || !den.is_finite() {
-            continue;
-        }
-        let wa = (d - b).cross(p - b).dot(nrm) / den;
-        let wb = (a - d).cross(p - d).dot(nrm) / den;
-        let wd = 1.0 - wa - wb;
-        let worst = wa.min(wb).min(wd);
-        let interp = n[0] * wa + n[i] * wb + n[i + 1] * wd;
-        if best.is_none_or(|(w, _)| worst > w) {
-            best = Some((worst, interp));
-        }
-        if worst >= 0.0 {
-            break;
-        }
+    FaceNormals::new(scene, face)?.at(p)
+}
+
+/// A face's corners and vertex normals, gathered once for many
+/// [`interpolated_normal`] look-ups (per-point shading asks for thousands per face).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceNormals {
+    corners: Vec<DVec3>,
+    normals: Vec<DVec3>,
+}
+
+impl FaceNormals {
+    /// The corners and normals of `face`; `None` when it has no vertex normals.
+    pub fn new(scene: &Scene, face: u32) -> Option<FaceNormals> {
+        let f = &scene.faces[face as usize];
+        let ns = f.normals.as_ref()?;
+        Some(FaceNormals {
+            corners: f
+                .vertices
+                .iter()
+                .map(|&v| scene.vertices[v as usize])
+                .collect(),
+            normals: ns.iter().map(|&i| scene.normals[i as usize]).collect(),
+        })
     }
-    best.map(|(_, v)| v).filter(|v| v.length_squared() > 0.0)
+
+    /// The interpolated normal at `p`, as [`interpolated_normal`]; `None` when it
+    /// vanishes or every fan triangle is degenerate.
+    pub fn at(&self, p: DVec3) -> Option<DVec3> {
+        let ([a, b, c], w) = self.weights(p)?;
+        let n = &self.normals;
+        Some(n[a] * w[0] + n[b] * w[1] + n[c] * w[2]).filter(|v| v.length_squared() > 0.0)
+    }
+
+    /// The fan triangle (corner indices `0, i, i + 1`) that contains `p` (the nearest
+    /// when rounding puts `p` just outside all of them) and `p`'s barycentric
+    /// coordinates in it: the weights [`FaceNormals::at`] gives the corners' normals,
+    /// for interpolating anything else given per corner.
+    pub fn weights(&self, p: DVec3) -> Option<([usize; 3], [f64; 3])> {
+        let c = &self.corners;
+        let mut best: Option<(f64, [usize; 3], [f64; 3])> = None;
+        for i in 1..c.len() - 1 {
+            let (a, b, d) = (c[0], c[i], c[i + 1]);
+            let nrm = (b - a).cross(d - a);
+            let den = nrm.length_squared();
+            if den <= 0.0 || !den.is_finite() {
+                continue;
+            }
+            let wa = (d - b).cross(p - b).dot(nrm) / den;
+            let wb = (a - d).cross(p - d).dot(nrm) / den;
+            let wd = 1.0 - wa - wb;
+            let worst = wa.min(wb).min(wd);
+            if best.is_none_or(|(w, ..)| worst > w) {
+                best = Some((worst, [0, i, i + 1], [wa, wb, wd]));
+            }
+            if worst >= 0.0 {
+                break;
+            }
+        }
+        best.map(|(_, idx, w)| (idx, w))
+    }
+
+    /// The face's corners.
+    pub fn corners(&self) -> &[DVec3] {
+        &self.corners
+    }
+
+    /// The face's vertex normals, one per corner.
+    pub fn normals(&self) -> &[DVec3] {
+        &self.normals
+    }
 }
 
 /// The flat colour of face `face` seen from `eye`: lit at its centroid with its geometric
-/// normal. Returns `Kd` exactly for `illum 0` materials.
+/// normal (and fogged there, when the scene has fog). Returns `Kd` exactly for `illum 0`
+/// materials.
 pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
     let f = &scene.faces[face as usize];
     let m = &scene.materials[f.material as usize];
@@ -195,7 +262,29 @@ pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
     let pts = scene.face_points(face);
     let c = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
     let n = polygon_normal(&pts);
-    shade_point(m, c, n, eye, &scene.lights)
+    shade_in_scene(scene, m, c, n, eye)
+}
+
+/// [`shade_point`] under the scene's lights, then seen through the scene's fog (when it
+/// has one; `illum 0` colours stay exactly `Kd`).
+pub fn shade_in_scene(scene: &Scene, m: &Material, p: DVec3, n: DVec3, eye: DVec3) -> Rgb {
+    shade_sided_in_scene(scene, m, p, n, n, eye)
+}
+
+/// [`shade_sided`] under the scene's lights, then through the scene's fog.
+pub fn shade_sided_in_scene(
+    scene: &Scene,
+    m: &Material,
+    p: DVec3,
+    n: DVec3,
+    side: DVec3,
+    eye: DVec3,
+) -> Rgb {
+    let c = shade_sided(m, p, n, side, eye, &scene.lights);
+    match &scene.fog {
+        Some(fog) if m.illum >= 1 => fog.apply(c, p, eye),
+        _ => c,
+    }
 }
 
 #[cfg(test)]
@@ -252,6 +341,67 @@ mod tests {
         s.faces[f as usize].material = lit;
         assert!(Effects::of(&s).smooth);
         assert!(Effects::of(&s).names().contains(&"gouraud"));
+    }
+
+    #[test]
+    fn effects_follow_the_asked_shading_and_fog() {
+        let mut s = Scene::default();
+        let lit = s.add_material(Material::diffuse("lit", [1.0; 3]));
+        let o = s.add_object("o");
+        let f = s
+            .add_polygon(&[DVec3::ZERO, DVec3::X, DVec3::Y], lit, o)
+            .unwrap();
+        assert_eq!(Effects::of(&s).names(), ["lighting"]);
+        s.normals = vec![DVec3::Z];
+        s.faces[f as usize].normals = Some(vec![0, 0, 0]);
+        s.shading = Some(Shading::Phong);
+        assert_eq!(Effects::of(&s).names(), ["lighting", "phong"]);
+        s.shading = Some(Shading::Flat);
+        s.fog = Some(crate::Fog {
+            color: [1.0; 3],
+            start: 0.0,
+            end: 1.0,
+            falloff: crate::FogFalloff::Linear,
+        });
+        assert_eq!(Effects::of(&s).names(), ["lighting", "fog"]);
+        s.materials[lit as usize].illum = 0;
+        assert!(Effects::of(&s).names().is_empty());
+    }
+
+    #[test]
+    fn flat_colour_is_fogged_at_the_centroid() {
+        let mut s = Scene::default();
+        let mut m = Material::diffuse("lit", [0.5; 3]);
+        m.ka = [0.0; 3];
+        let lit = s.add_material(m);
+        let o = s.add_object("o");
+        // Facing the eye at distance 4 from it: full headlight diffuse 0.5.
+        let f = s
+            .add_polygon(
+                &[
+                    DVec3::new(-1.0, -1.0, 0.0),
+                    DVec3::new(2.0, -1.0, 0.0),
+                    DVec3::new(-1.0, 2.0, 0.0),
+                ],
+                lit,
+                o,
+            )
+            .unwrap();
+        let eye = DVec3::new(0.0, 0.0, 4.0);
+        let plain = shade_face(&s, f, eye);
+        assert!((plain[0] - 0.5).abs() < 1e-12);
+        s.fog = Some(crate::Fog {
+            color: [1.0, 0.0, 0.0],
+            start: 2.0,
+            end: 6.0,
+            falloff: crate::FogFalloff::Linear,
+        });
+        // Half-way through the fog: half the surface, half the fog colour.
+        let c = shade_face(&s, f, eye);
+        let want = [0.25 + 0.5, 0.25, 0.25];
+        for k in 0..3 {
+            assert!((c[k] - want[k]).abs() < 1e-12, "{c:?}");
+        }
     }
 
     #[test]

@@ -18,8 +18,11 @@
 //!   [`RenderOptions::cull_back_faces`] is set.
 //!
 //! Faces with more than three corners are triangulated (see [`triangulate`]'s notes:
-//! fan when convex, ear clipping otherwise). Colours are flat: `shade_face` of
-//! limn-scene at the face's centroid, 8-bit channels `round(c · 255)`.
+//! fan when convex, ear clipping otherwise). Colours are 8-bit channels
+//! `round(c · 255)` of `shade_face` of limn-scene at the face's centroid for flat faces
+//! (fog included there), and per pixel for faces the scene shades smoothly (Gouraud or
+//! Phong, see `Shading::of_face`): the world point at the pixel centre is shaded, so
+//! interpolation is perspective-correct. The A-buffer keeps flat colours.
 //!
 //! Besides rendering, the crate draws lines ([`bresenham`], [`dda`], [`wireframe`]),
 //! paints 2D polygons for checking vector output ([`rasterize_ids`]), compares id
@@ -55,6 +58,7 @@ mod exact;
 mod fragment_ids;
 mod image;
 mod lines;
+mod pixel_shading;
 mod png;
 mod raycast;
 mod render;

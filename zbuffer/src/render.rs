@@ -4,13 +4,13 @@ use std::fmt;
 use std::str::FromStr;
 
 use glam::DVec3;
-use limn_scene::{polygon_normal, shade_face, shade_point, Camera, Rgb, Scene};
+use limn_scene::{polygon_normal, shade_face, shade_in_scene, Camera, Rgb, Scene};
 use thiserror::Error;
 
 use crate::abuffer::{abuffer, FaceLook};
 use crate::image::{rgb_to_u8, ColorImage, DepthImage, IdImage, NO_FACE};
 use crate::setup::{prepare, Collect, Frame, Prepared};
-use crate::{raycast, scanline, warnock, zbuf, DepthFormat, Segment2, ZError};
+use crate::{pixel_shading, raycast, scanline, warnock, zbuf, DepthFormat, Segment2, ZError};
 
 /// An image-space hidden-surface method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -249,15 +249,19 @@ fn finish(
                 })
                 .collect();
             let bg = rgb_to_u8(opts.background);
-            ids.iter()
-                .map(|&id| {
-                    if id == NO_FACE {
-                        bg
-                    } else {
-                        palette[id as usize]
-                    }
-                })
-                .collect()
+            if pixel_shading::needed(scene) {
+                pixel_shading::shade(scene, frame, &ids, &palette, bg)
+            } else {
+                ids.iter()
+                    .map(|&id| {
+                        if id == NO_FACE {
+                            bg
+                        } else {
+                            palette[id as usize]
+                        }
+                    })
+                    .collect()
+            }
         }
     };
     Raster {
@@ -291,7 +295,7 @@ fn flat_color(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
     if let [a, b, c] = f.vertices[..] {
         let pts = [a, b, c].map(|v| scene.vertices[v as usize]);
         let centre = pts.iter().copied().sum::<DVec3>() / 3.0;
-        return shade_point(m, centre, polygon_normal(&pts), eye, &scene.lights);
+        return shade_in_scene(scene, m, centre, polygon_normal(&pts), eye);
     }
     shade_face(scene, face, eye)
 }

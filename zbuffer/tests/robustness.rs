@@ -351,3 +351,130 @@ fn flat_colours_are_shade_face() {
         assert!(r.ids.ids.contains(&0) && r.ids.ids.contains(&1));
     }
 }
+
+/// Smooth faces are shaded per pixel: Phong at the pixel's world point, Gouraud by
+/// the corners' colours; flat faces keep `shade_face`.
+#[test]
+fn smooth_faces_are_shaded_per_pixel() {
+    smooth_per_pixel(Camera::new(
+        glam::DVec3::new(0.0, 0.0, 4.0),
+        glam::DVec3::ZERO,
+        64,
+        64,
+    ));
+}
+
+/// The same under a parallel projection: every pixel's ray runs along the view axis.
+#[test]
+fn smooth_faces_are_shaded_per_pixel_in_parallel_projection() {
+    smooth_per_pixel(Camera::orthographic(
+        glam::DVec3::new(0.0, 0.0, 4.0),
+        glam::DVec3::ZERO,
+        2.5,
+        64,
+        64,
+    ));
+}
+
+fn smooth_per_pixel(cam: Camera) {
+    use limn_scene::{
+        polygon_normal, shade_sided_in_scene, shapes, FaceNormals, Light, LightKind, Material,
+        Shading,
+    };
+    let mut s = Scene::default();
+    let m = s.add_material(Material::glossy("g", [0.7, 0.3, 0.2], [0.8; 3], 40.0));
+    let o = s.add_object("o");
+    shapes::icosphere(&mut s, glam::DVec3::ZERO, 1.0, 1, m, o).unwrap();
+    s.lights = vec![Light {
+        kind: LightKind::Point(glam::DVec3::new(2.0, 3.0, 4.0)),
+        color: [1.0; 3],
+    }];
+    let opts = RenderOptions::default();
+    let (near, far) = cam.near_far(&s);
+    let inv = cam.view_projection(near, far).inverse();
+    let world_at = |s: &Scene, x: u32, y: u32, face: u32| {
+        let ndc = glam::DVec4::new(
+            (x as f64 + 0.5) / 32.0 - 1.0,
+            1.0 - (y as f64 + 0.5) / 32.0,
+            -1.0,
+            1.0,
+        );
+        let q = inv * ndc;
+        let on_near = q.truncate() / q.w;
+        // From the eye through the pixel, or along the view axis without perspective.
+        let (from, dir) = if cam.is_perspective() {
+            (cam.eye, on_near - cam.eye)
+        } else {
+            (on_near, cam.forward())
+        };
+        let pts = s.face_points(face);
+        let n = polygon_normal(&pts);
+        let c = pts.iter().copied().sum::<glam::DVec3>() / 3.0;
+        (from + dir * ((c - from).dot(n) / dir.dot(n)), n)
+    };
+    let mut distinct = std::collections::HashSet::new();
+    for mode in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        s.shading = Some(mode);
+        for method in [Method::ZBuffer, Method::RayCast] {
+            let r = render(&s, &cam, method, &opts).unwrap();
+            let mut checked = 0;
+            for y in 0..64 {
+                for x in 0..64 {
+                    let id = r.ids.ids[(y * 64 + x) as usize];
+                    if id == limn_zbuffer::NO_FACE {
+                        continue;
+                    }
+                    let (p, side) = world_at(&s, x, y, id);
+                    let fn_ = FaceNormals::new(&s, id).unwrap();
+                    let want = match mode {
+                        Shading::Flat => limn_scene::shade_face(&s, id, cam.eye),
+                        Shading::Phong => shade_sided_in_scene(
+                            &s,
+                            &s.materials[0],
+                            p,
+                            fn_.at(p).unwrap(),
+                            side,
+                            cam.eye,
+                        ),
+                        Shading::Gouraud => {
+                            let (idx, w) = fn_.weights(p).unwrap();
+                            let cs: Vec<_> = idx
+                                .iter()
+                                .map(|&i| {
+                                    shade_sided_in_scene(
+                                        &s,
+                                        &s.materials[0],
+                                        fn_.corners()[i],
+                                        fn_.normals()[i],
+                                        side,
+                                        cam.eye,
+                                    )
+                                })
+                                .collect();
+                            [0, 1, 2].map(|k| (0..3).map(|j| w[j] * cs[j][k]).sum::<f64>())
+                        }
+                    };
+                    let got = r.color.pixels[(y * 64 + x) as usize];
+                    let want = limn_zbuffer::rgb_to_u8(want);
+                    for k in 0..3 {
+                        assert!(
+                            got[k].abs_diff(want[k]) <= 1,
+                            "{mode:?} {method:?} ({x}, {y}): {got:?} vs {want:?}"
+                        );
+                    }
+                    distinct.insert((mode, got));
+                    checked += 1;
+                }
+            }
+            assert!(checked > 1000);
+        }
+    }
+    // Per-pixel shading shows many more colours than one per face.
+    let count = |m: Shading| distinct.iter().filter(|(d, _)| *d == m).count();
+    assert!(
+        count(Shading::Phong) > 3 * count(Shading::Flat),
+        "{} {}",
+        count(Shading::Phong),
+        count(Shading::Flat)
+    );
+}

@@ -21,6 +21,7 @@ pub(crate) struct Doc {
     pub(crate) points: Vec<Spanned<PointsDoc>>,
     #[serde(default)]
     pub(crate) label: Vec<Spanned<LabelDoc>>,
+    pub(crate) fog: Option<Spanned<FogDoc>>,
 }
 
 #[derive(Deserialize)]
@@ -57,6 +58,7 @@ pub(crate) struct OutputDoc {
     pub(crate) sort: Option<SortDoc>,
     pub(crate) arith: Option<ArithDoc>,
     pub(crate) cull: Option<CullDoc>,
+    pub(crate) shading: Option<ShadingDoc>,
     pub(crate) style: Option<StyleDoc>,
     pub(crate) crease: Option<Spanned<f64>>,
     pub(crate) hidden: Option<HiddenDoc>,
@@ -82,6 +84,32 @@ pub(crate) enum HiddenDoc {
 pub(crate) enum FillDoc {
     Background,
     None,
+}
+
+#[derive(Deserialize, Clone, Copy, Debug)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum ShadingDoc {
+    Flat,
+    Gouraud,
+    Phong,
+}
+
+#[derive(Deserialize, Clone, Copy, Debug, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub(crate) enum FogModeDoc {
+    Linear,
+    Exponential,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(crate) struct FogDoc {
+    #[serde(alias = "colour")]
+    pub(crate) color: Option<Spanned<ColourDoc>>,
+    pub(crate) start: Option<f64>,
+    pub(crate) end: Option<f64>,
+    pub(crate) mode: Option<FogModeDoc>,
+    pub(crate) density: Option<f64>,
 }
 
 #[derive(Deserialize)]

@@ -24,6 +24,15 @@
 //! crease = 30.0             #   creases above this angle, exactly where visible
 //! hidden = "dashed"         # omit (default) | dashed
 //! fill = "none"             # background (default) | none: lines only, joined
+//! shading = "phong"         # flat | gouraud | phong (default: gouraud where there
+//!                           # are vertex normals, see limn_scene::Shading)
+//!
+//! [fog]                     # optional depth cueing (lit materials only)
+//! color = [1.0, 1.0, 1.0]   # default white
+//! start = 2.0               # distance from the eye where fog begins (default 0)
+//! end = 10.0                # linear fog: full fog from here on
+//! # mode = "exponential"    # linear (default) | exponential: exp(-density·(d - start))
+//! # density = 0.3           # exponential only, instead of end
 //!
 //! [[mesh]]
 //! path = "bunny.obj"        # relative to this file; obj, stl, ply, gltf, glb
@@ -69,6 +78,7 @@
 //! include another one. Unknown keys are errors.
 
 mod doc;
+mod effects;
 mod marks;
 mod settings;
 
@@ -233,6 +243,14 @@ pub(crate) fn parse(
     }
     marks::add(&cx, &doc.line, &doc.points, &doc.label, &mut scene, opts)?;
     let options = settings::options(&cx, &doc)?;
+    scene.shading = doc
+        .output
+        .as_ref()
+        .and_then(|o| o.shading)
+        .map(effects::shading);
+    if let Some(f) = &doc.fog {
+        scene.fog = Some(effects::fog(&cx, f)?);
+    }
     if let Some(cam) = &doc.camera {
         let size = options.size.unwrap_or((800, 600));
         scene.camera = Some(settings::camera(&cx, cam, &scene, size)?);
