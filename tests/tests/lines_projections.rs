@@ -5,64 +5,19 @@
 
 use glam::DVec3;
 use limn_depthsort::{order_with_marks, OrderOptions};
-use limn_scene::shapes::uv_sphere;
-use limn_scene::{Camera, Material, PointMark, Polyline, Projection, Scene, Viewpoint};
-use limn_tests::corpus::cyclic_quads;
+use limn_scene::{Camera, Material, Polyline, Projection, Scene, Viewpoint};
 
 #[path = "support/line_referee.rs"]
 mod common;
+#[path = "support/mark_scenes.rs"]
+mod scenes;
 use common::referee;
-
-/// The cyclic strips with a line behind them, one through them, and points around.
-fn strips_with_lines() -> (Scene, Camera) {
-    let case = cyclic_quads();
-    let mut s = case.scene;
-    s.lines.push(Polyline::new(vec![
-        DVec3::new(-3.0, -0.3, -2.0),
-        DVec3::new(3.0, 0.4, -2.0),
-    ]));
-    s.lines.push(Polyline::new(vec![
-        DVec3::new(-3.0, 0.2, -1.0),
-        DVec3::new(0.0, 0.1, 0.1),
-        DVec3::new(3.0, -0.2, 1.0),
-    ]));
-    for k in 0..40 {
-        let a = k as f64 * 0.7;
-        s.points.push(PointMark::new(DVec3::new(
-            2.0 * a.cos(),
-            1.5 * (a * 1.3).sin(),
-            (a * 0.5).sin(),
-        )));
-    }
-    (s, case.camera)
-}
+use scenes::strips_with_lines;
 
 /// A sphere with a helix around it and points inside and outside, seen from close by
 /// (so that perspective and parallel sight lines disagree about much of the helix).
 fn helix_around_sphere() -> (Scene, Camera) {
-    let mut s = Scene::default();
-    let m = s.add_material(Material::unlit("grey", [0.7, 0.7, 0.7]));
-    let o = s.add_object("sphere");
-    uv_sphere(&mut s, DVec3::ZERO, 1.0, 8, 12, m, o).unwrap();
-    let pts = (0..=120)
-        .map(|k| {
-            let t = k as f64 / 120.0;
-            let a = t * 4.0 * std::f64::consts::TAU;
-            DVec3::new(1.25 * a.cos(), 3.0 * t - 1.5, 1.25 * a.sin())
-        })
-        .collect();
-    s.lines.push(Polyline::new(pts));
-    for k in 0..60 {
-        let a = k as f64 * 0.37;
-        let r = 0.8 + 0.5 * ((k % 5) as f64 / 4.0);
-        s.points.push(PointMark::new(DVec3::new(
-            r * a.cos() * (a * 0.3).cos(),
-            r * (a * 0.3).sin(),
-            r * a.sin() * (a * 0.3).cos(),
-        )));
-    }
-    let cam = Camera::new(DVec3::new(0.8, 1.1, 3.0), DVec3::ZERO, 200, 160);
-    (s, cam)
+    scenes::helix_around_sphere(8, 12, 120, 4.0, 3.0)
 }
 
 /// A height field in triangles with its own grid lines on it.
