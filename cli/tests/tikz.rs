@@ -38,6 +38,14 @@ offset = [2.0, -2.0]
 size = 9.0
 "##;
 
+/// A temporary folder holding the tetrahedron `t.obj` and its `t.mtl`.
+fn tetra_folder() -> tempfile::TempDir {
+    let dir = tempdir();
+    put(dir.path(), "t.obj", TETRA);
+    put(dir.path(), "t.mtl", MTL);
+    dir
+}
+
 /// Checks the structure every TikZ file from limn has: one picture, colours defined
 /// before use, every drawing command ended, brackets balanced.
 fn check_structure(text: &str) {
@@ -73,9 +81,7 @@ fn check_structure(text: &str) {
 
 #[test]
 fn tikz_by_extension_flag_and_standalone() {
-    let dir = tempdir();
-    put(dir.path(), "t.obj", TETRA);
-    put(dir.path(), "t.mtl", MTL);
+    let dir = tetra_folder();
     let run = limn(
         dir.path(),
         &["render", "t.obj", "-o", "t.pgf", "--outline", "-q"],
@@ -110,9 +116,7 @@ fn tikz_by_extension_flag_and_standalone() {
 
 #[test]
 fn lines_points_and_labels_are_tikz_commands() {
-    let dir = tempdir();
-    put(dir.path(), "t.obj", TETRA);
-    put(dir.path(), "t.mtl", MTL);
+    let dir = tetra_folder();
     put(dir.path(), "s.toml", SCENE);
     let run = limn(dir.path(), &["render", "s.toml", "-o", "s.tikz", "-q"]);
     assert_eq!(run.code, 0, "{}", run.stderr);
@@ -131,9 +135,7 @@ fn lines_points_and_labels_are_tikz_commands() {
 
 #[test]
 fn standalone_without_tikz_is_refused_without_output() {
-    let dir = tempdir();
-    put(dir.path(), "t.obj", TETRA);
-    put(dir.path(), "t.mtl", MTL);
+    let dir = tetra_folder();
     let run = limn(
         dir.path(),
         &["render", "t.obj", "-o", "t.svg", "--standalone"],
@@ -150,9 +152,7 @@ fn standalone_without_tikz_is_refused_without_output() {
 
 #[test]
 fn pages_beyond_tex_lengths_are_refused_without_output() {
-    let dir = tempdir();
-    put(dir.path(), "t.obj", TETRA);
-    put(dir.path(), "t.mtl", MTL);
+    let dir = tetra_folder();
     let run = limn(
         dir.path(),
         &["render", "t.obj", "-o", "t.tikz", "--size", "6000x100"],
@@ -175,9 +175,7 @@ fn standalone_tikz_compiles_with_pdflatex() {
         eprintln!("pdflatex is not installed: the TikZ output is checked for structure only");
         return;
     }
-    let dir = tempdir();
-    put(dir.path(), "t.obj", TETRA);
-    put(dir.path(), "t.mtl", MTL);
+    let dir = tetra_folder();
     let run = limn(
         dir.path(),
         &[
