@@ -122,6 +122,7 @@ fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture
             face: f.face,
             object: face.object,
             original_edges,
+            texture: None,
         });
     }
     Picture {
@@ -137,6 +138,7 @@ fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture
         outline: style.outline,
         seams: 0.0,
         marks: Vec::new(),
+        textures: Vec::new(),
     }
 }
 

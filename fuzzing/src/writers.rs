@@ -176,6 +176,7 @@ pub fn picture(case: &Case) -> Picture {
             face: u32::from(f.face),
             object: u32::from(f.object),
             original_edges: f.edges.iter().take(17).copied().collect(),
+            texture: None,
         })
         .collect();
     p.outline = case.outline.map(|(c, w)| Outline {

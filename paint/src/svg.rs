@@ -27,6 +27,17 @@
 //! colour, not what lies behind (when it is drawn as two pieces or more). Each gradient is a `<linearGradient id="sN"
 //! gradientUnits="userSpaceOnUse">` written just before the path that uses it.
 //!
+//! **Textures**: each texture is embedded once, as a PNG `data:` URI in an `<image>`
+//! filling a 1 × 1 `<pattern id="texK">` tile in `<defs>` (so it repeats). A textured
+//! fragment is drawn as triangles, each a `<path>` filled with its own
+//! `<pattern id="tpN" href="#texK" patternTransform="matrix(…)"/>`: the affine map from
+//! texture to page, within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
+//! projective map (see `texture_pieces.rs`). When the fill is not white, the fragment
+//! is painted again in its fill with `mix-blend-mode:multiply` (fill times texture);
+//! a translucent fragment goes in a `<g opacity="…">` of its own. A fragment drawn as
+//! two triangles or more is first filled with its fill times the texture's mean colour,
+//! so the hairlines between its triangles show that colour.
+//!
 //! The `svg` crate could build the same document, but it stores numbers as `f32` and
 //! allocates per attribute; the benchmark `paint` compares both (see BENCHMARKS.md).
 
@@ -38,7 +49,8 @@ use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{svg_smooth, Label, PaintError, PaintStats, Painter, Picture};
+use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
+use super::{svg_smooth, texture_images, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`SvgPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,12 +88,13 @@ impl SvgPainter {
 }
 
 /// What makes two fragments' fills identical in SVG (smooth fragments: the mean
-/// colour of the cover painted under their pieces).
-fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool) {
+/// colour of the cover painted under their pieces; textured ones: the texture too).
+fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool, Option<u32>) {
     (
         rgb_u8(f.flat_rgb()),
         alpha_milli(f.alpha()),
         f.colors.is_some(),
+        f.src.texture.map(|t| t.texture),
     )
 }
 
@@ -133,6 +146,24 @@ impl Painter for SvgPainter {
             b.extend_from_slice(b"/>\n");
         }
 
+        if !picture.textures.is_empty() {
+            b.extend_from_slice(b"<defs>\n");
+            for (k, t) in picture.textures.iter().enumerate() {
+                let uri = texture_images::png_data_uri(t).ok_or(PaintError::Style {
+                    what: "texture",
+                    reason: "the image cannot be encoded as PNG",
+                })?;
+                b.extend_from_slice(b"<pattern id=\"tex");
+                push_uint(b, k as u64);
+                b.extend_from_slice(
+                    b"\" patternUnits=\"userSpaceOnUse\" width=\"1\" height=\"1\"><image \
+                      width=\"1\" height=\"1\" preserveAspectRatio=\"none\" href=\"",
+                );
+                b.extend_from_slice(uri.as_bytes());
+                b.extend_from_slice(b"\"/></pattern>\n");
+            }
+            b.extend_from_slice(b"</defs>\n");
+        }
         let group: Cell<Option<u32>> = Cell::new(None);
         let tolerance = if self.options.tolerance > 0.0 {
             self.options.tolerance
@@ -140,6 +171,8 @@ impl Painter for SvgPainter {
             crate::phong::DEFAULT_TOLERANCE
         };
         let gradients = Cell::new(0u64);
+        let patterns = Cell::new(0u64);
+        let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
         let sink = RefCell::new(sink);
         let stats = RefCell::new(stats);
         let enter = |b: &mut Vec<u8>, object: u32| {
@@ -151,11 +184,17 @@ impl Painter for SvgPainter {
                 group.set(Some(object));
             }
         };
-        let on_run = |run: &[Frag<'_>], &(rgb, alpha, smooth): &([u8; 3], u16, bool)| {
+        let on_run = |run: &[Frag<'_>], key: &([u8; 3], u16, bool, Option<u32>)| {
+            let (rgb, alpha, smooth, texture) = *key;
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
             let b = &mut sink.buf;
             enter(b, run[0].src.object);
+            if let Some(k) = texture {
+                let mut n = patterns.get();
+                stats.paths += write_textured(b, run, k, alpha, means[k as usize], d, &mut n);
+                patterns.set(n);
+            }
             // Smooth runs: their pieces, and whether a cover must hide the hairlines
             // between them (only when there are two or more).
             let pieces: Vec<Vec<svg_smooth::Piece>> = if smooth {
@@ -170,7 +209,7 @@ impl Painter for SvgPainter {
                 Vec::new()
             };
             let cover = pieces.iter().map(Vec::len).sum::<usize>() > 1;
-            if !smooth || (alpha >= 1000 && cover) {
+            if texture.is_none() && (!smooth || (alpha >= 1000 && cover)) {
                 b.extend_from_slice(b"<path d=\"");
                 for (f, reverse) in run.iter().zip(reversals(run)) {
                     for (k, p) in f.oriented(reverse).enumerate() {
@@ -317,6 +356,90 @@ fn write_pieces(
         opacity_attr(b, b"fill-opacity", alpha);
         b.extend_from_slice(b"/>\n");
         paths += 1;
+    }
+    paths
+}
+
+/// Writes a run of textured fragments (see the module docs) with texture `k`; returns
+/// the number of paths.
+fn write_textured(
+    b: &mut Vec<u8>,
+    run: &[Frag<'_>],
+    k: u32,
+    alpha: u16,
+    mean: [f64; 3],
+    d: u8,
+    patterns: &mut u64,
+) -> usize {
+    let fill = run[0].src.fill;
+    let rgb = rgb_u8([fill[0], fill[1], fill[2]]);
+    let pieces: Vec<_> = run
+        .iter()
+        .map(|f| match &f.src.texture {
+            Some(map) => affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR),
+            None => Vec::new(),
+        })
+        .collect();
+    let outline_path = |b: &mut Vec<u8>| {
+        b.extend_from_slice(b"<path d=\"");
+        for (f, reverse) in run.iter().zip(reversals(run)) {
+            for (i, p) in f.oriented(reverse).enumerate() {
+                b.push(match i {
+                    0 => b'M',
+                    1 => b'L',
+                    _ => b' ',
+                });
+                push_point(b, p, d);
+            }
+            b.push(b'Z');
+        }
+        b.extend_from_slice(b"\" fill=\"");
+    };
+    let mut paths = 0;
+    if alpha < 1000 {
+        b.extend_from_slice(b"<g");
+        opacity_attr(b, b"opacity", alpha);
+        b.extend_from_slice(b">\n");
+    }
+    if pieces.iter().map(Vec::len).sum::<usize>() > 1 {
+        outline_path(b);
+        push_hex_color(b, rgb_u8([0, 1, 2].map(|i| fill[i] * mean[i])));
+        b.extend_from_slice(b"\"/>\n");
+        paths += 1;
+    }
+    for piece in pieces.iter().flatten() {
+        b.extend_from_slice(b"<pattern id=\"tp");
+        push_uint(b, *patterns);
+        b.extend_from_slice(b"\" href=\"#tex");
+        push_uint(b, k.into());
+        b.extend_from_slice(b"\" patternTransform=\"matrix(");
+        for (i, v) in piece.st_to_page.iter().enumerate() {
+            if i > 0 {
+                b.push(b' ');
+            }
+            // The linear part scales the unit tile up to the page: more decimals.
+            push_num(b, *v, if i < 4 { d + 4 } else { d + 2 });
+        }
+        b.extend_from_slice(b")\"/>\n<path d=\"M");
+        push_point(b, piece.points[0], d);
+        b.push(b'L');
+        push_point(b, piece.points[1], d);
+        b.push(b' ');
+        push_point(b, piece.points[2], d);
+        b.extend_from_slice(b"Z\" fill=\"url(#tp");
+        push_uint(b, *patterns);
+        b.extend_from_slice(b")\"/>\n");
+        *patterns += 1;
+        paths += 1;
+    }
+    if rgb != [255; 3] {
+        outline_path(b);
+        push_hex_color(b, rgb);
+        b.extend_from_slice(b"\" style=\"mix-blend-mode:multiply\"/>\n");
+        paths += 1;
+    }
+    if alpha < 1000 {
+        b.extend_from_slice(b"</g>\n");
     }
     paths
 }

@@ -35,7 +35,7 @@ pub use look::{Fog, FogError, FogFalloff, ParseShadingError, Shading};
 pub use marks::{LabelAnchor, MarkerShape, PointMark, Polyline, TextLabel};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
 pub use shade::{
-    fan_weights, interpolated_normal, polygon_normal, shade_face, shade_in_scene, shade_point, shade_sided,
-    shade_sided_in_scene, Effects, FaceNormals, Rgb,
+    fan_weights, interpolated_normal, polygon_normal, shade_face, shade_in_scene, shade_point,
+    shade_sided, shade_sided_in_scene, Effects, FaceNormals, Rgb,
 };
 pub use texture::{FaceTexcoords, Texture, TextureError};
