@@ -110,7 +110,7 @@ struct Content {
     outline_stroke: Option<([u32; 3], u64)>,
     /// Whether a label uses the font `/F1`.
     font: bool,
-    /// The textures (RGB rows, width, height) as image XObjects `/Im0`, `/Im1`, …
+    /// The textures (padded RGB rows, width, height) as image XObjects `/Im0`, …
     images: Vec<(Vec<u8>, u32, u32)>,
     /// Whether `/Mul` (blend mode Multiply) is used.
     multiply: bool,
@@ -200,7 +200,8 @@ impl Content {
         for ps in &pieces {
             let mut flat = false;
             for p in ps {
-                if !pdf_texture::write_piece(&mut self.buf, p, k, self.height, self.d) {
+                let size = (self.images[k as usize].1, self.images[k as usize].2);
+                if !pdf_texture::write_piece(&mut self.buf, p, k, size, self.height, self.d) {
                     // Too many repetitions: the piece in the mean colour.
                     flat = true;
                     self.color(cover, b"rg\n");
@@ -343,7 +344,7 @@ impl Painter for PdfPainter {
             images: picture
                 .textures
                 .iter()
-                .map(|t| (texture_images::rgb_rows(t), t.width(), t.height()))
+                .map(|t| texture_images::rgb_rows(t))
                 .collect(),
             multiply: false,
         };

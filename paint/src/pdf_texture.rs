@@ -1,8 +1,12 @@
 //! Textured fragments in PDF content streams: each affine piece (see
 //! `texture_pieces.rs`) clipped to its triangle, the texture's image XObject `/ImK`
-//! placed with `cm` once per repetition of the texture that the piece reaches.
+//! placed with `cm` once per repetition of the texture that the piece reaches. The
+//! image carries a wrapped border (see `texture_images.rs`); each repetition is clipped
+//! to its unit square grown by half a texel, so neighbouring repetitions overlap only
+//! where both interpolate correctly.
 
 use super::number::{push_num, push_uint};
+use super::texture_images::PAD;
 use super::texture_pieces::AffinePiece;
 
 /// A piece reaching more repetitions of its texture than this is filled with the
@@ -13,13 +17,18 @@ pub(crate) const MAX_TILES_PER_PIECE: i64 = 1024;
 /// triangle as the clip, one `cm /ImK Do` per texture repetition it reaches, `Q`.
 /// Returns `false`, writing nothing, when it reaches more than [`MAX_TILES_PER_PIECE`]
 /// repetitions.
+/// `padded` is the size of the embedded (padded) image.
 pub(crate) fn write_piece(
     buf: &mut Vec<u8>,
     piece: &AffinePiece,
     k: u32,
+    padded: (u32, u32),
     height: f64,
     d: u8,
 ) -> bool {
+    let (w, h) = (f64::from(padded.0 - 2 * PAD), f64::from(padded.1 - 2 * PAD));
+    let (px, py) = (f64::from(PAD) / w, f64::from(PAD) / h);
+    let (hx, hy) = (0.5 / w, 0.5 / h);
     let [a, b, c, dd, e, f] = piece.st_to_page;
     // The piece's texture coordinates, from its page corners (inverse affine map).
     let det = a * dd - b * c;
@@ -78,7 +87,18 @@ pub(crate) fn write_piece(
             push_num(buf, ex, d + 2);
             buf.push(b' ');
             push_num(buf, height - fy, d + 2);
-            buf.extend_from_slice(b" cm /Im");
+            buf.extend_from_slice(b" cm ");
+            // The unit square grown by half a texel, then the padded image around it.
+            for v in [-hx, -hy, 1.0 + 2.0 * hx, 1.0 + 2.0 * hy] {
+                push_num(buf, v, 9);
+                buf.push(b' ');
+            }
+            buf.extend_from_slice(b"re W n ");
+            for v in [1.0 + 2.0 * px, 0.0, 0.0, 1.0 + 2.0 * py, -px, -py] {
+                push_num(buf, v, 9);
+                buf.push(b' ');
+            }
+            buf.extend_from_slice(b"cm /Im");
             push_uint(buf, k.into());
             buf.extend_from_slice(b" Do Q\n");
             i += 1.0;

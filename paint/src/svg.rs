@@ -28,7 +28,8 @@
 //! gradientUnits="userSpaceOnUse">` written just before the path that uses it.
 //!
 //! **Textures**: each texture is embedded once, as a PNG `data:` URI in an `<image>`
-//! filling a 1 × 1 `<pattern id="texK">` tile in `<defs>` (so it repeats). A textured
+//! filling a 1 × 1 `<pattern id="texK">` tile in `<defs>` (so it repeats; the image has
+//! a wrapped border of one texel outside the tile, see `texture_images.rs`). A textured
 //! fragment is drawn as triangles, each a `<path>` filled with its own
 //! `<pattern id="tpN" href="#texK" patternTransform="matrix(…)"/>`: the affine map from
 //! texture to page, within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
@@ -153,12 +154,24 @@ impl Painter for SvgPainter {
                     what: "texture",
                     reason: "the image cannot be encoded as PNG",
                 })?;
+                // The padded image: its inner texels fill the unit tile.
+                let (px, py) = (
+                    f64::from(texture_images::PAD) / f64::from(t.width()),
+                    f64::from(texture_images::PAD) / f64::from(t.height()),
+                );
                 b.extend_from_slice(b"<pattern id=\"tex");
                 push_uint(b, k as u64);
                 b.extend_from_slice(
-                    b"\" patternUnits=\"userSpaceOnUse\" width=\"1\" height=\"1\"><image \
-                      width=\"1\" height=\"1\" preserveAspectRatio=\"none\" href=\"",
+                    b"\" patternUnits=\"userSpaceOnUse\" width=\"1\" height=\"1\"><image x=\"",
                 );
+                push_num(b, -px, 9);
+                b.extend_from_slice(b"\" y=\"");
+                push_num(b, -py, 9);
+                b.extend_from_slice(b"\" width=\"");
+                push_num(b, 1.0 + 2.0 * px, 9);
+                b.extend_from_slice(b"\" height=\"");
+                push_num(b, 1.0 + 2.0 * py, 9);
+                b.extend_from_slice(b"\" preserveAspectRatio=\"none\" href=\"");
                 b.extend_from_slice(uri.as_bytes());
                 b.extend_from_slice(b"\"/></pattern>\n");
             }
