@@ -9,14 +9,10 @@ use super::number::{push_num, push_uint};
 use super::texture_images::PAD;
 use super::texture_pieces::AffinePiece;
 
-/// A piece reaching more repetitions of its texture than this is filled with the
-/// fragment's flat colour instead (and counted as approximated).
-pub(crate) const MAX_TILES_PER_PIECE: i64 = 1024;
-
 /// Writes `piece` (page coordinates y down; the page is `height` high): `q`, its
 /// triangle as the clip, one `cm /ImK Do` per texture repetition it reaches, `Q`.
-/// Returns `false`, writing nothing, when it reaches more than [`MAX_TILES_PER_PIECE`]
-/// repetitions.
+/// Returns `false`, writing nothing, when it reaches too many repetitions (see
+/// [`AffinePiece::repetitions`]).
 /// `padded` is the size of the embedded (padded) image.
 pub(crate) fn write_piece(
     buf: &mut Vec<u8>,
@@ -30,35 +26,9 @@ pub(crate) fn write_piece(
     let (px, py) = (f64::from(PAD) / w, f64::from(PAD) / h);
     let (hx, hy) = (0.5 / w, 0.5 / h);
     let [a, b, c, dd, e, f] = piece.st_to_page;
-    // The piece's texture coordinates, from its page corners (inverse affine map).
-    let det = a * dd - b * c;
-    if det == 0.0 || !det.is_finite() {
-        return true; // degenerate: nothing to draw
-    }
-    let st = piece.points.map(|p| {
-        let (x, y) = (p[0] - e, p[1] - f);
-        [(dd * x - c * y) / det, (a * y - b * x) / det]
-    });
-    let lo = |q: usize| {
-        st.iter()
-            .map(|v| v[q])
-            .fold(f64::INFINITY, f64::min)
-            .floor()
-    };
-    let hi = |q: usize| {
-        st.iter()
-            .map(|v| v[q])
-            .fold(f64::NEG_INFINITY, f64::max)
-            .ceil()
-    };
-    let (s0, s1, t0, t1) = (lo(0), hi(0), lo(1), hi(1));
-    if !(s0.is_finite() && s1.is_finite() && t0.is_finite() && t1.is_finite()) {
+    let Some(tiles) = piece.repetitions() else {
         return false;
-    }
-    let tiles = (s1 - s0).max(1.0) * (t1 - t0).max(1.0);
-    if tiles > MAX_TILES_PER_PIECE as f64 {
-        return false;
-    }
+    };
     let point = |buf: &mut Vec<u8>, p: [f64; 2]| {
         push_num(buf, p[0], d);
         buf.push(b' ');
@@ -71,39 +41,33 @@ pub(crate) fn write_piece(
     buf.extend_from_slice(b" l ");
     point(buf, piece.points[2]);
     buf.extend_from_slice(b" l h W n\n");
-    let mut j = t0;
-    while j < t1.max(t0 + 1.0) {
-        let mut i = s0;
-        while i < s1.max(s0 + 1.0) {
-            // The image fills the unit square, its first row at the top: unit point
-            // (u, v) is texture point (i + u, j + 1 − v); then y flips for PDF.
-            let ex = a * i + c * (j + 1.0) + e;
-            let fy = b * i + dd * (j + 1.0) + f;
-            buf.extend_from_slice(b"q ");
-            for v in [a, -b, -c, dd] {
-                push_num(buf, v, d + 4);
-                buf.push(b' ');
-            }
-            push_num(buf, ex, d + 2);
+    for (i, j) in tiles {
+        // The image fills the unit square, its first row at the top: unit point (u, v)
+        // is texture point (i + u, j + 1 − v); then y flips for PDF.
+        let ex = a * i + c * (j + 1.0) + e;
+        let fy = b * i + dd * (j + 1.0) + f;
+        buf.extend_from_slice(b"q ");
+        for v in [a, -b, -c, dd] {
+            push_num(buf, v, d + 4);
             buf.push(b' ');
-            push_num(buf, height - fy, d + 2);
-            buf.extend_from_slice(b" cm ");
-            // The unit square grown by half a texel, then the padded image around it.
-            for v in [-hx, -hy, 1.0 + 2.0 * hx, 1.0 + 2.0 * hy] {
-                push_num(buf, v, 9);
-                buf.push(b' ');
-            }
-            buf.extend_from_slice(b"re W n ");
-            for v in [1.0 + 2.0 * px, 0.0, 0.0, 1.0 + 2.0 * py, -px, -py] {
-                push_num(buf, v, 9);
-                buf.push(b' ');
-            }
-            buf.extend_from_slice(b"cm /Im");
-            push_uint(buf, k.into());
-            buf.extend_from_slice(b" Do Q\n");
-            i += 1.0;
         }
-        j += 1.0;
+        push_num(buf, ex, d + 2);
+        buf.push(b' ');
+        push_num(buf, height - fy, d + 2);
+        buf.extend_from_slice(b" cm ");
+        // The unit square grown by half a texel, then the padded image around it.
+        for v in [-hx, -hy, 1.0 + 2.0 * hx, 1.0 + 2.0 * hy] {
+            push_num(buf, v, 9);
+            buf.push(b' ');
+        }
+        buf.extend_from_slice(b"re W n ");
+        for v in [1.0 + 2.0 * px, 0.0, 0.0, 1.0 + 2.0 * py, -px, -py] {
+            push_num(buf, v, 9);
+            buf.push(b' ');
+        }
+        buf.extend_from_slice(b"cm /Im");
+        push_uint(buf, k.into());
+        buf.extend_from_slice(b" Do Q\n");
     }
     buf.extend_from_slice(b"Q\n");
     true

@@ -27,17 +27,24 @@
 //! colour, not what lies behind (when it is drawn as two pieces or more). Each gradient is a `<linearGradient id="sN"
 //! gradientUnits="userSpaceOnUse">` written just before the path that uses it.
 //!
-//! **Textures**: each texture is embedded once, as a PNG `data:` URI in an `<image>`
-//! filling a 1 × 1 `<pattern id="texK">` tile in `<defs>` (so it repeats; the image has
-//! a wrapped border of one texel outside the tile, see `texture_images.rs`). A textured
-//! fragment is drawn as triangles, each a `<path>` filled with its own
-//! `<pattern id="tpN" href="#texK" patternTransform="matrix(…)"/>`: the affine map from
-//! texture to page, within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
-//! projective map (see `texture_pieces.rs`). When the fill is not white, the fragment
-//! is painted again in its fill with `mix-blend-mode:multiply` (fill times texture);
-//! a translucent fragment goes in a `<g opacity="…">` of its own. A fragment drawn as
-//! two triangles or more is first filled with its fill times the texture's mean colour,
-//! so the hairlines between its triangles show that colour.
+//! **Textures**: each texture is embedded once in `<defs>`, as a PNG `data:` URI in an
+//! `<image id="texK">` filling the unit square of texture space (with a wrapped border
+//! of one texel outside it, see `texture_images.rs`; `image-rendering:smooth` asks for
+//! bilinear interpolation, as limn samples), with a `<clipPath id="unitK">`: that square
+//! grown by half a texel. A textured fragment is drawn as triangles within
+//! [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact projective map (see
+//! `texture_pieces.rs`), each a `<clipPath id="tcN">` of its own and a
+//! `<g clip-path="url(#tcN)">` holding one `<use href="#texK" transform="matrix(…)"
+//! clip-path="url(#unitK)"/>` per repetition of the texture the triangle reaches (the
+//! matrix is the affine map from texture to page, shifted to the repetition; a triangle
+//! reaching more than 1024 repetitions is filled with the mean colour instead and
+//! counted as approximated). A fragment's triangles go in one `<g>`: with
+//! `opacity` when translucent, and when the fill is not white with
+//! `filter="url(#mN)"`, a `<feColorMatrix>` scaling each channel by the fill's (one
+//! filter per fill colour, written before its first use): fill times texture at every
+//! pixel. A fragment drawn as two triangles or more is first drawn whole under one
+//! affine map (its first fan triangle's), so the hairlines between its triangles show
+//! nearly the same texels.
 //!
 //! The `svg` crate could build the same document, but it stores numbers as `f32` and
 //! allocates per attribute; the benchmark `paint` compares both (see BENCHMARKS.md).
@@ -50,8 +57,7 @@ use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
-use super::{svg_smooth, texture_images, Label, PaintError, PaintStats, Painter, Picture};
+use super::{svg_smooth, svg_texture, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`SvgPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -147,36 +153,7 @@ impl Painter for SvgPainter {
             b.extend_from_slice(b"/>\n");
         }
 
-        if !picture.textures.is_empty() {
-            b.extend_from_slice(b"<defs>\n");
-            for (k, t) in picture.textures.iter().enumerate() {
-                let uri = texture_images::png_data_uri(t).ok_or(PaintError::Style {
-                    what: "texture",
-                    reason: "the image cannot be encoded as PNG",
-                })?;
-                // The padded image: its inner texels fill the unit tile.
-                let (px, py) = (
-                    f64::from(texture_images::PAD) / f64::from(t.width()),
-                    f64::from(texture_images::PAD) / f64::from(t.height()),
-                );
-                b.extend_from_slice(b"<pattern id=\"tex");
-                push_uint(b, k as u64);
-                b.extend_from_slice(
-                    b"\" patternUnits=\"userSpaceOnUse\" width=\"1\" height=\"1\"><image x=\"",
-                );
-                push_num(b, -px, 9);
-                b.extend_from_slice(b"\" y=\"");
-                push_num(b, -py, 9);
-                b.extend_from_slice(b"\" width=\"");
-                push_num(b, 1.0 + 2.0 * px, 9);
-                b.extend_from_slice(b"\" height=\"");
-                push_num(b, 1.0 + 2.0 * py, 9);
-                b.extend_from_slice(b"\" preserveAspectRatio=\"none\" href=\"");
-                b.extend_from_slice(uri.as_bytes());
-                b.extend_from_slice(b"\"/></pattern>\n");
-            }
-            b.extend_from_slice(b"</defs>\n");
-        }
+        svg_texture::write_defs(b, &picture.textures)?;
         let group: Cell<Option<u32>> = Cell::new(None);
         let tolerance = if self.options.tolerance > 0.0 {
             self.options.tolerance
@@ -184,7 +161,7 @@ impl Painter for SvgPainter {
             crate::phong::DEFAULT_TOLERANCE
         };
         let gradients = Cell::new(0u64);
-        let patterns = Cell::new(0u64);
+        let textured = RefCell::new(svg_texture::SvgTextures::default());
         let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
         let sink = RefCell::new(sink);
         let stats = RefCell::new(stats);
@@ -204,9 +181,9 @@ impl Painter for SvgPainter {
             let b = &mut sink.buf;
             enter(b, run[0].src.object);
             if let Some(k) = texture {
-                let mut n = patterns.get();
-                stats.paths += write_textured(b, run, k, alpha, means[k as usize], d, &mut n);
-                patterns.set(n);
+                stats.paths += textured
+                    .borrow_mut()
+                    .run(b, run, k, alpha, means[k as usize], d);
             }
             // Smooth runs: their pieces, and whether a cover must hide the hairlines
             // between them (only when there are two or more).
@@ -289,6 +266,7 @@ impl Painter for SvgPainter {
         let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
         let mut sink = sink.into_inner();
         let mut stats = stats.into_inner();
+        stats.approximated += textured.into_inner().approximated;
         if group.get().is_some() {
             sink.buf.extend_from_slice(b"</g>\n");
         }
@@ -369,90 +347,6 @@ fn write_pieces(
         opacity_attr(b, b"fill-opacity", alpha);
         b.extend_from_slice(b"/>\n");
         paths += 1;
-    }
-    paths
-}
-
-/// Writes a run of textured fragments (see the module docs) with texture `k`; returns
-/// the number of paths.
-fn write_textured(
-    b: &mut Vec<u8>,
-    run: &[Frag<'_>],
-    k: u32,
-    alpha: u16,
-    mean: [f64; 3],
-    d: u8,
-    patterns: &mut u64,
-) -> usize {
-    let fill = run[0].src.fill;
-    let rgb = rgb_u8([fill[0], fill[1], fill[2]]);
-    let pieces: Vec<_> = run
-        .iter()
-        .map(|f| match &f.src.texture {
-            Some(map) => affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR),
-            None => Vec::new(),
-        })
-        .collect();
-    let outline_path = |b: &mut Vec<u8>| {
-        b.extend_from_slice(b"<path d=\"");
-        for (f, reverse) in run.iter().zip(reversals(run)) {
-            for (i, p) in f.oriented(reverse).enumerate() {
-                b.push(match i {
-                    0 => b'M',
-                    1 => b'L',
-                    _ => b' ',
-                });
-                push_point(b, p, d);
-            }
-            b.push(b'Z');
-        }
-        b.extend_from_slice(b"\" fill=\"");
-    };
-    let mut paths = 0;
-    if alpha < 1000 {
-        b.extend_from_slice(b"<g");
-        opacity_attr(b, b"opacity", alpha);
-        b.extend_from_slice(b">\n");
-    }
-    if pieces.iter().map(Vec::len).sum::<usize>() > 1 {
-        outline_path(b);
-        push_hex_color(b, rgb_u8([0, 1, 2].map(|i| fill[i] * mean[i])));
-        b.extend_from_slice(b"\"/>\n");
-        paths += 1;
-    }
-    for piece in pieces.iter().flatten() {
-        b.extend_from_slice(b"<pattern id=\"tp");
-        push_uint(b, *patterns);
-        b.extend_from_slice(b"\" href=\"#tex");
-        push_uint(b, k.into());
-        b.extend_from_slice(b"\" patternTransform=\"matrix(");
-        for (i, v) in piece.st_to_page.iter().enumerate() {
-            if i > 0 {
-                b.push(b' ');
-            }
-            // The linear part scales the unit tile up to the page: more decimals.
-            push_num(b, *v, if i < 4 { d + 4 } else { d + 2 });
-        }
-        b.extend_from_slice(b")\"/>\n<path d=\"M");
-        push_point(b, piece.points[0], d);
-        b.push(b'L');
-        push_point(b, piece.points[1], d);
-        b.push(b' ');
-        push_point(b, piece.points[2], d);
-        b.extend_from_slice(b"Z\" fill=\"url(#tp");
-        push_uint(b, *patterns);
-        b.extend_from_slice(b")\"/>\n");
-        *patterns += 1;
-        paths += 1;
-    }
-    if rgb != [255; 3] {
-        outline_path(b);
-        push_hex_color(b, rgb);
-        b.extend_from_slice(b"\" style=\"mix-blend-mode:multiply\"/>\n");
-        paths += 1;
-    }
-    if alpha < 1000 {
-        b.extend_from_slice(b"</g>\n");
     }
     paths
 }

@@ -13,6 +13,13 @@
 use crate::TextureMap;
 
 /// The largest perspective error accepted, in pixels.
+///
+/// A triangle with page corners `P₀, P₁, P₂` gets the affine map `A` that agrees with
+/// the exact projective map `H` (page → texture) at its corners. At a point `p` the
+/// exact texture point is `H(p)`; the affine drawing puts that texture point at
+/// `A⁻¹(H(p))`. The error is the page distance `|A⁻¹(H(p)) − p|`, taken at the 12
+/// non-corner points of the barycentric grid of step ¼; a triangle above the bound is
+/// split into four at its page edge midpoints.
 pub const MAX_PERSPECTIVE_ERROR: f64 = 0.5;
 
 /// Splits stop after this many levels (4¹⁰ pieces at most per fan triangle): only
@@ -21,7 +28,7 @@ pub(crate) const MAX_DEPTH: u32 = 10;
 
 /// One page triangle drawn with one affine map.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct AffinePiece {
+pub struct AffinePiece {
     /// Page corners.
     pub points: [[f64; 2]; 3],
     /// The affine map from texture to page, `(a, b, c, d, e, f)` as in SVG's
@@ -29,13 +36,63 @@ pub(crate) struct AffinePiece {
     pub st_to_page: [f64; 6],
 }
 
+/// A piece reaching more repetitions of its texture than this is filled with the
+/// fragment's fill times the texture's mean colour instead (and counted as
+/// approximated).
+pub(crate) const MAX_TILES_PER_PIECE: u64 = 1024;
+
+impl AffinePiece {
+    /// The repetitions of the texture (unit squares of texture space, `[i, i + 1] ×
+    /// [j, j + 1]`) the piece reaches, as `(i, j)` pairs; `None` when there are more
+    /// than [`MAX_TILES_PER_PIECE`] of them, or the map is degenerate.
+    pub(crate) fn repetitions(&self) -> Option<Vec<(f64, f64)>> {
+        let [a, b, c, d, e, f] = self.st_to_page;
+        let det = a * d - b * c;
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        let st = self.points.map(|p| {
+            let (x, y) = (p[0] - e, p[1] - f);
+            [(d * x - c * y) / det, (a * y - b * x) / det]
+        });
+        let lo = |q: usize| {
+            st.iter()
+                .map(|v| v[q])
+                .fold(f64::INFINITY, f64::min)
+                .floor()
+        };
+        let hi = |q: usize| {
+            st.iter()
+                .map(|v| v[q])
+                .fold(f64::NEG_INFINITY, f64::max)
+                .ceil()
+        };
+        let (s0, s1, t0, t1) = (lo(0), hi(0).max(lo(0) + 1.0), lo(1), hi(1).max(lo(1) + 1.0));
+        if ![s0, s1, t0, t1].iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        if (s1 - s0) * (t1 - t0) > MAX_TILES_PER_PIECE as f64 {
+            return None;
+        }
+        let mut out = Vec::new();
+        let mut j = t0;
+        while j < t1 {
+            let mut i = s0;
+            while i < s1 {
+                out.push((i, j));
+                i += 1.0;
+            }
+            j += 1.0;
+        }
+        Some(out)
+    }
+}
+
 /// The affine pieces of the convex polygon `points` under `map` (fan triangles split
-/// until within `max_error` pixels); empty when the map is undefined at a corner.
-pub(crate) fn affine_pieces(
-    points: &[[f64; 2]],
-    map: &TextureMap,
-    max_error: f64,
-) -> Vec<AffinePiece> {
+/// until within `max_error` pixels, measured as [`MAX_PERSPECTIVE_ERROR`] says);
+/// triangles where the map is undefined at a corner are left out. The SVG and PDF
+/// writers draw these with `max_error` = [`MAX_PERSPECTIVE_ERROR`].
+pub fn affine_pieces(points: &[[f64; 2]], map: &TextureMap, max_error: f64) -> Vec<AffinePiece> {
     let mut out = Vec::new();
     for i in 1..points.len().saturating_sub(1) {
         split(
