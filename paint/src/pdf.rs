@@ -18,9 +18,10 @@
 //!   Flate-compressed, `/Interpolate true`). A fragment is drawn inside `q … Q` as
 //!   affine triangles within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
 //!   projective map, each clipped to its triangle with the image placed by `cm` (once
-//!   per repetition of the texture the triangle reaches); a fragment drawn as two
-//!   triangles or more is first filled with its fill times the texture's mean colour
-//!   (hairlines between triangles show that colour). A fill other than white is then
+//!   per repetition of the texture the triangle reaches; a triangle reaching more than
+//!   1024 is filled with the mean colour and counted as approximated). Under them the
+//!   whole run (fragments and seam flaps as one clip) is drawn first under one affine
+//!   map, so the anti-aliased edges between triangles show nearly the same texels. A fill other than white is then
 //!   painted over the fragment with the blend mode `Multiply` (`/Mul gs`): fill times
 //!   texture, exact for opaque fragments; a translucent one blends twice and is counted
 //!   as approximated.
@@ -169,48 +170,67 @@ impl Content {
     /// A run of textured fragments with texture `k` and fill `rgb` (see the module
     /// docs), inside `q … Q`; returns how many fragments are approximated.
     fn textured_run(&mut self, run: &[Frag<'_>], k: u32, rgb: [u32; 3], mean: [f64; 3]) -> usize {
-        let pieces: Vec<_> = run
-            .iter()
-            .map(|f| match &f.src.texture {
-                Some(map) => affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR),
-                None => Vec::new(),
-            })
-            .collect();
         let fill = run[0].src.fill;
-        let path = |c: &mut Content| {
-            for (f, reverse) in run.iter().zip(reversals(run)) {
-                for (i, p) in f.oriented(reverse).enumerate() {
-                    c.point(p);
+        let size = (self.images[k as usize].1, self.images[k as usize].2);
+        let flat = self.quantise([0, 1, 2].map(|i| fill[i] * mean[i]));
+        let polys: Vec<Vec<[f64; 2]>> = run
+            .iter()
+            .zip(reversals(run))
+            .map(|(f, reverse)| f.oriented(reverse).collect())
+            .collect();
+        // Fills `polys` with the mean colour (too many repetitions of the texture).
+        let mean_fill = |c: &mut Content, polys: &[Vec<[f64; 2]>]| {
+            c.color(flat, b"rg\n");
+            for poly in polys {
+                for (i, &q) in poly.iter().enumerate() {
+                    c.point(q);
                     c.buf
                         .extend_from_slice(if i == 0 { b" m " } else { b" l " });
                 }
-                c.buf.extend_from_slice(b"h\n");
+                c.buf.extend_from_slice(b"h ");
             }
+            c.buf.extend_from_slice(b"f\n");
         };
         let mut approximated = 0;
         self.buf.extend_from_slice(b"q\n");
-        let many = pieces.iter().map(Vec::len).sum::<usize>() > 1;
-        if many {
-            let cover = self.quantise([0, 1, 2].map(|i| fill[i] * mean[i]));
-            self.color(cover, b"rg\n");
-            path(self);
-            self.buf.extend_from_slice(b"f\n");
+        // Under the pieces, the whole run (fragments and seam flaps: one clip) under one
+        // affine map, the first fan triangle's: the anti-aliased edges between pieces
+        // then show nearly the same texels.
+        let whole = run.iter().find_map(|f| {
+            let map = f.src.texture.as_ref()?;
+            affine_pieces(&f.points, map, f64::INFINITY)
+                .first()
+                .copied()
+        });
+        if let Some(whole) = whole {
+            if !pdf_texture::write_clipped(
+                &mut self.buf,
+                &polys,
+                &whole,
+                k,
+                size,
+                self.height,
+                self.d,
+            ) {
+                mean_fill(self, &polys);
+            }
         }
-        let cover = self.quantise([0, 1, 2].map(|i| fill[i] * mean[i]));
-        for ps in &pieces {
+        for f in run {
+            let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
-            for p in ps {
-                let size = (self.images[k as usize].1, self.images[k as usize].2);
-                if !pdf_texture::write_piece(&mut self.buf, p, k, size, self.height, self.d) {
-                    // Too many repetitions: the piece in the mean colour.
+            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
+                let tri = [p.points.to_vec()];
+                if !pdf_texture::write_clipped(
+                    &mut self.buf,
+                    &tri,
+                    &p,
+                    k,
+                    size,
+                    self.height,
+                    self.d,
+                ) {
                     flat = true;
-                    self.color(cover, b"rg\n");
-                    for (i, &q) in p.points.iter().enumerate() {
-                        self.point(q);
-                        self.buf
-                            .extend_from_slice(if i == 0 { b" m " } else { b" l " });
-                    }
-                    self.buf.extend_from_slice(b"h f\n");
+                    mean_fill(self, &tri);
                 }
             }
             approximated += usize::from(flat);
@@ -220,7 +240,14 @@ impl Content {
             self.buf.extend_from_slice(b"/Mul gs ");
             self.multiply = true;
             self.color(rgb, b"rg\n");
-            path(self);
+            for poly in &polys {
+                for (i, &q) in poly.iter().enumerate() {
+                    self.point(q);
+                    self.buf
+                        .extend_from_slice(if i == 0 { b" m " } else { b" l " });
+                }
+                self.buf.extend_from_slice(b"h ");
+            }
             self.buf.extend_from_slice(b"f\n");
             if self.alpha < 1000 {
                 approximated += run.len();

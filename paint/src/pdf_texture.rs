@@ -9,13 +9,14 @@ use super::number::{push_num, push_uint};
 use super::texture_images::PAD;
 use super::texture_pieces::AffinePiece;
 
-/// Writes `piece` (page coordinates y down; the page is `height` high): `q`, its
-/// triangle as the clip, one `cm /ImK Do` per texture repetition it reaches, `Q`.
+/// Writes the polygons `polys` (page coordinates y down; the page is `height` high)
+/// textured under `piece`'s map: `q`, the polygons as the clip (non-zero rule), one `cm /ImK Do` per texture repetition it reaches, `Q`.
 /// Returns `false`, writing nothing, when it reaches too many repetitions (see
 /// [`AffinePiece::repetitions`]).
 /// `padded` is the size of the embedded (padded) image.
-pub(crate) fn write_piece(
+pub(crate) fn write_clipped(
     buf: &mut Vec<u8>,
+    polys: &[Vec<[f64; 2]>],
     piece: &AffinePiece,
     k: u32,
     padded: (u32, u32),
@@ -35,12 +36,14 @@ pub(crate) fn write_piece(
         push_num(buf, height - p[1], d);
     };
     buf.extend_from_slice(b"q ");
-    point(buf, piece.points[0]);
-    buf.extend_from_slice(b" m ");
-    point(buf, piece.points[1]);
-    buf.extend_from_slice(b" l ");
-    point(buf, piece.points[2]);
-    buf.extend_from_slice(b" l h W n\n");
+    for poly in polys {
+        for (i, &p) in poly.iter().enumerate() {
+            point(buf, p);
+            buf.extend_from_slice(if i == 0 { b" m " } else { b" l " });
+        }
+        buf.extend_from_slice(b"h ");
+    }
+    buf.extend_from_slice(b"W n\n");
     for (i, j) in tiles {
         // The image fills the unit square, its first row at the top: unit point (u, v)
         // is texture point (i + u, j + 1 − v); then y flips for PDF.
