@@ -129,9 +129,9 @@ impl SvgTextures {
             .zip(reversals(run))
             .map(|(f, reverse)| f.oriented(reverse).collect())
             .collect();
-        let whole = run.iter().find_map(|f| {
-            let map = f.src.texture.as_ref()?;
-            affine_pieces(&f.points, map, f64::INFINITY)
+        let source = run.iter().find_map(|f| f.src.texture);
+        let whole = source.as_ref().and_then(|map| {
+            affine_pieces(&run[0].points, map, f64::INFINITY)
                 .first()
                 .copied()
         });
