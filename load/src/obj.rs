@@ -63,6 +63,9 @@ const IGNORED: &[&[u8]] = &[
     b"csh",
 ];
 
+/// A `map_Kd`'s `-s` (scale) and `-o` (offset) of `u` and `v`.
+type UvTransform = ([f64; 2], [f64; 2]);
+
 struct Obj<'a> {
     path: &'a Path,
     opts: &'a LoadOptions,
@@ -82,7 +85,7 @@ struct Obj<'a> {
     images: HashMap<PathBuf, Arc<Texture>>,
     /// Scene materials whose `map_Kd` has been looked at, with its coordinate transform
     /// when it moves coordinates (`-s`, `-o`).
-    textured: HashMap<u32, Option<([f64; 2], [f64; 2])>>,
+    textured: HashMap<u32, Option<UvTransform>>,
     /// Transformed copies of texture coordinates: (index, material) → index.
     moved: HashMap<(u32, u32), u32>,
 }
@@ -320,7 +323,7 @@ impl Obj<'_> {
     /// Reads the `map_Kd` image of scene material `material` (named by the current
     /// `usemtl`) into it, if it has one; returns the map's coordinate transform when it
     /// is not the identity.
-    fn read_map(&mut self, material: u32) -> Result<Option<([f64; 2], [f64; 2])>, LoadError> {
+    fn read_map(&mut self, material: u32) -> Result<Option<UvTransform>, LoadError> {
         let name = self.material_name.clone().unwrap_or_default();
         let Some(map) = self.library.maps.get(&name).cloned() else {
             return Ok(None);

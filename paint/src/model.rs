@@ -159,8 +159,8 @@ impl Picture {
         for f in &mut out.fragments {
             if let Some(t) = f.texture.take() {
                 let m = means.get(t.texture as usize).copied().unwrap_or([1.0; 3]);
-                for k in 0..3 {
-                    f.fill[k] *= m[k];
+                for (c, m) in f.fill.iter_mut().zip(m) {
+                    *c *= m;
                 }
             }
         }
