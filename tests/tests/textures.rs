@@ -147,6 +147,7 @@ const ALL: u8 = 40;
 fn assert_agree(png: &[u8], svg: &[u8], w: u32, outline: &[[f64; 2]], what: &str) {
     let (worst, over, compared) = compare(png, svg, w, outline, MOST);
     let share = over as f64 / compared as f64;
+    eprintln!("{what}: worst {worst}, {over} of {compared} pixels above {MOST} levels");
     assert!(compared > 10_000, "{what}: {compared} pixels compared");
     assert!(
         share <= FEW,
@@ -210,6 +211,7 @@ fn textured_triangles_show_no_seams() {
         let png = png_pixels(&pic);
         let (_, rendered) = svg_pixels(&pic);
         let least = least_inner_alpha(&png, &rendered, pic.width, &outline);
+        eprintln!("lit {lit}: least alpha inside {least}");
         assert!(least >= 250, "lit {lit}: alpha {least} inside the floor");
         assert_agree(
             &png,
@@ -279,6 +281,7 @@ fn checker_corners_land_at_their_projected_points_at_a_grazing_angle() {
             }
         }
     }
+    eprintln!("grazing view: {pieces} affine pieces, {checked} corners checked");
     assert!(
         pieces > 8,
         "a grazing view needs subdivision: {pieces} pieces"
@@ -344,6 +347,7 @@ fn image_space_renderers_sample_as_the_png_painter() {
         assert!(compared > 3000, "{compared}");
         // Both sample the same bilinear texture at each pixel centre: equal up to the
         // rounding of the texture coordinates.
+        eprintln!("{method:?}: worst {worst} over {compared} pixels");
         assert!(worst <= 1, "{method:?}: worst difference {worst}");
     }
 }
