@@ -258,3 +258,28 @@ fn gltf_texture_errors_name_the_image() {
         assert!(e.to_string().contains(what), "{image}: {e}");
     }
 }
+
+#[test]
+fn scene_files_keep_each_mesh_textured() {
+    let d = dir();
+    write(d.path(), "c.png", checker());
+    write(d.path(), "m.mtl", "newmtl tex\nmap_Kd c.png\n");
+    write(d.path(), "q.obj", QUAD);
+    // A first mesh without texture coordinates, then the textured quad twice: the
+    // coordinates of each copy follow its own faces.
+    write(d.path(), "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    let s = ok(&write(
+        d.path(),
+        "s.toml",
+        "[[mesh]]\npath = \"t.obj\"\n[[mesh]]\npath = \"q.obj\"\n\
+         [[mesh]]\npath = \"q.obj\"\ntranslate = [3, 0, 0]\n",
+    ));
+    assert_eq!(s.faces.len(), 3);
+    assert!(s.faces[0].texcoords.is_none());
+    assert_eq!(s.faces[1].texcoords, Some(vec![0, 1, 2, 3]));
+    assert_eq!(s.faces[2].texcoords, Some(vec![4, 5, 6, 7]));
+    assert_eq!(s.texcoords[4..], s.texcoords[..4]);
+    let t = |f: usize| s.materials[s.faces[f].material as usize].texture.clone();
+    assert!(t(1).is_some() && t(2).is_some());
+    assert!(limn_scene::Effects::of(&s).texture);
+}

@@ -22,6 +22,11 @@ use crate::TextureMap;
 /// split into four at its page edge midpoints.
 pub const MAX_PERSPECTIVE_ERROR: f64 = 0.5;
 
+/// A fragment is cut into at most about this many pieces: past it, triangles are taken
+/// as they are (only a fragment reaching the horizon of its plane over a huge page gets
+/// there), so no map can make a writer's output grow without bound.
+pub(crate) const MAX_PIECES: usize = 16_384;
+
 /// Splits stop after this many levels (4¹⁰ pieces at most per fan triangle): only
 /// triangles reaching the horizon of their plane get there.
 pub(crate) const MAX_DEPTH: u32 = 10;
@@ -119,7 +124,10 @@ fn split(
     let Some(affine) = st_to_page(&t, &st) else {
         return; // degenerate on the page or in the texture: nothing to draw
     };
-    if depth >= MAX_DEPTH || perspective_error(&t, map, &affine) <= max_error {
+    if depth >= MAX_DEPTH
+        || out.len() >= MAX_PIECES
+        || perspective_error(&t, map, &affine) <= max_error
+    {
         out.push(AffinePiece {
             points: t,
             st_to_page: affine,
