@@ -1,4 +1,5 @@
-//! `limn-bench effects`: what each shading effect costs on a 100k-triangle scene, what
+//! `limn-bench effects`: what each shading effect (and a texture) costs on a
+//! 100k-triangle scene, what
 //! the effects machinery costs a scene that asks for none (against the flat-only path
 //! the painter took before smooth effects existed, replicated here), and SVG bytes
 //! against the shading tolerance.
@@ -47,6 +48,36 @@ fn lit_sphere(rings: u32, segments: u32) -> Scene {
     s
 }
 
+/// Gives the sphere spherical texture coordinates (`s` around, `t` from the top) and a
+/// 256 × 256 checker of 16 × 16 texels per square as its material's texture.
+fn add_texture(s: &mut Scene) {
+    let n = 256u32;
+    let mut rgba = Vec::with_capacity(4 * (n * n) as usize);
+    for j in 0..n {
+        for i in 0..n {
+            let c = if (i / 16 + j / 16) % 2 == 0 {
+                [230, 80, 50]
+            } else {
+                [245, 235, 200]
+            };
+            rgba.extend_from_slice(&[c[0], c[1], c[2], 255]);
+        }
+    }
+    let t = limn_scene::Texture::new("checker", n, n, rgba).expect("valid texture");
+    s.materials[0].texture = Some(std::sync::Arc::new(t));
+    s.texcoords = s
+        .vertices
+        .iter()
+        .map(|p| {
+            let around = 0.5 + p.z.atan2(p.x) / std::f64::consts::TAU;
+            [around, p.y.clamp(-1.0, 1.0).acos() / std::f64::consts::PI]
+        })
+        .collect();
+    for f in &mut s.faces {
+        f.texcoords = Some(f.vertices.clone());
+    }
+}
+
 /// How one configuration changes the base scene.
 type Change = fn(&mut Scene);
 
@@ -59,6 +90,14 @@ fn configs() -> Vec<(&'static str, Change)> {
         ("flat lit", |s| s.shading = Some(Shading::Flat)),
         ("gouraud", |s| s.shading = Some(Shading::Gouraud)),
         ("phong", |s| s.shading = Some(Shading::Phong)),
+        ("texture, unlit", |s| {
+            s.materials[0].illum = 0;
+            add_texture(s);
+        }),
+        ("texture, flat lit", |s| {
+            s.shading = Some(Shading::Flat);
+            add_texture(s);
+        }),
         ("gouraud + fog", |s| {
             s.shading = Some(Shading::Gouraud);
             s.fog = Some(Fog {
@@ -122,6 +161,7 @@ fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture
             face: f.face,
             object: face.object,
             original_edges,
+            texture: None,
         });
     }
     Picture {
@@ -137,6 +177,7 @@ fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture
         outline: style.outline,
         seams: 0.0,
         marks: Vec::new(),
+        textures: Vec::new(),
     }
 }
 

@@ -80,6 +80,7 @@ const RENDER_HELP: &str = "Examples:
   limn render part.stl -o p.svg --style hidden-line --fill none --crease 20  # plotter lines
   limn render plot.toml -o plot.pdf              # [[line]], [[points]], [[label]] hidden exactly
   limn render bunny.obj -o b.pdf --shading phong --shading-tolerance 0.002
+  limn render crate.obj -o c.svg                 # vt + map_Kd (PNG/JPEG): each image embedded once
 
 Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
 limit reached; no output file is left), 2 usage error.";

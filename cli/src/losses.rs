@@ -53,6 +53,18 @@ pub fn losses(
         };
         out.push(format!("{} {what}", ps.approximated));
     }
+    if ps.textures_flattened > 0 {
+        out.push(format!(
+            "{} textured fragments: {} draws no texture images here, so each is filled with \
+             its colour times the texture's mean colour",
+            ps.textures_flattened,
+            match format {
+                Format::Eps => "EPS",
+                Format::Tikz => "TikZ",
+                _ => "this format",
+            }
+        ));
+    }
     if ps.skipped > 0 {
         out.push(format!(
             "{} fragments with invalid coordinates were not painted",

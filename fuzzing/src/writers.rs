@@ -1,6 +1,7 @@
 //! Arbitrary pictures through every writer of `limn-paint`: fragments with small,
 //! raw or extreme coordinates (±∞, NaN, ±f64::MAX, subnormals), any colours and
-//! opacities, Gouraud colours, object names that need escaping, outlines and seams.
+//! opacities, Gouraud colours, textures under any projective map (and texture indices
+//! out of range), object names that need escaping, outlines and seams.
 //! Every writer either fails with a typed error or writes a file that parses: SVG as
 //! XML (`roxmltree`), PDF with `lopdf`, PNG with the `png` decoder (of the picture's
 //! size), EPS between `%!PS-Adobe` and `%%EOF`; and the reported byte count is the
@@ -99,7 +100,14 @@ pub struct Frag {
     pub object: u8,
     /// Which edges are original (outlined).
     pub edges: Vec<bool>,
+    /// A texture: its index (the picture has [`TEXTURES`] of them) and the rows of the
+    /// page-to-texture map.
+    pub texture: Option<(u8, [Num; 9])>,
 }
+
+/// Textures in a picture with a textured fragment (indices at and past it are out of
+/// range on purpose).
+pub const TEXTURES: u8 = 2;
 
 impl fmt::Debug for Frag {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -110,6 +118,7 @@ impl fmt::Debug for Frag {
             .field("face", &self.face)
             .field("object", &self.object)
             .field("edges", &VecLit(&self.edges))
+            .field("texture", &self.texture)
             .finish()
     }
 }
@@ -176,8 +185,26 @@ pub fn picture(case: &Case) -> Picture {
             face: u32::from(f.face),
             object: u32::from(f.object),
             original_edges: f.edges.iter().take(17).copied().collect(),
+            texture: f.texture.map(|(k, m)| limn_paint::TextureMap {
+                texture: u32::from(k % (TEXTURES + 1)),
+                screen_to_st: [
+                    [m[0].value(), m[1].value(), m[2].value()],
+                    [m[3].value(), m[4].value(), m[5].value()],
+                    [m[6].value(), m[7].value(), m[8].value()],
+                ],
+            }),
         })
         .collect();
+    if p.has_textures() {
+        // A 3 × 2 texture and a 1 × 1 one.
+        let a: Vec<u8> = (0..24u8).map(|v| v.wrapping_mul(37)).collect();
+        p.textures = vec![
+            std::sync::Arc::new(limn_paint::Texture::new("a", 3, 2, a).expect("valid")),
+            std::sync::Arc::new(
+                limn_paint::Texture::new("b", 1, 1, vec![9, 99, 199, 255]).expect("valid"),
+            ),
+        ];
+    }
     p.outline = case.outline.map(|(c, w)| Outline {
         color: c.value(),
         width: w.value(),

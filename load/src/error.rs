@@ -210,6 +210,17 @@ pub enum LoadError {
         /// The limit.
         limit: u64,
     },
+    /// A texture image named at `at` is missing, unreadable, not PNG or JPEG, corrupt, or
+    /// too large.
+    #[error("{at}: texture image {image:?}: {message}")]
+    Image {
+        /// The file and line (or glTF record) naming the image.
+        at: Location,
+        /// The image as named (a path, or `data:` URI / buffer view for embedded ones).
+        image: String,
+        /// What is wrong.
+        message: String,
+    },
     /// A mesh named by a scene file failed to load.
     #[error("{at}: in the mesh named here: {source}")]
     InMesh {
@@ -250,6 +261,7 @@ impl LoadError {
             | LoadError::Invalid { at, .. }
             | LoadError::Camera { at, .. }
             | LoadError::TooLarge { at, .. }
+            | LoadError::Image { at, .. }
             | LoadError::InMesh { at, .. }
             | LoadError::Internal { at, .. } => at,
         }

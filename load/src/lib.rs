@@ -21,6 +21,7 @@
 
 mod error;
 mod gltf;
+mod image;
 mod mtl;
 mod obj;
 mod ply;

@@ -1,9 +1,10 @@
 //! Wavefront MTL material libraries.
 //!
 //! Read: `newmtl`, `Kd`, `Ka`, `Ks` (RGB triples), `Ns`, `d` (opacity, also with
-//! `-halo`), `Tr` (= 1 − d), `illum` (0–10). Texture maps (`map_Kd`, `bump`, …) are not
-//! drawn, with one warning per library naming the first; other statements (`Ke`, `Ni`,
-//! PBR extensions) are ignored. A material starts from
+//! `-halo`), `Tr` (= 1 − d), `illum` (0–10), `map_Kd` (the diffuse texture, see
+//! [`MapRef`]). Other texture maps (`map_Ks`, `bump`, …) are not drawn, with one warning
+//! per library naming the first; other statements (`Ke`, `Ni`, PBR extensions) are
+//! ignored. A material starts from
 //! [`Material::default_grey`] and the statements override its fields. Colours outside
 //! [0, 1] are clamped with a warning; non-finite numbers are errors.
 //!
@@ -21,6 +22,29 @@ use limn_scene::Material;
 #[derive(Debug, Default)]
 pub(crate) struct Library {
     pub(crate) materials: HashMap<String, Material>,
+    /// The `map_Kd` of each material that has one, by material name. The image is read
+    /// only when a face with texture coordinates uses the material.
+    pub(crate) maps: HashMap<String, MapRef>,
+}
+
+/// A `map_Kd` statement: the image as named, where it was named, and the options that
+/// move texture coordinates.
+///
+/// Options: `-s u v` (scale) and `-o u v` (offset) transform texture coordinates as
+/// `(u, v) ↦ (s·u + o, …)` (a third number, for 3D textures, is read and ignored);
+/// `-blendu`, `-blendv`, `-cc`, `-boost`, `-texres` and `-bm` change nothing in
+/// limn's pictures and are read and ignored; `-clamp on`, `-mm`, `-t` and `-imfchan`
+/// would change colours and are refused with the line.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct MapRef {
+    /// The file as written.
+    pub(crate) file: String,
+    /// The MTL file and line of the statement (references resolve against its folder).
+    pub(crate) at: Location,
+    /// `-s`: scale of `u` and `v`.
+    pub(crate) scale: [f64; 2],
+    /// `-o`: offset of `u` and `v`.
+    pub(crate) offset: [f64; 2],
 }
 
 /// Parses MTL text into `lib`, appending warnings.
@@ -43,6 +67,8 @@ pub(crate) fn parse(
             if let Some(m) = current.take() {
                 lib.materials.insert(m.name.clone(), m);
             }
+            // A redefinition starts without the earlier definition's map.
+            lib.maps.remove(&lossy(rest_after_keyword(line)));
             let name = lossy(rest_after_keyword(line));
             if name.is_empty() {
                 return Err(LoadError::syntax(path, n, "newmtl without a name"));
@@ -118,6 +144,10 @@ pub(crate) fn parse(
                 }
                 m.illum = v as u8;
             }
+            b"map_Kd" => {
+                let map = map_kd(path, n, rest_after_keyword(line))?;
+                lib.maps.insert(m.name.clone(), map);
+            }
             _ if is_texture(key) => {
                 textures.get_or_insert((n, lossy(key)));
             }
@@ -135,6 +165,101 @@ pub(crate) fn parse(
         ));
     }
     Ok(())
+}
+
+/// Reads the options and file name of a `map_Kd` statement (`rest` follows the key).
+fn map_kd(path: &Path, n: u64, rest: &[u8]) -> Result<MapRef, LoadError> {
+    let mut scale = [1.0, 1.0];
+    let mut offset = [0.0, 0.0];
+    let toks: Vec<&[u8]> = tokens(rest).collect();
+    let mut i = 0;
+    // Up to `max` numbers after an option.
+    let numbers = |i: &mut usize, max: usize| -> Result<Vec<f64>, LoadError> {
+        let mut v = Vec::new();
+        while v.len() < max {
+            match toks.get(*i).and_then(|t| crate::text::parse_f64(t)) {
+                Some(x) if x.is_finite() => v.push(x),
+                Some(_) => {
+                    return Err(LoadError::NonFinite {
+                        at: Location::line(path, n),
+                        what: "map_Kd option".into(),
+                    })
+                }
+                None => break,
+            }
+            *i += 1;
+        }
+        Ok(v)
+    };
+    while let Some(&t) = toks.get(i) {
+        if !t.starts_with(b"-") || t.len() < 2 {
+            break;
+        }
+        i += 1;
+        match t {
+            b"-s" | b"-o" => {
+                let v = numbers(&mut i, 3)?;
+                if v.is_empty() {
+                    return Err(LoadError::syntax(
+                        path,
+                        n,
+                        format!("map_Kd {} needs numbers", lossy(t)),
+                    ));
+                }
+                let uv = [
+                    v[0],
+                    v.get(1)
+                        .copied()
+                        .unwrap_or(if t == b"-s" { 1.0 } else { 0.0 }),
+                ];
+                if t == b"-s" {
+                    scale = uv;
+                } else {
+                    offset = uv;
+                }
+            }
+            b"-blendu" | b"-blendv" | b"-cc" | b"-clamp" => {
+                let v = toks.get(i).copied().unwrap_or_default();
+                if v != b"on" && v != b"off" {
+                    return Err(LoadError::syntax(
+                        path,
+                        n,
+                        format!("map_Kd {} needs on or off", lossy(t)),
+                    ));
+                }
+                if t == b"-clamp" && v == b"on" {
+                    return Err(LoadError::Unsupported {
+                        at: Location::line(path, n),
+                        what: "map_Kd -clamp on (textures repeat)".into(),
+                    });
+                }
+                i += 1;
+            }
+            b"-boost" | b"-texres" | b"-bm" => {
+                numbers(&mut i, 1)?;
+            }
+            _ => {
+                return Err(LoadError::Unsupported {
+                    at: Location::line(path, n),
+                    what: format!("map_Kd option {}", lossy(t)),
+                })
+            }
+        }
+    }
+    let file = toks[i.min(toks.len())..]
+        .iter()
+        .map(|t| lossy(t))
+        .collect::<Vec<_>>()
+        .join(" ");
+    if file.is_empty() {
+        return Err(LoadError::syntax(path, n, "map_Kd without a file name"));
+    }
+    Ok(MapRef {
+        file,
+        at: Location::line(path, n),
+        scale,
+        offset,
+    })
 }
 
 /// Texture and bump map statements.
@@ -174,7 +299,7 @@ mod tests {
     #[test]
     fn reads_the_fields_limn_uses() {
         let src = b"# c\nnewmtl red\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 20\nillum 2\nTr 0.25\n\
-                    newmtl unlit glass\nKd 0.2\nd -halo 0.5\nillum 0\nmap_Kd x.png\n";
+                    newmtl unlit glass\nKd 0.2\nd -halo 0.5\nillum 0\nmap_Ks x.png\n";
         let mut lib = Library::default();
         let mut w = Vec::new();
         parse(src, Path::new("a.mtl"), &mut lib, &mut w).unwrap();
@@ -186,7 +311,37 @@ mod tests {
         assert_eq!((g.kd, g.opacity, g.illum), ([0.2; 3], 0.5, 0));
         // The texture map is the one thing not drawn: one warning at its line.
         assert_eq!(w.len(), 1, "{w:?}");
-        assert!(w[0].starts_with("a.mtl:12: texture maps (map_Kd"), "{w:?}");
+        assert!(w[0].starts_with("a.mtl:12: texture maps (map_Ks"), "{w:?}");
+    }
+
+    #[test]
+    fn map_kd_options_are_read_or_refused() {
+        let src = b"newmtl a\nmap_Kd -s 2 3 1 -o 0.5 -blendu off -bm 1 my tex.png\n\
+                    newmtl b\nmap_Kd plain.jpg\n";
+        let mut lib = Library::default();
+        let mut w = Vec::new();
+        parse(src, Path::new("a.mtl"), &mut lib, &mut w).unwrap();
+        assert!(w.is_empty(), "{w:?}");
+        let a = &lib.maps["a"];
+        assert_eq!(a.file, "my tex.png");
+        assert_eq!((a.scale, a.offset), ([2.0, 3.0], [0.5, 0.0]));
+        assert_eq!(a.at, Location::line(Path::new("a.mtl"), 2));
+        assert_eq!(lib.maps["b"].file, "plain.jpg");
+        for (bad, what) in [
+            ("map_Kd -clamp on x.png", "-clamp on"),
+            ("map_Kd -mm 0 1 x.png", "option -mm"),
+            ("map_Kd -s x.png", "-s needs numbers"),
+            ("map_Kd -s 1 nan x.png", "non-finite"),
+            ("map_Kd -o 1", "without a file name"),
+        ] {
+            let src = format!("newmtl a\n\n{bad}\n");
+            let e = parse(src.as_bytes(), Path::new("a.mtl"), &mut lib, &mut w).unwrap_err();
+            let msg = e.to_string();
+            assert!(
+                msg.starts_with("a.mtl:3:") && msg.contains(what),
+                "{bad}: {msg}"
+            );
+        }
     }
 
     #[test]

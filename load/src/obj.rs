@@ -12,23 +12,26 @@
 //! vertices, `v` or `v/vt`), `p` (one point marker per vertex), `o` and `g` (each starts
 //! an object; the same name again continues it), `usemtl`, `mtllib`. Lines and points
 //! take the current material's `Kd` and `d` as their colour (black without a `usemtl`),
-//! width 1 px and 4 px dots. Texture coordinates, smoothing groups and the free-form
-//! geometry statements are accepted and ignored; any other statement is an error (so
+//! width 1 px and 4 px dots. Texture coordinates (`vt u [v [w]]`, stored as
+//! `(u, 1 − v)`: limn's `t` runs down the image) are used by faces whose every corner
+//! names one and whose material has a `map_Kd`; the image is read then, once per file
+//! (see [`crate::image`]). Smoothing groups and the free-form geometry statements are
+//! accepted and ignored; any other statement is an error (so
 //! binary garbage is reported, not silently dropped).
 
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::DVec3;
 
 use super::mtl::{self, Library};
 use super::text::{lossy, number, parse_i64, rest_after_keyword, strip_comment, tokens, Lines};
 use super::{check_u32, refs, stem, LoadError, LoadOptions, Location};
-use limn_scene::{Face, Material, PointMark, Polyline, Scene};
+use limn_scene::{Face, Material, PointMark, Polyline, Scene, Texture};
 
 /// Statements accepted and ignored.
 const IGNORED: &[&[u8]] = &[
-    b"vt",
     b"vp",
     b"s",
     b"mg",
@@ -60,6 +63,9 @@ const IGNORED: &[&[u8]] = &[
     b"csh",
 ];
 
+/// A `map_Kd`'s `-s` (scale) and `-o` (offset) of `u` and `v`.
+type UvTransform = ([f64; 2], [f64; 2]);
+
 struct Obj<'a> {
     path: &'a Path,
     opts: &'a LoadOptions,
@@ -75,7 +81,13 @@ struct Obj<'a> {
     /// Line of the last `usemtl`.
     material_line: u64,
     material: Option<u32>,
-    texcoords: u64,
+    /// Texture images read so far, by resolved path (each is read once).
+    images: HashMap<PathBuf, Arc<Texture>>,
+    /// Scene materials whose `map_Kd` has been looked at, with its coordinate transform
+    /// when it moves coordinates (`-s`, `-o`).
+    textured: HashMap<u32, Option<UvTransform>>,
+    /// Transformed copies of texture coordinates: (index, material) → index.
+    moved: HashMap<(u32, u32), u32>,
 }
 
 /// Parses an OBJ file (and the MTL libraries it names).
@@ -92,7 +104,9 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         material_name: None,
         material_line: 0,
         material: None,
-        texcoords: 0,
+        images: HashMap::new(),
+        textured: HashMap::new(),
+        moved: HashMap::new(),
     };
     let mut lines = Lines::new(bytes, path, true);
     while let Some(next) = lines.next_line() {
@@ -133,7 +147,21 @@ impl Obj<'_> {
                 check_u32(self.scene.normals.len(), "normals", self.path)?;
                 self.scene.normals.push(p);
             }
-            b"vt" => self.texcoords += 1,
+            b"vt" => {
+                let u = number(self.path, n, toks.next(), "texture u")?;
+                let v = match toks.next() {
+                    Some(t) => number(self.path, n, Some(t), "texture v")?,
+                    None => 0.0,
+                };
+                if !u.is_finite() || !v.is_finite() {
+                    return Err(LoadError::NonFinite {
+                        at: Location::line(self.path, n),
+                        what: "texture coordinate".into(),
+                    });
+                }
+                check_u32(self.scene.texcoords.len(), "texture coordinates", self.path)?;
+                self.scene.texcoords.push([u, 1.0 - v]);
+            }
             b"f" | b"fo" => self.face(n, toks)?,
             b"o" | b"g" => {
                 let name = lossy(rest_after_keyword(line));
@@ -196,6 +224,8 @@ impl Obj<'_> {
         let mut vertices = Vec::with_capacity(4);
         let mut normals = Vec::with_capacity(4);
         let mut all_normals = true;
+        let mut texcoords = Vec::with_capacity(4);
+        let mut all_texcoords = true;
         for t in toks {
             let mut parts = t.split(|&b| b == b'/');
             let v = parts.next().unwrap_or_default();
@@ -210,8 +240,12 @@ impl Obj<'_> {
             }
             let count = self.scene.vertices.len() as u64;
             vertices.push(self.index(n, v, count, "vertex")?);
-            if let Some(vt) = vt.filter(|s| !s.is_empty()) {
-                self.index(n, vt, self.texcoords, "texture coordinate")?;
+            match vt.filter(|s| !s.is_empty()) {
+                Some(vt) => {
+                    let count = self.scene.texcoords.len() as u64;
+                    texcoords.push(self.index(n, vt, count, "texture coordinate")?);
+                }
+                None => all_texcoords = false,
             }
             match vn.filter(|s| !s.is_empty()) {
                 Some(vn) => {
@@ -229,14 +263,89 @@ impl Obj<'_> {
         }
         let object = self.current_object()?;
         let material = self.current_material()?;
+        let texcoords = if all_texcoords {
+            self.face_texcoords(material, texcoords)?
+        } else {
+            None
+        };
         check_u32(self.scene.faces.len(), "faces", self.path)?;
         self.scene.faces.push(Face {
             vertices,
             normals: all_normals.then_some(normals),
+            texcoords,
             material,
             object,
         });
         Ok(())
+    }
+
+    /// The texture coordinates a face keeps: `None` unless its material has a
+    /// `map_Kd` (read now, when first needed), moved by the map's `-s` and `-o`.
+    fn face_texcoords(
+        &mut self,
+        material: u32,
+        texcoords: Vec<u32>,
+    ) -> Result<Option<Vec<u32>>, LoadError> {
+        let transform = match self.textured.get(&material) {
+            Some(&t) => t,
+            None => {
+                let t = self.read_map(material)?;
+                self.textured.insert(material, t);
+                t
+            }
+        };
+        if self.scene.materials[material as usize].texture.is_none() {
+            return Ok(None);
+        }
+        let Some((scale, offset)) = transform else {
+            return Ok(Some(texcoords));
+        };
+        let mut out = Vec::with_capacity(texcoords.len());
+        for t in texcoords {
+            let i = match self.moved.get(&(t, material)) {
+                Some(&i) => i,
+                None => {
+                    let [s, tt] = self.scene.texcoords[t as usize];
+                    let (u, v) = (s, 1.0 - tt);
+                    let (u, v) = (scale[0] * u + offset[0], scale[1] * v + offset[1]);
+                    check_u32(self.scene.texcoords.len(), "texture coordinates", self.path)?;
+                    self.scene.texcoords.push([u, 1.0 - v]);
+                    let i = (self.scene.texcoords.len() - 1) as u32;
+                    self.moved.insert((t, material), i);
+                    i
+                }
+            };
+            out.push(i);
+        }
+        Ok(Some(out))
+    }
+
+    /// Reads the `map_Kd` image of scene material `material` (named by the current
+    /// `usemtl`) into it, if it has one; returns the map's coordinate transform when it
+    /// is not the identity.
+    fn read_map(&mut self, material: u32) -> Result<Option<UvTransform>, LoadError> {
+        let name = self.material_name.clone().unwrap_or_default();
+        let Some(map) = self.library.maps.get(&name).cloned() else {
+            return Ok(None);
+        };
+        let file = refs::resolve(&map.file, &map.at, self.opts)?;
+        let texture = match self.images.get(&file) {
+            Some(t) => t.clone(),
+            None => {
+                let bytes = std::fs::read(&file).map_err(|e| LoadError::Image {
+                    at: map.at.clone(),
+                    image: map.file.clone(),
+                    message: format!("cannot read {}: {e}", file.display()),
+                })?;
+                let t = crate::image::decode(&bytes, &map.file, &map.at)?;
+                self.scene.files.push(file.clone());
+                self.images.insert(file, t.clone());
+                t
+            }
+        };
+        self.scene.materials[material as usize].texture = Some(texture);
+        let moves = map.scale != [1.0, 1.0] || map.offset != [0.0, 0.0];
+        Ok(moves.then_some((map.scale, map.offset)))
     }
 
     /// The vertex indices of an `l` or `p` element (`v` or `v/vt` each).
@@ -260,7 +369,8 @@ impl Obj<'_> {
             let count = self.scene.vertices.len() as u64;
             let i = self.index(n, v, count, "vertex")?;
             if let Some(vt) = vt.filter(|s| !s.is_empty()) {
-                self.index(n, vt, self.texcoords, "texture coordinate")?;
+                let count = self.scene.texcoords.len() as u64;
+                self.index(n, vt, count, "texture coordinate")?;
             }
             points.push(self.scene.vertices[i as usize]);
         }

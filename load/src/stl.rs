@@ -137,6 +137,7 @@ impl<'a, K: std::hash::Hash + Eq + Copy> Builder<'a, K> {
         self.scene.faces.push(Face {
             vertices,
             normals: None,
+            texcoords: None,
             material: self.material,
             object,
         });

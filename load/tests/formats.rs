@@ -89,7 +89,7 @@ fn obj_tr_line_continuation_and_ignored_statements() {
     write(
         d.path(),
         "m.mtl",
-        "newmtl a\nKd 0 1 0\nTr 0.75\nmap_Kd tex.png\n",
+        "newmtl a\nKd 0 1 0\nTr 0.75\nmap_Ks tex.png\n",
     );
     let src = "mtllib m.mtl\ns 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nusemtl a\nf 1 2 \\\n 3\n";
     let p = write(d.path(), "t.obj", src);
@@ -98,7 +98,7 @@ fn obj_tr_line_continuation_and_ignored_statements() {
     let m = &s.materials[s.faces[0].material as usize];
     assert_eq!((m.kd, m.opacity), ([0.0, 1.0, 0.0], 0.25));
     assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
-    assert!(s.warnings[0].contains("m.mtl:4: texture maps (map_Kd"));
+    assert!(s.warnings[0].contains("m.mtl:4: texture maps (map_Ks"));
     // The `l` before any `usemtl` is a black polyline of width 1.
     assert_eq!(s.lines.len(), 1);
     assert_eq!(s.lines[0].points, vec![DVec3::ZERO, DVec3::X]);

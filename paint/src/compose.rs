@@ -2,8 +2,10 @@
 //! (only the effects the scene asks for), opacity, object names, outlines, whole-face
 //! covers and seam flaps.
 
+use std::collections::HashMap;
+
 use glam::DVec3;
-use limn_scene::{shade_face, Scene, Shading};
+use limn_scene::{shade_face, FaceTexcoords, Scene, Shading};
 
 use limn_depthsort::Ordered;
 
@@ -11,6 +13,7 @@ use crate::covers::covers;
 use crate::phong::DEFAULT_TOLERANCE;
 use crate::seams::seam_flaps;
 use crate::smooth::{FaceLight, View};
+use crate::texturing::{FaceTexture, Projector, TextureTable};
 use crate::{Outline, PaintFragment, Picture};
 
 /// How to turn an order into a picture.
@@ -56,12 +59,24 @@ impl Default for Style {
 /// Builds the picture of `ordered` (which must come from `scene`). Each face is shaded
 /// once (flat, at its centroid, from the eye actually used); `illum 0` materials keep
 /// exactly their `Kd`.
+///
+/// Textured faces (texture coordinates and a textured material) are shaded flat and
+/// their fragments carry a [`crate::TextureMap`]: the texture's colour multiplies the
+/// lit colour (as OpenGL's modulate: for `illum 0` exactly `Kd` times the texture).
 pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     let cam = &ordered.camera;
     let mut cache: Vec<Option<[f64; 4]>> = vec![None; scene.faces.len()];
     let cover = covers(scene, ordered);
     let mut fragments = Vec::with_capacity(ordered.fragments.len());
     let mut view: Option<View<'_>> = None;
+    // Textures cost nothing unless some material has one.
+    let any_texture = scene.materials.iter().any(|m| m.texture.is_some());
+    let mut textures = TextureTable::default();
+    let mut face_textures: HashMap<u32, Option<FaceTexture>> = HashMap::new();
+    let projector = any_texture.then(|| Projector {
+        camera: cam,
+        vp: cam.view_projection(ordered.near, ordered.far),
+    });
     for (f, cover) in ordered.fragments.iter().zip(&cover) {
         let face = &scene.faces[f.face as usize];
         let fill = *cache[f.face as usize].get_or_insert_with(|| {
@@ -77,6 +92,34 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
             _ => (f.points.clone(), f.original_edges.clone()),
         };
         let m = &scene.materials[face.material as usize];
+        if let Some(projector) = &projector {
+            let tex = face_textures.entry(f.face).or_insert_with(|| {
+                let ft = FaceTexcoords::new(scene, f.face)?;
+                let index = textures.index_of(ft.texture());
+                Some(FaceTexture::new(&ft, index, projector))
+            });
+            if let Some(tex) = tex {
+                let world: Vec<DVec3> = if use_cover {
+                    face.vertices
+                        .iter()
+                        .map(|&v| scene.vertices[v as usize])
+                        .collect()
+                } else {
+                    f.world.clone()
+                };
+                let frag = PaintFragment {
+                    points,
+                    fill,
+                    vertex_colors: None,
+                    face: f.face,
+                    object: face.object,
+                    original_edges,
+                    texture: None,
+                };
+                tex.apply(frag, &world, projector, &mut fragments);
+                continue;
+            }
+        }
         let shading = if style.smooth {
             Shading::of_face(scene.shading, face, m)
         } else {
@@ -89,6 +132,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
             face: f.face,
             object: face.object,
             original_edges,
+            texture: None,
         };
         if shading == Shading::Flat {
             fragments.push(frag);
@@ -129,5 +173,6 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         outline: style.outline,
         seams: 0.0,
         marks: Vec::new(),
+        textures: textures.list,
     }
 }

@@ -198,6 +198,9 @@ impl Writer {
 
 impl Painter for EpsPainter {
     fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
+        // Textures are drawn as their mean colour here (counted in the stats).
+        let (picture, flattened) = picture.untextured();
+        let picture: &Picture = &picture;
         let checked = check(picture)?;
         let o = &self.options;
         let paper = o.paper.map(|v| {
@@ -328,6 +331,7 @@ impl Painter for EpsPainter {
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;
         stats.bytes = sink.finish()?;
+        stats.textures_flattened = flattened;
         Ok(stats)
     }
 }

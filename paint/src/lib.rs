@@ -88,6 +88,7 @@ mod model;
 mod number;
 mod painter;
 mod pdf;
+mod pdf_texture;
 pub mod phong;
 mod png;
 mod runs;
@@ -95,6 +96,10 @@ mod seams;
 mod smooth;
 mod svg;
 mod svg_smooth;
+mod svg_texture;
+mod texture_images;
+mod texture_pieces;
+mod texturing;
 mod tikz;
 
 pub use annotate::{head_length, marker_stroke, picture_with_marks};
@@ -106,11 +111,12 @@ pub use format::Format;
 pub use hidden_line::{hidden_line_picture, hidden_line_scene, HiddenLineStyle};
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
-    Outline, PaintFragment, Picture,
+    Outline, PaintFragment, Picture, Texture, TextureMap,
 };
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};
 pub use png::{PngOptions, PngPainter};
 pub use seams::{seam_flaps, seam_flaps_indexed};
 pub use svg::{SvgOptions, SvgPainter};
+pub use texture_pieces::{affine_pieces, AffinePiece, MAX_PERSPECTIVE_ERROR};
 pub use tikz::{TikzOptions, TikzPainter, MAX_TIKZ_SIDE, MAX_TIKZ_STROKE};

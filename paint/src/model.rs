@@ -1,6 +1,8 @@
 //! The picture model: what every painter paints.
 
-pub use limn_scene::{LabelAnchor, MarkerShape};
+use std::sync::Arc;
+
+pub use limn_scene::{LabelAnchor, MarkerShape, Texture};
 
 /// One convex (or at least simple) polygon to paint, in pixel coordinates (x right, y down).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -18,6 +20,44 @@ pub struct PaintFragment {
     /// Per edge i (points[i] -> points[i+1 mod n]): is it an original model edge (outlined
     /// when outlines are on)?
     pub original_edges: Vec<bool>,
+    /// A texture drawn over the fragment: each point's colour is [`PaintFragment::fill`]
+    /// (RGB) times the texture's colour there; opacity stays `fill[3]`. Textured
+    /// fragments have no vertex colours.
+    pub texture: Option<TextureMap>,
+}
+
+/// How a textured fragment maps the page onto its texture: a projective map from pixel
+/// coordinates to texture coordinates `(s, t)` (see [`limn_scene::texture`] for how
+/// textures are sampled). Every part of the fragment (clipped, covered, flaps) uses the
+/// same map, so it needs no per-corner data.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TextureMap {
+    /// Index into [`Picture::textures`].
+    pub texture: u32,
+    /// Rows of the 3 × 3 matrix `H`: `(s·q, t·q, q) = H · (x, y, 1)`.
+    pub screen_to_st: [[f64; 3]; 3],
+}
+
+impl TextureMap {
+    /// The texture coordinates at pixel point `p`; `None` where the map is undefined
+    /// (on the horizon of the fragment's plane).
+    pub fn st_at(&self, p: [f64; 2]) -> Option<[f64; 2]> {
+        let h = &self.screen_to_st;
+        let row = |r: usize| h[r][0] * p[0] + h[r][1] * p[1] + h[r][2];
+        let q = row(2);
+        let st = [row(0) / q, row(1) / q];
+        (st[0].is_finite() && st[1].is_finite()).then_some(st)
+    }
+
+    /// The same map for a page scaled by `k` (pixel `(x, y)` becomes `(k·x, k·y)`).
+    pub fn scaled(&self, k: f64) -> TextureMap {
+        let mut m = *self;
+        for row in &mut m.screen_to_st {
+            row[0] /= k;
+            row[1] /= k;
+        }
+        m
+    }
 }
 
 impl PaintFragment {
@@ -31,6 +71,7 @@ impl PaintFragment {
             face: 0,
             object: 0,
             original_edges,
+            texture: None,
         }
     }
 }
@@ -73,6 +114,9 @@ pub struct Picture {
     /// Line pieces, markers, labels and arrow heads, sorted by [`Mark::before`] (their
     /// position among the fragments; see the paint-order rules above).
     pub marks: Vec<Mark>,
+    /// The textures of textured fragments ([`TextureMap::texture`] indexes this), each
+    /// once: writers embed each image once however many fragments use it.
+    pub textures: Vec<Arc<Texture>>,
 }
 
 impl Picture {
@@ -83,6 +127,44 @@ impl Picture {
             height,
             ..Picture::default()
         }
+    }
+
+    /// Whether some fragment is textured.
+    pub fn has_textures(&self) -> bool {
+        self.fragments.iter().any(|f| f.texture.is_some())
+    }
+
+    /// The picture itself when it has no textured fragment, else
+    /// [`Picture::textures_flattened`]; with the number of fragments flattened.
+    pub fn untextured(&self) -> (std::borrow::Cow<'_, Picture>, usize) {
+        let n = self
+            .fragments
+            .iter()
+            .filter(|f| f.texture.is_some())
+            .count();
+        if n == 0 {
+            (std::borrow::Cow::Borrowed(self), 0)
+        } else {
+            (std::borrow::Cow::Owned(self.textures_flattened()), n)
+        }
+    }
+
+    /// The picture with every textured fragment filled flat with its fill times its
+    /// texture's mean colour, and no textures: what the writers that draw no images
+    /// paint (they report it as approximated).
+    pub fn textures_flattened(&self) -> Picture {
+        let means: Vec<[f64; 3]> = self.textures.iter().map(|t| t.mean()).collect();
+        let mut out = self.clone();
+        out.textures.clear();
+        for f in &mut out.fragments {
+            if let Some(t) = f.texture.take() {
+                let m = means.get(t.texture as usize).copied().unwrap_or([1.0; 3]);
+                for (c, m) in f.fill.iter_mut().zip(m) {
+                    *c *= m;
+                }
+            }
+        }
+        out
     }
 }
 

@@ -23,6 +23,9 @@ pub struct PaintStats {
     /// Fragments (and outline paths) the format could only approximate: translucency in
     /// EPS, Gouraud shading in TikZ.
     pub approximated: usize,
+    /// Textured fragments filled with their fill times the texture's mean colour, by
+    /// formats that draw no images here (EPS, TikZ).
+    pub textures_flattened: usize,
     /// Line pieces stroked (marks of kind [`crate::MarkKind::Line`]).
     pub lines: usize,
     /// Markers drawn.

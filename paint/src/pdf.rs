@@ -14,6 +14,17 @@
 //!   triangle-mesh shading (`/Sh0 sh`, `/Sh1 sh`, …) holding every fragment
 //!   fan-triangulated from its first corner; coordinates are 32-bit over the run's bounding
 //!   box rounded outwards to whole points, colours 16-bit per channel.
+//! - Textured fragments: each texture is one image XObject `/ImK` (RGB, 8 bits,
+//!   Flate-compressed, `/Interpolate true`). A fragment is drawn inside `q … Q` as
+//!   affine triangles within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
+//!   projective map, each clipped to its triangle with the image placed by `cm` (once
+//!   per repetition of the texture the triangle reaches; a triangle reaching more than
+//!   1024 is filled with the mean colour and counted as approximated). Under them the
+//!   whole run (fragments and seam flaps as one clip) is drawn first under one affine
+//!   map, so the anti-aliased edges between triangles show nearly the same texels. A fill other than white is then
+//!   painted over the fragment with the blend mode `Multiply` (`/Mul gs`): fill times
+//!   texture, exact for opaque fragments; a translucent one blends twice and is counted
+//!   as approximated.
 //! - Outlines: `w`, round caps and joins and the stroke colour are set once; each run's
 //!   original edges are one path stroked with `S` right after the run's fill.
 //! - Marks: each inside `q … Q`, so they leave the fragments' state alone. Line pieces are
@@ -31,7 +42,8 @@ use pdf_writer::{Name, Pdf, Rect, Ref};
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{Label, PaintError, PaintStats, Painter, Picture};
+use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
+use super::{pdf_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PdfPainter`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -70,6 +82,8 @@ impl PdfPainter {
 enum Style {
     Flat([u32; 3], u16),
     Gouraud(u16),
+    /// Texture index, fill and opacity.
+    Textured(u32, [u32; 3], u16),
 }
 
 /// A type-4 shading waiting to be written.
@@ -97,6 +111,10 @@ struct Content {
     outline_stroke: Option<([u32; 3], u64)>,
     /// Whether a label uses the font `/F1`.
     font: bool,
+    /// The textures (padded RGB rows, width, height) as image XObjects `/Im0`, …
+    images: Vec<(Vec<u8>, u32, u32)>,
+    /// Whether `/Mul` (blend mode Multiply) is used.
+    multiply: bool,
 }
 
 impl Content {
@@ -147,6 +165,97 @@ impl Content {
         } else {
             self.buf.extend_from_slice(b"f\n");
         }
+    }
+
+    /// A run of textured fragments with texture `k` and fill `rgb` (see the module
+    /// docs), inside `q … Q`; returns how many fragments are approximated.
+    fn textured_run(&mut self, run: &[Frag<'_>], k: u32, rgb: [u32; 3], mean: [f64; 3]) -> usize {
+        let fill = run[0].src.fill;
+        let size = (self.images[k as usize].1, self.images[k as usize].2);
+        let flat = self.quantise([0, 1, 2].map(|i| fill[i] * mean[i]));
+        let polys: Vec<Vec<[f64; 2]>> = run
+            .iter()
+            .zip(reversals(run))
+            .map(|(f, reverse)| f.oriented(reverse).collect())
+            .collect();
+        // Fills `polys` with the mean colour (too many repetitions of the texture).
+        let mean_fill = |c: &mut Content, polys: &[Vec<[f64; 2]>]| {
+            c.color(flat, b"rg\n");
+            for poly in polys {
+                for (i, &q) in poly.iter().enumerate() {
+                    c.point(q);
+                    c.buf
+                        .extend_from_slice(if i == 0 { b" m " } else { b" l " });
+                }
+                c.buf.extend_from_slice(b"h ");
+            }
+            c.buf.extend_from_slice(b"f\n");
+        };
+        let mut approximated = 0;
+        self.buf.extend_from_slice(b"q\n");
+        // Under the pieces, the whole run (fragments and seam flaps: one clip) under one
+        // affine map, the first fan triangle's: the anti-aliased edges between pieces
+        // then show nearly the same texels.
+        let source = run.iter().find_map(|f| f.src.texture);
+        let whole = source.as_ref().and_then(|map| {
+            affine_pieces(&run[0].points, map, f64::INFINITY)
+                .first()
+                .copied()
+        });
+        if let Some(whole) = whole {
+            if !pdf_texture::write_clipped(
+                &mut self.buf,
+                &polys,
+                &whole,
+                k,
+                size,
+                self.height,
+                self.d,
+            ) {
+                mean_fill(self, &polys);
+            }
+        }
+        for f in run {
+            let Some(map) = &f.src.texture else { continue };
+            let mut flat = false;
+            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
+                let tri = [p.points.to_vec()];
+                if !pdf_texture::write_clipped(
+                    &mut self.buf,
+                    &tri,
+                    &p,
+                    k,
+                    size,
+                    self.height,
+                    self.d,
+                ) {
+                    flat = true;
+                    mean_fill(self, &tri);
+                }
+            }
+            approximated += usize::from(flat);
+        }
+        let white = self.quantise([1.0; 3]);
+        if rgb != white {
+            self.buf.extend_from_slice(b"/Mul gs ");
+            self.multiply = true;
+            self.color(rgb, b"rg\n");
+            for poly in &polys {
+                for (i, &q) in poly.iter().enumerate() {
+                    self.point(q);
+                    self.buf
+                        .extend_from_slice(if i == 0 { b" m " } else { b" l " });
+                }
+                self.buf.extend_from_slice(b"h ");
+            }
+            self.buf.extend_from_slice(b"f\n");
+            if self.alpha < 1000 {
+                approximated += run.len();
+            }
+        }
+        self.buf.extend_from_slice(b"Q\n");
+        // Q restored the colour set before the run.
+        approximated
     }
 
     /// Sets the stroke colour and line width, writing only what changes.
@@ -259,7 +368,14 @@ impl Painter for PdfPainter {
             stroke: None,
             outline_stroke: None,
             font: false,
+            images: picture
+                .textures
+                .iter()
+                .map(|t| texture_images::rgb_rows(t))
+                .collect(),
+            multiply: false,
         };
+        let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
         let stats = PaintStats::default();
         if c.seams > 0.0 && checked.outline.is_none() {
             c.buf.extend_from_slice(b"1 j\n");
@@ -295,6 +411,9 @@ impl Painter for PdfPainter {
         let cd = self.options.color_decimals;
         let key = |f: &Frag<'_>| {
             let a = alpha_milli(f.alpha());
+            if let Some(t) = &f.src.texture {
+                return Style::Textured(t.texture, f.flat_rgb().map(|v| channel_fixed(v, cd)), a);
+            }
             match f.colors {
                 Some(_) => Style::Gouraud(a),
                 None => Style::Flat(f.flat_rgb().map(|v| channel_fixed(v, cd)), a),
@@ -312,6 +431,11 @@ impl Painter for PdfPainter {
                 Style::Gouraud(a) => {
                     c.fill_alpha(a);
                     c.gouraud_run(run);
+                }
+                Style::Textured(k, rgb, a) => {
+                    c.fill_alpha(a);
+                    let approximated = c.textured_run(run, k, rgb, means[k as usize]);
+                    stats.borrow_mut().approximated += approximated;
                 }
             }
             let mut stats = stats.borrow_mut();
@@ -373,6 +497,10 @@ impl Content {
             .map(|i| (format!("Sh{i}").into_bytes(), alloc()))
             .collect();
         let font = self.font.then(&mut alloc);
+        let images: Vec<(Vec<u8>, Ref)> = (0..self.images.len())
+            .map(|i| (format!("Im{i}").into_bytes(), alloc()))
+            .collect();
+        let multiply = self.multiply.then(&mut alloc);
 
         pdf.catalog(catalog).pages(pages);
         pdf.pages(pages).kids([page]).count(1);
@@ -382,9 +510,18 @@ impl Content {
             p.parent(pages);
             p.contents(content);
             let mut res = p.resources();
-            if !states.is_empty() {
+            if !states.is_empty() || multiply.is_some() {
                 let mut dict = res.ext_g_states();
                 for (name, r, _, _) in &states {
+                    dict.pair(Name(name), *r);
+                }
+                if let Some(r) = multiply {
+                    dict.pair(Name(b"Mul"), r);
+                }
+            }
+            if !images.is_empty() {
+                let mut dict = res.x_objects();
+                for (name, r) in &images {
                     dict.pair(Name(name), *r);
                 }
             }
@@ -405,8 +542,27 @@ impl Content {
         }
         pdf.stream(content, &self.buf);
         // The copy is in the document now; give the memory back before the rest is written.
-        let Content { buf, meshes, .. } = self;
+        let Content {
+            buf,
+            meshes,
+            images: pixels,
+            ..
+        } = self;
         drop(buf);
+        for ((_, r), (rgb, iw, ih)) in images.iter().zip(&pixels) {
+            let data = miniz_oxide::deflate::compress_to_vec_zlib(rgb, 6);
+            let mut x = pdf.image_xobject(*r, &data);
+            x.filter(pdf_writer::Filter::FlateDecode);
+            x.width(*iw as i32);
+            x.height(*ih as i32);
+            x.color_space().device_rgb();
+            x.bits_per_component(8);
+            x.interpolate(true);
+        }
+        if let Some(r) = multiply {
+            pdf.ext_graphics(r)
+                .blend_mode(pdf_writer::types::BlendMode::Multiply);
+        }
         for (_, r, stroke, m) in &states {
             let a = f32::from(*m) / 1000.0;
             let mut gs = pdf.ext_graphics(*r);

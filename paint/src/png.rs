@@ -16,6 +16,11 @@
 //! interpolated linearly at its centre in the fan triangle that contains the centre; pixels
 //! on the rim, whose centre lies in no triangle, take the colour of the nearest triangle's
 //! barycentric coordinates clamped to it. Opacity is applied on top, source-over.
+//!
+//! **Textured** fragments are filled the same way (coverage from the run's mask), each
+//! pixel's colour being the fill times the texture sampled at the texture coordinates of
+//! the pixel's centre under the fragment's projective map (perspective-correct, bilinear,
+//! repeating). With supersampling, each sample is textured and the samples averaged.
 
 use std::cell::RefCell;
 use std::io::Write;
@@ -87,6 +92,9 @@ impl PngPainter {
             for p in &mut f.points {
                 p[0] *= scale;
                 p[1] *= scale;
+            }
+            if let Some(t) = &mut f.texture {
+                *t = t.scaled(scale);
             }
         }
         if let Some(o) = &mut big.outline {
@@ -176,6 +184,9 @@ impl PngPainter {
                         );
                     }
                     Style::Gouraud(a) => gouraud(&mut pixmap, run, &path, a, aa),
+                    Style::Textured(_, a) => {
+                        textured(&mut pixmap, run, &path, a, aa, &picture.textures)
+                    }
                 }
                 builder = Some(path.clear());
             }
@@ -271,10 +282,15 @@ impl Painter for PngPainter {
 enum Style {
     Flat([u8; 3], u8),
     Gouraud(u8),
+    /// Texture index and opacity.
+    Textured(u32, u8),
 }
 
 fn style_key(f: &Frag<'_>) -> Style {
     let a = channel_u8(f.alpha());
+    if let Some(t) = &f.src.texture {
+        return Style::Textured(t.texture, a);
+    }
     match f.colors {
         Some(_) => Style::Gouraud(a),
         None => Style::Flat(rgb_u8(f.flat_rgb()), a),
@@ -389,6 +405,97 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
             }
             let a = alpha * f64::from(m) / 255.0;
             let at = j as usize * stride + (x0 as usize + i) * 4;
+            let px = &mut data[at..at + 4];
+            let out_a = a * 255.0 + f64::from(px[3]) * (1.0 - a);
+            let out_a8 = out_a.round().clamp(0.0, 255.0) as u8;
+            for k in 0..3 {
+                let v = c[k] * a * 255.0 + f64::from(px[k]) * (1.0 - a);
+                px[k] = (v.round().clamp(0.0, 255.0) as u8).min(out_a8);
+            }
+            px[3] = out_a8;
+        }
+    }
+}
+
+/// Fills `path` (the run's union) with each fragment's fill times its texture, sampled
+/// per pixel centre through the fragment's map; a pixel whose centre lies in no fragment
+/// (the anti-aliased rim) takes the fragment whose fan triangle is nearest.
+fn textured(
+    pixmap: &mut Pixmap,
+    run: &[Frag<'_>],
+    path: &Path,
+    alpha: u8,
+    aa: bool,
+    textures: &[std::sync::Arc<limn_scene::Texture>],
+) {
+    let (w, h) = (pixmap.width(), pixmap.height());
+    let r = path.bounds();
+    let x0 = (r.left().floor().max(0.0) as u32).min(w);
+    let y0 = (r.top().floor().max(0.0) as u32).min(h);
+    let x1 = (r.right().ceil().max(0.0) as u32).min(w);
+    let y1 = (r.bottom().ceil().max(0.0) as u32).min(h);
+    if x0 >= x1 || y0 >= y1 {
+        return;
+    }
+    let (bw, bh) = ((x1 - x0) as usize, (y1 - y0) as usize);
+    let Some(mut mask) = Mask::new(bw as u32, bh as u32) else {
+        return;
+    };
+    let shift = Transform::from_translate(-(x0 as f32), -(y0 as f32));
+    mask.fill_path(path, FillRule::Winding, aa, shift);
+    // Fan triangles of every fragment, each with its fragment's index.
+    let mut tris: Vec<([[f64; 2]; 3], f64, usize)> = Vec::new();
+    for (k, f) in run.iter().enumerate() {
+        for i in 1..f.points.len() - 1 {
+            let p = [f.points[0], f.points[i], f.points[i + 1]];
+            let det = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1])
+                - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+            if det != 0.0 && det.is_finite() {
+                tris.push((p, 1.0 / det, k));
+            }
+        }
+    }
+    let alpha = f64::from(alpha) / 255.0;
+    let stride = w as usize * 4;
+    let coverage = mask.data();
+    let data = pixmap.data_mut();
+    for j in y0..y1 {
+        let py = f64::from(j) + 0.5;
+        for i in x0..x1 {
+            let m = coverage[(j - y0) as usize * bw + (i - x0) as usize];
+            if m == 0 {
+                continue;
+            }
+            let px = f64::from(i) + 0.5;
+            // The fragment whose fan triangle holds the centre (or comes nearest).
+            let mut best = (f64::NEG_INFINITY, 0usize);
+            for (t, inv_det, k) in &tris {
+                let [a, b, c] = *t;
+                let l1 = ((px - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (py - a[1])) * inv_det;
+                let l2 = ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) * inv_det;
+                let score = (1.0 - l1 - l2).min(l1).min(l2);
+                if score > best.0 {
+                    best = (score, *k);
+                }
+                if score >= 0.0 {
+                    break;
+                }
+            }
+            let f = &run[best.1];
+            let fill = f.src.fill;
+            let c = match &f.src.texture {
+                Some(map) => {
+                    let tex = &textures[map.texture as usize];
+                    let t = match map.st_at([px, py]) {
+                        Some(st) => tex.sample(st),
+                        None => tex.mean(),
+                    };
+                    [0, 1, 2].map(|k| (fill[k] * t[k]).clamp(0.0, 1.0))
+                }
+                None => [0, 1, 2].map(|k| fill[k].clamp(0.0, 1.0)),
+            };
+            let a = alpha * f64::from(m) / 255.0;
+            let at = j as usize * stride + i as usize * 4;
             let px = &mut data[at..at + 4];
             let out_a = a * 255.0 + f64::from(px[3]) * (1.0 - a);
             let out_a8 = out_a.round().clamp(0.0, 255.0) as u8;

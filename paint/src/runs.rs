@@ -144,6 +144,22 @@ pub(crate) fn check(picture: &Picture) -> Result<Checked, PaintError> {
             outline = Some(o);
         }
     }
+    for f in &picture.fragments {
+        if let Some(t) = &f.texture {
+            if t.texture as usize >= picture.textures.len() {
+                return Err(PaintError::Style {
+                    what: "texture",
+                    reason: "a fragment names a texture the picture does not have",
+                });
+            }
+            if !t.screen_to_st.iter().flatten().all(|v| v.is_finite()) {
+                return Err(PaintError::Style {
+                    what: "texture",
+                    reason: "texture maps must be finite",
+                });
+            }
+        }
+    }
     let w = f64::from(picture.width);
     let h = f64::from(picture.height);
     let margin = w.max(h) + 2.0 * outline.map_or(0.0, |o| o.width);

@@ -84,6 +84,8 @@ pub fn seam_flaps_indexed(
                     _ => f.fill,
                 };
                 let mut p = PaintFragment::new(flap, fill);
+                // A textured flap goes on with the fragment's texture, under the same map.
+                p.texture = f.texture;
                 p.face = f.face;
                 p.object = f.object;
                 p.original_edges = vec![false; p.points.len()];

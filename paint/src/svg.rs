@@ -27,6 +27,25 @@
 //! colour, not what lies behind (when it is drawn as two pieces or more). Each gradient is a `<linearGradient id="sN"
 //! gradientUnits="userSpaceOnUse">` written just before the path that uses it.
 //!
+//! **Textures**: each texture is embedded once in `<defs>`, as a PNG `data:` URI in an
+//! `<image id="texK">` filling the unit square of texture space (with a wrapped border
+//! of one texel outside it, see `texture_images.rs`; `image-rendering:smooth` asks for
+//! bilinear interpolation, as limn samples), with a `<clipPath id="unitK">`: that square
+//! grown by half a texel. A textured fragment is drawn as triangles within
+//! [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact projective map (see
+//! `texture_pieces.rs`), each a `<clipPath id="tcN">` of its own and a
+//! `<g clip-path="url(#tcN)">` holding one `<use href="#texK" transform="matrix(…)"
+//! clip-path="url(#unitK)"/>` per repetition of the texture the triangle reaches (the
+//! matrix is the affine map from texture to page, shifted to the repetition; a triangle
+//! reaching more than 1024 repetitions is filled with the mean colour instead and
+//! counted as approximated). A fragment's triangles go in one `<g>`: with
+//! `opacity` when translucent, and when the fill is not white with
+//! `filter="url(#mN)"`, a `<feColorMatrix>` scaling each channel by the fill's (one
+//! filter per fill colour, written before its first use): fill times texture at every
+//! pixel. A fragment drawn as two triangles or more is first drawn whole under one
+//! affine map (its first fan triangle's), so the hairlines between its triangles show
+//! nearly the same texels.
+//!
 //! The `svg` crate could build the same document, but it stores numbers as `f32` and
 //! allocates per attribute; the benchmark `paint` compares both (see BENCHMARKS.md).
 
@@ -38,7 +57,7 @@ use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{svg_smooth, Label, PaintError, PaintStats, Painter, Picture};
+use super::{svg_smooth, svg_texture, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`SvgPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,12 +95,13 @@ impl SvgPainter {
 }
 
 /// What makes two fragments' fills identical in SVG (smooth fragments: the mean
-/// colour of the cover painted under their pieces).
-fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool) {
+/// colour of the cover painted under their pieces; textured ones: the texture too).
+fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool, Option<u32>) {
     (
         rgb_u8(f.flat_rgb()),
         alpha_milli(f.alpha()),
         f.colors.is_some(),
+        f.src.texture.map(|t| t.texture),
     )
 }
 
@@ -133,6 +153,7 @@ impl Painter for SvgPainter {
             b.extend_from_slice(b"/>\n");
         }
 
+        svg_texture::write_defs(b, &picture.textures)?;
         let group: Cell<Option<u32>> = Cell::new(None);
         let tolerance = if self.options.tolerance > 0.0 {
             self.options.tolerance
@@ -140,6 +161,8 @@ impl Painter for SvgPainter {
             crate::phong::DEFAULT_TOLERANCE
         };
         let gradients = Cell::new(0u64);
+        let textured = RefCell::new(svg_texture::SvgTextures::default());
+        let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
         let sink = RefCell::new(sink);
         let stats = RefCell::new(stats);
         let enter = |b: &mut Vec<u8>, object: u32| {
@@ -151,11 +174,17 @@ impl Painter for SvgPainter {
                 group.set(Some(object));
             }
         };
-        let on_run = |run: &[Frag<'_>], &(rgb, alpha, smooth): &([u8; 3], u16, bool)| {
+        let on_run = |run: &[Frag<'_>], key: &([u8; 3], u16, bool, Option<u32>)| {
+            let (rgb, alpha, smooth, texture) = *key;
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
             let b = &mut sink.buf;
             enter(b, run[0].src.object);
+            if let Some(k) = texture {
+                stats.paths += textured
+                    .borrow_mut()
+                    .run(b, run, k, alpha, means[k as usize], d);
+            }
             // Smooth runs: their pieces, and whether a cover must hide the hairlines
             // between them (only when there are two or more).
             let pieces: Vec<Vec<svg_smooth::Piece>> = if smooth {
@@ -170,7 +199,7 @@ impl Painter for SvgPainter {
                 Vec::new()
             };
             let cover = pieces.iter().map(Vec::len).sum::<usize>() > 1;
-            if !smooth || (alpha >= 1000 && cover) {
+            if texture.is_none() && (!smooth || (alpha >= 1000 && cover)) {
                 b.extend_from_slice(b"<path d=\"");
                 for (f, reverse) in run.iter().zip(reversals(run)) {
                     for (k, p) in f.oriented(reverse).enumerate() {
@@ -237,6 +266,7 @@ impl Painter for SvgPainter {
         let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
         let mut sink = sink.into_inner();
         let mut stats = stats.into_inner();
+        stats.approximated += textured.into_inner().approximated;
         if group.get().is_some() {
             sink.buf.extend_from_slice(b"</g>\n");
         }

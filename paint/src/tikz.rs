@@ -170,6 +170,9 @@ fn check_tex_limits(picture: &Picture, outline_width: f64) -> Result<(), PaintEr
 
 impl Painter for TikzPainter {
     fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
+        // Textures are drawn as their mean colour here (counted in the stats).
+        let (picture, flattened) = picture.untextured();
+        let picture: &Picture = &picture;
         let checked = check(picture)?;
         check_tex_limits(picture, checked.outline.map_or(0.0, |o| o.width))?;
         let d = self.options.decimals;
@@ -314,6 +317,7 @@ impl Painter for TikzPainter {
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;
         stats.bytes = sink.finish()?;
+        stats.textures_flattened = flattened;
         Ok(stats)
     }
 }

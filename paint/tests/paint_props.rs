@@ -51,6 +51,7 @@ fn fragment() -> impl Strategy<Value = PaintFragment> {
                 face,
                 object,
                 original_edges,
+                texture: None,
             }
         })
 }
@@ -73,6 +74,7 @@ fn picture() -> impl Strategy<Value = Picture> {
             }),
             seams: if background { 0.5 } else { 0.0 },
             marks: Vec::new(),
+            textures: Vec::new(),
         })
 }
 

@@ -16,6 +16,7 @@ fn frag(
         face,
         object,
         original_edges: edges.to_vec(),
+        texture: None,
     }
 }
 

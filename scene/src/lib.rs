@@ -28,12 +28,14 @@ mod marks;
 mod model;
 mod shade;
 pub mod shapes;
+pub mod texture;
 
 pub use camera::{Camera, CameraError, Projected, Projection, Viewpoint, DEFAULT_VIEW_DIRECTION};
 pub use look::{Fog, FogError, FogFalloff, ParseShadingError, Shading};
 pub use marks::{LabelAnchor, MarkerShape, PointMark, Polyline, TextLabel};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
 pub use shade::{
-    interpolated_normal, polygon_normal, shade_face, shade_in_scene, shade_point, shade_sided,
-    shade_sided_in_scene, Effects, FaceNormals, Rgb,
+    fan_weights, interpolated_normal, polygon_normal, shade_face, shade_in_scene, shade_point,
+    shade_sided, shade_sided_in_scene, Effects, FaceNormals, Rgb,
 };
+pub use texture::{FaceTexcoords, Texture, TextureError};

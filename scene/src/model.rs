@@ -1,9 +1,11 @@
 //! The in-memory scene: vertices, faces, materials, objects, lights.
 
+use std::sync::Arc;
+
 use glam::DVec3;
 use thiserror::Error;
 
-use crate::{Camera, Fog, PointMark, Polyline, Shading, TextLabel};
+use crate::{Camera, Fog, PointMark, Polyline, Shading, TextLabel, Texture};
 
 /// Errors raised while building a scene in code.
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -47,6 +49,16 @@ pub enum SceneError {
         /// What is wrong.
         problem: String,
     },
+    /// A texture coordinate index is out of range, or a face gives texture coordinates
+    /// for some corners only.
+    #[error("face refers to texture coordinate {index}, but the scene has {count}")]
+    TexcoordOutOfRange {
+        /// The offending index (or the number of coordinates given, when it does not
+        /// match the corners).
+        index: u32,
+        /// Number of texture coordinates in the scene.
+        count: usize,
+    },
     /// Too many faces or vertices for 32-bit ids.
     #[error("scene too large: more than 2^32 - 1 {0}")]
     TooLarge(&'static str),
@@ -70,6 +82,10 @@ pub struct Material {
     /// MTL illumination model: 0 = exactly `kd`, no lighting; 1 = diffuse; 2 = diffuse +
     /// specular.
     pub illum: u8,
+    /// The diffuse texture (`map_Kd`, glTF `baseColorTexture`), shared by every face
+    /// that uses it. Its colour multiplies the face's colour (see [`crate::texture`]);
+    /// it is drawn only on faces with texture coordinates.
+    pub texture: Option<Arc<Texture>>,
 }
 
 impl Material {
@@ -83,6 +99,7 @@ impl Material {
             ns: 0.0,
             opacity: 1.0,
             illum: 0,
+            texture: None,
         }
     }
 
@@ -96,6 +113,7 @@ impl Material {
             ns: 0.0,
             opacity: 1.0,
             illum: 1,
+            texture: None,
         }
     }
 
@@ -109,6 +127,7 @@ impl Material {
             ns,
             opacity: 1.0,
             illum: 2,
+            texture: None,
         }
     }
 
@@ -138,6 +157,9 @@ pub struct Face {
     pub vertices: Vec<u32>,
     /// Per-corner normal indices into [`Scene::normals`], if the input gave them.
     pub normals: Option<Vec<u32>>,
+    /// Per-corner texture coordinate indices into [`Scene::texcoords`], if the input
+    /// gave them.
+    pub texcoords: Option<Vec<u32>>,
     /// Index into [`Scene::materials`].
     pub material: u32,
     /// Index into [`Scene::objects`].
@@ -173,6 +195,9 @@ pub struct Scene {
     pub vertices: Vec<DVec3>,
     /// Vertex normals (referenced by [`Face::normals`]).
     pub normals: Vec<DVec3>,
+    /// Texture coordinates `(s, t)`, `t` down the image (referenced by
+    /// [`Face::texcoords`]; see [`crate::texture`]).
+    pub texcoords: Vec<[f64; 2]>,
     /// Faces in input order; a face's index here is its face id.
     pub faces: Vec<Face>,
     /// Materials.
@@ -232,6 +257,7 @@ impl Scene {
         let face = Face {
             vertices: vertices.to_vec(),
             normals: None,
+            texcoords: None,
             material,
             object,
         };
@@ -277,6 +303,18 @@ impl Scene {
                 }
             }
         }
+        if let Some(ts) = &face.texcoords {
+            let count = self.texcoords.len();
+            if ts.len() != face.vertices.len() {
+                return Err(SceneError::TexcoordOutOfRange {
+                    index: ts.len() as u32,
+                    count,
+                });
+            }
+            if let Some(&index) = ts.iter().find(|&&t| t as usize >= count) {
+                return Err(SceneError::TexcoordOutOfRange { index, count });
+            }
+        }
         if face.material as usize >= self.materials.len() {
             return Err(SceneError::BadReference {
                 what: "material",
@@ -300,6 +338,9 @@ impl Scene {
         }
         if self.normals.iter().any(|v| !v.is_finite()) {
             return Err(SceneError::NonFinite("normal"));
+        }
+        if self.texcoords.iter().flatten().any(|v| !v.is_finite()) {
+            return Err(SceneError::NonFinite("texture coordinate"));
         }
         for f in &self.faces {
             self.check_face(f)?;
@@ -382,10 +423,12 @@ impl Scene {
     pub fn append(&mut self, other: &Scene) {
         let vo = self.vertices.len() as u32;
         let no = self.normals.len() as u32;
+        let to = self.texcoords.len() as u32;
         let mo = self.materials.len() as u32;
         let oo = self.objects.len() as u32;
         self.vertices.extend_from_slice(&other.vertices);
         self.normals.extend_from_slice(&other.normals);
+        self.texcoords.extend_from_slice(&other.texcoords);
         self.materials.extend(other.materials.iter().cloned());
         self.objects.extend(other.objects.iter().cloned());
         for f in &other.faces {
@@ -395,6 +438,10 @@ impl Scene {
                     .normals
                     .as_ref()
                     .map(|ns| ns.iter().map(|n| n + no).collect()),
+                texcoords: f
+                    .texcoords
+                    .as_ref()
+                    .map(|ts| ts.iter().map(|t| t + to).collect()),
                 material: f.material + mo,
                 object: f.object + oo,
             });

@@ -27,6 +27,8 @@ pub struct Effects {
     pub smooth: bool,
     /// Some face is Phong-shaded: normals interpolated, lighting per point.
     pub phong: bool,
+    /// Some face has texture coordinates and a textured material.
+    pub texture: bool,
     /// The scene has fog and some face is lit (fog never touches `illum 0` colours).
     pub fog: bool,
 }
@@ -38,6 +40,9 @@ impl Effects {
         let mut e = Effects::default();
         for f in &scene.faces {
             used[f.material as usize] = true;
+            if f.texcoords.is_some() && scene.materials[f.material as usize].texture.is_some() {
+                e.texture = true;
+            }
             match Shading::of_face(scene.shading, f, &scene.materials[f.material as usize]) {
                 Shading::Flat => {}
                 Shading::Gouraud => e.smooth = true,
@@ -79,6 +84,9 @@ impl Effects {
         }
         if self.fog {
             v.push("fog");
+        }
+        if self.texture {
+            v.push("texture");
         }
         v
     }
@@ -216,27 +224,7 @@ impl FaceNormals {
     /// coordinates in it: the weights [`FaceNormals::at`] gives the corners' normals,
     /// for interpolating anything else given per corner.
     pub fn weights(&self, p: DVec3) -> Option<([usize; 3], [f64; 3])> {
-        let c = &self.corners;
-        let mut best: Option<(f64, [usize; 3], [f64; 3])> = None;
-        for i in 1..c.len() - 1 {
-            let (a, b, d) = (c[0], c[i], c[i + 1]);
-            let nrm = (b - a).cross(d - a);
-            let den = nrm.length_squared();
-            if den <= 0.0 || !den.is_finite() {
-                continue;
-            }
-            let wa = (d - b).cross(p - b).dot(nrm) / den;
-            let wb = (a - d).cross(p - d).dot(nrm) / den;
-            let wd = 1.0 - wa - wb;
-            let worst = wa.min(wb).min(wd);
-            if best.is_none_or(|(w, ..)| worst > w) {
-                best = Some((worst, [0, i, i + 1], [wa, wb, wd]));
-            }
-            if worst >= 0.0 {
-                break;
-            }
-        }
-        best.map(|(_, idx, w)| (idx, w))
+        fan_weights(&self.corners, p)
     }
 
     /// The face's corners.
@@ -248,6 +236,32 @@ impl FaceNormals {
     pub fn normals(&self) -> &[DVec3] {
         &self.normals
     }
+}
+
+/// The fan triangle (corner indices `0, i, i + 1`) of the polygon `c` that contains `p`
+/// (the nearest when rounding puts `p` just outside all of them) and `p`'s barycentric
+/// coordinates in it; `None` when every fan triangle is degenerate.
+pub fn fan_weights(c: &[DVec3], p: DVec3) -> Option<([usize; 3], [f64; 3])> {
+    let mut best: Option<(f64, [usize; 3], [f64; 3])> = None;
+    for i in 1..c.len().saturating_sub(1) {
+        let (a, b, d) = (c[0], c[i], c[i + 1]);
+        let nrm = (b - a).cross(d - a);
+        let den = nrm.length_squared();
+        if den <= 0.0 || !den.is_finite() {
+            continue;
+        }
+        let wa = (d - b).cross(p - b).dot(nrm) / den;
+        let wb = (a - d).cross(p - d).dot(nrm) / den;
+        let wd = 1.0 - wa - wb;
+        let worst = wa.min(wb).min(wd);
+        if best.is_none_or(|(w, ..)| worst > w) {
+            best = Some((worst, [0, i, i + 1], [wa, wb, wd]));
+        }
+        if worst >= 0.0 {
+            break;
+        }
+    }
+    best.map(|(_, idx, w)| (idx, w))
 }
 
 /// The flat colour of face `face` seen from `eye`: lit at its centroid with its geometric

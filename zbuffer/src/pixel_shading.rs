@@ -3,25 +3,37 @@
 //! shaded with the face's mode ([`Shading::of_face`]): Gouraud interpolates the
 //! corners' colours with the point's barycentric weights (perspective-correct, as
 //! they are taken in world space), Phong interpolates the normals and lights the point.
-//! Flat faces keep their one colour. Nothing here runs when no face is smooth.
+//! Flat faces keep their one colour. Textured faces (texture coordinates and a textured
+//! material) are shaded flat, as the painter draws them, times the texture sampled at
+//! the point's texture coordinates (bilinear, repeating; perspective-correct, as they
+//! are interpolated in world space). Nothing here runs when no face is smooth or
+//! textured.
 
 use glam::{DMat4, DVec3, DVec4};
-use limn_scene::{polygon_normal, shade_sided_in_scene, FaceNormals, Rgb, Scene, Shading};
+use limn_scene::{
+    polygon_normal, shade_face, shade_sided_in_scene, FaceNormals, FaceTexcoords, Rgb, Scene,
+    Shading,
+};
 
 use crate::image::{rgb_to_u8, NO_FACE};
 use crate::setup::Frame;
 
-/// Whether some face of `scene` is shaded smoothly (and [`shade`] is needed).
+/// Whether some face of `scene` is shaded smoothly or textured (and [`shade`] is
+/// needed).
 pub(crate) fn needed(scene: &Scene) -> bool {
     scene.faces.iter().any(|f| {
-        Shading::of_face(scene.shading, f, &scene.materials[f.material as usize]) != Shading::Flat
+        let m = &scene.materials[f.material as usize];
+        Shading::of_face(scene.shading, f, m) != Shading::Flat
+            || (f.texcoords.is_some() && m.texture.is_some())
     })
 }
 
-/// What one smooth face needs per pixel.
+/// What one smooth or textured face needs per pixel.
 struct Smooth {
     phong: bool,
-    normals: FaceNormals,
+    /// Textured: the mapping and the face's flat colour it multiplies.
+    texture: Option<(FaceTexcoords, Rgb)>,
+    normals: Option<FaceNormals>,
     /// Gouraud: the colour at each corner.
     corner_colors: Vec<Rgb>,
     /// The face's geometric normal (lit side, plane).
@@ -71,11 +83,14 @@ pub(crate) fn shade(
                 return flat[id as usize];
             }
             let m = &scene.materials[scene.faces[id as usize].material as usize];
-            let c = if s.phong {
-                let n = s.normals.at(p).unwrap_or(s.side);
+            let c = if let Some((tex, flat)) = &s.texture {
+                let t = tex.color_at(p);
+                [0, 1, 2].map(|k| flat[k] * t[k])
+            } else if s.phong {
+                let n = s.normals.as_ref().and_then(|ns| ns.at(p)).unwrap_or(s.side);
                 shade_sided_in_scene(scene, m, p, n, s.side, eye)
             } else {
-                match s.normals.weights(p) {
+                match s.normals.as_ref().and_then(|ns| ns.weights(p)) {
                     Some((idx, wts)) => {
                         let cc = &s.corner_colors;
                         [0, 1, 2].map(|k| (0..3).map(|j| wts[j] * cc[idx[j]][k]).sum::<f64>())
@@ -91,6 +106,21 @@ pub(crate) fn shade(
 fn smooth_face(scene: &Scene, face: u32, eye: DVec3) -> Option<Smooth> {
     let f = &scene.faces[face as usize];
     let m = &scene.materials[f.material as usize];
+    if let Some(tex) = FaceTexcoords::new(scene, face) {
+        let side = polygon_normal(tex.corners());
+        if side.length_squared() == 0.0 {
+            return None;
+        }
+        let origin = tex.corners().iter().copied().sum::<DVec3>() / tex.corners().len() as f64;
+        return Some(Smooth {
+            phong: false,
+            texture: Some((tex, shade_face(scene, face, eye))),
+            normals: None,
+            corner_colors: Vec::new(),
+            side,
+            origin,
+        });
+    }
     let phong = match Shading::of_face(scene.shading, f, m) {
         Shading::Flat => return None,
         Shading::Gouraud => false,
@@ -113,7 +143,8 @@ fn smooth_face(scene: &Scene, face: u32, eye: DVec3) -> Option<Smooth> {
     };
     Some(Smooth {
         phong,
-        normals,
+        texture: None,
+        normals: Some(normals),
         corner_colors,
         side,
         origin,

@@ -35,6 +35,7 @@ fn invalid_input_is_an_error_not_a_panic() {
     bad.faces.push(Face {
         vertices: vec![0, 1, 9],
         normals: None,
+        texcoords: None,
         material: 0,
         object: 0,
     });

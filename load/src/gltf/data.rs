@@ -155,7 +155,7 @@ pub(crate) fn buffers<'a>(
 }
 
 /// Decodes the part of a `data:` URI after the scheme.
-fn data_uri(rest: &str, at: &Location) -> Result<Vec<u8>, LoadError> {
+pub(crate) fn data_uri(rest: &str, at: &Location) -> Result<Vec<u8>, LoadError> {
     let bad = |m: &str| LoadError::Invalid {
         at: at.clone(),
         message: format!("bad data: URI: {m}"),
@@ -174,7 +174,7 @@ fn data_uri(rest: &str, at: &Location) -> Result<Vec<u8>, LoadError> {
 }
 
 /// Where accessor `acc`'s elements lie: (buffer bytes of its view, first byte, stride).
-fn layout<'b>(
+pub(crate) fn layout<'b>(
     acc: &::gltf::Accessor,
     buffers: &'b [Cow<[u8]>],
     elem: usize,

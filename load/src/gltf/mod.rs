@@ -13,12 +13,17 @@
 //! Materials: `baseColorFactor` RGB becomes `Kd`; its alpha becomes the opacity when
 //! `alphaMode` is `BLEND` (opaque otherwise: `MASK` cut-outs need textures). Materials
 //! with `KHR_materials_unlit` are unlit (`illum 0`), others diffusely lit (`illum 1`).
-//! Primitives without a material get [`Material::default_grey`]. Textures are ignored.
+//! Primitives without a material get [`Material::default_grey`]. A
+//! `baseColorTexture` becomes the material's texture, for primitives that have its
+//! `TEXCOORD_n` (see [`textures`]); other textures (normal, emissive, occlusion,
+//! metallic-roughness) are not drawn.
 
 mod data;
+mod textures;
 
 use std::collections::HashMap;
 use std::path::Path;
+use std::sync::Arc;
 
 use ::gltf::material::AlphaMode;
 use ::gltf::mesh::Mode;
@@ -26,7 +31,7 @@ use ::gltf::Document;
 use glam::DMat4;
 
 use super::{check_u32, transform, LoadError, LoadOptions, Location};
-use limn_scene::{Face, Material, Scene};
+use limn_scene::{Face, Material, Scene, Texture};
 
 /// Extensions a file may require and still be drawn correctly (they only add material
 /// or texture detail that limn does not use).
@@ -71,10 +76,13 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
             });
         }
     }
+    textures::check_images(&doc, path)?;
     let mut files = Vec::new();
     let buffers = data::buffers(&doc, blob, path, opts, &mut files)?;
     let mut b = Builder {
         path,
+        opts,
+        images: HashMap::new(),
         buffers: &buffers,
         scene: Scene {
             files,
@@ -85,6 +93,12 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         triangles: 0,
     };
     b.walk(&doc)?;
+    if !b.images.is_empty() && doc.extensions_used().any(|e| e == "KHR_texture_transform") {
+        b.scene.warnings.push(format!(
+            "{}: KHR_texture_transform is not applied to textures",
+            path.display()
+        ));
+    }
     if b.skipped_modes > 0 {
         b.scene.warnings.push(format!(
             "{}: {} point or line primitives skipped",
@@ -167,6 +181,9 @@ fn validation_message(e: &::gltf::Error) -> String {
 
 struct Builder<'a, 'b> {
     path: &'a Path,
+    opts: &'a LoadOptions,
+    /// Decoded images by glTF image index (each is read once).
+    images: HashMap<usize, Arc<Texture>>,
     buffers: &'a [std::borrow::Cow<'b, [u8]>],
     scene: Scene,
     /// glTF material index (`None`: the default) → scene material.
@@ -288,11 +305,17 @@ impl Builder<'_, '_> {
             });
         }
         let material = self.material(prim.material());
+        let texcoords = self.texcoords(prim, material, positions.len())?;
         let (v0, n0, f0) = (
             self.scene.vertices.len(),
             self.scene.normals.len(),
             self.scene.faces.len(),
         );
+        let t0 = self.scene.texcoords.len();
+        if let Some(ts) = &texcoords {
+            check_u32(t0 + ts.len(), "texture coordinates", self.path)?;
+            self.scene.texcoords.extend_from_slice(ts);
+        }
         check_u32(v0 + positions.len(), "vertices", self.path)?;
         check_u32(f0 + tris.len(), "faces", self.path)?;
         self.scene.vertices.extend_from_slice(&positions);
@@ -302,9 +325,13 @@ impl Builder<'_, '_> {
         for t in tris {
             let vertices = t.map(|i| v0 as u32 + i).to_vec();
             let normals = normals.as_ref().map(|_| t.map(|i| n0 as u32 + i).to_vec());
+            let texcoords = texcoords
+                .as_ref()
+                .map(|_| t.map(|i| t0 as u32 + i).to_vec());
             self.scene.faces.push(Face {
                 vertices,
                 normals,
+                texcoords,
                 material,
                 object,
             });
@@ -317,6 +344,60 @@ impl Builder<'_, '_> {
             });
         }
         Ok(())
+    }
+
+    /// The texture coordinates of a primitive whose material has a base-colour texture
+    /// (and that texture, read into scene material `material` when first needed);
+    /// `None` when nothing is textured.
+    fn texcoords(
+        &mut self,
+        prim: &::gltf::Primitive,
+        material: u32,
+        count: usize,
+    ) -> Result<Option<Vec<[f64; 2]>>, LoadError> {
+        let Some(info) = prim
+            .material()
+            .pbr_metallic_roughness()
+            .base_color_texture()
+        else {
+            return Ok(None);
+        };
+        let set = ::gltf::Semantic::TexCoords(info.tex_coord());
+        let Some(acc) = prim.get(&set) else {
+            self.scene.warnings.push(format!(
+                "{} (mesh primitive {}): the base-colour texture's TEXCOORD_{} is missing;                  drawn untextured",
+                self.path.display(),
+                prim.index(),
+                info.tex_coord()
+            ));
+            return Ok(None);
+        };
+        if acc.count() != count {
+            return Err(LoadError::Invalid {
+                at: Location::record(self.path, format!("accessor {}", acc.index())),
+                message: format!("{} texture coordinates for {count} positions", acc.count()),
+            });
+        }
+        let st = textures::read_vec2(&acc, self.buffers, self.path)?;
+        let texture = info.texture();
+        let image = texture.source().index();
+        let t = match self.images.get(&image) {
+            Some(t) => t.clone(),
+            None => {
+                let t = textures::read_image(
+                    &texture,
+                    self.buffers,
+                    self.path,
+                    self.opts,
+                    &mut self.scene.files,
+                    &mut self.scene.warnings,
+                )?;
+                self.images.insert(image, t.clone());
+                t
+            }
+        };
+        self.scene.materials[material as usize].texture = Some(t);
+        Ok(Some(st))
     }
 
     fn material(&mut self, m: ::gltf::Material) -> u32 {

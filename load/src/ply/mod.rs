@@ -221,6 +221,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                     scene.faces.push(Face {
                         vertices,
                         normals,
+                        texcoords: None,
                         material,
                         object,
                     });

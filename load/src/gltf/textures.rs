@@ -1,0 +1,149 @@
+//! glTF base-colour textures: the `TEXCOORD_n` accessor a material's
+//! `baseColorTexture` names, and its image (in a buffer view, a `data:` URI or a file
+//! beside the glTF file, under the same folder rule as buffers).
+//!
+//! Images are read only for primitives that draw them (a textured material on a
+//! primitive with the texture coordinates), each at most once. Samplers: limn repeats
+//! textures (the glTF default); `CLAMP_TO_EDGE` and `MIRRORED_REPEAT` are drawn as
+//! repeat with a warning. `KHR_texture_transform` is not applied (a warning says so).
+
+use std::borrow::Cow;
+use std::path::Path;
+use std::sync::Arc;
+
+use ::gltf::accessor::{DataType, Dimensions};
+use ::gltf::image::Source;
+use ::gltf::texture::WrappingMode;
+use limn_scene::Texture;
+
+use super::data;
+use crate::{refs, LoadError, LoadOptions, Location};
+
+/// Reads a texture coordinate accessor: float, or normalised unsigned byte or short
+/// VEC2, each value finite.
+pub(crate) fn read_vec2(
+    acc: &::gltf::Accessor,
+    buffers: &[Cow<[u8]>],
+    path: &Path,
+) -> Result<Vec<[f64; 2]>, LoadError> {
+    let at = || Location::record(path, format!("accessor {}", acc.index()));
+    let size = match (acc.dimensions(), acc.data_type(), acc.normalized()) {
+        (Dimensions::Vec2, DataType::F32, _) => 4,
+        (Dimensions::Vec2, DataType::U8, true) => 1,
+        (Dimensions::Vec2, DataType::U16, true) => 2,
+        (d, t, _) => {
+            return Err(LoadError::Unsupported {
+                at: at(),
+                what: format!(
+                    "texture coordinates of type {t:?} {d:?} (float, or normalised unsigned \
+                     byte or short, VEC2 is read)"
+                ),
+            })
+        }
+    };
+    let (bytes, start, stride) = data::layout(acc, buffers, 2 * size, path)?;
+    let mut out = Vec::with_capacity(acc.count());
+    for i in 0..acc.count() {
+        let o = start + i * stride;
+        let c = |k: usize| {
+            let b = &bytes[o + size * k..o + size * (k + 1)];
+            match size {
+                1 => f64::from(b[0]) / 255.0,
+                2 => f64::from(u16::from_le_bytes([b[0], b[1]])) / 65535.0,
+                _ => f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+            }
+        };
+        let st = [c(0), c(1)];
+        if !st[0].is_finite() || !st[1].is_finite() {
+            return Err(LoadError::NonFinite {
+                at: Location::record(path, format!("accessor {} element {i}", acc.index())),
+                what: "texture coordinate".into(),
+            });
+        }
+        out.push(st);
+    }
+    Ok(out)
+}
+
+/// Refuses images with neither a `uri` nor a `bufferView` with a `mimeType` (the
+/// `gltf` crate assumes one of them when asked for the image's source).
+pub(crate) fn check_images(doc: &::gltf::Document, path: &Path) -> Result<(), LoadError> {
+    for (i, json) in doc.as_json().images.iter().enumerate() {
+        if json.uri.is_none() && (json.buffer_view.is_none() || json.mime_type.is_none()) {
+            return Err(LoadError::Invalid {
+                at: Location::record(path, format!("image {i}")),
+                message: "an image needs a uri, or a bufferView and a mimeType".into(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Decodes the image of `texture`; warnings for samplers limn draws differently.
+pub(crate) fn read_image(
+    texture: &::gltf::Texture,
+    buffers: &[Cow<[u8]>],
+    path: &Path,
+    opts: &LoadOptions,
+    files: &mut Vec<std::path::PathBuf>,
+    warnings: &mut Vec<String>,
+) -> Result<Arc<Texture>, LoadError> {
+    let image = texture.source();
+    let at = Location::record(path, format!("image {}", image.index()));
+    let sampler = texture.sampler();
+    if sampler.wrap_s() != WrappingMode::Repeat || sampler.wrap_t() != WrappingMode::Repeat {
+        warnings.push(format!(
+            "{} (texture {}): wrap modes {:?}/{:?} are drawn as REPEAT",
+            path.display(),
+            texture.index(),
+            sampler.wrap_s(),
+            sampler.wrap_t()
+        ));
+    }
+    let (bytes, name): (Cow<[u8]>, String) = match image.source() {
+        Source::View { view, .. } => {
+            let buf = buffers
+                .get(view.buffer().index())
+                .ok_or_else(|| LoadError::Invalid {
+                    at: at.clone(),
+                    message: "its buffer does not exist".into(),
+                })?;
+            let bytes = view
+                .offset()
+                .checked_add(view.length())
+                .and_then(|end| buf.get(view.offset()..end))
+                .ok_or_else(|| LoadError::Invalid {
+                    at: at.clone(),
+                    message: format!("buffer view {} reaches past its buffer", view.index()),
+                })?;
+            (
+                Cow::Borrowed(bytes),
+                format!("buffer view {}", view.index()),
+            )
+        }
+        Source::Uri { uri, .. } => match uri.strip_prefix("data:") {
+            Some(rest) => (Cow::Owned(data::data_uri(rest, &at)?), "data: URI".into()),
+            None => {
+                let name = urlencoding::decode(uri).map_err(|_| LoadError::Invalid {
+                    at: at.clone(),
+                    message: format!("uri {uri:?} is not valid percent-encoded UTF-8"),
+                })?;
+                if name.contains("://") {
+                    return Err(LoadError::Unsupported {
+                        at,
+                        what: format!("remote image {uri:?}"),
+                    });
+                }
+                let file = refs::resolve(&name, &at, opts)?;
+                let bytes = std::fs::read(&file).map_err(|e| LoadError::Image {
+                    at: at.clone(),
+                    image: name.to_string(),
+                    message: format!("cannot read {}: {e}", file.display()),
+                })?;
+                files.push(file);
+                (Cow::Owned(bytes), name.into_owned())
+            }
+        },
+    };
+    crate::image::decode(&bytes, &name, &at)
+}

@@ -1,0 +1,215 @@
+//! Textured fragments in SVG (see the module docs of `svg.rs` for the markup).
+
+use std::collections::HashMap;
+
+use super::number::{push_hex_color, push_num, push_uint, rgb_u8};
+use super::runs::{reversals, Frag};
+use super::texture_pieces::{affine_pieces, AffinePiece, MAX_PERSPECTIVE_ERROR};
+use super::{texture_images, PaintError, Texture};
+
+/// Ids handed out while writing: clip paths and colour filters.
+#[derive(Default)]
+pub(crate) struct SvgTextures {
+    clips: u64,
+    /// Fill colour → the id number of its `<filter id="mN">`.
+    filters: HashMap<[u8; 3], usize>,
+    /// Pieces filled with a mean colour (too many repetitions).
+    pub approximated: usize,
+}
+
+/// Writes the `<defs>` of the textures (nothing when there are none).
+pub(crate) fn write_defs(
+    b: &mut Vec<u8>,
+    textures: &[std::sync::Arc<Texture>],
+) -> Result<(), PaintError> {
+    if textures.is_empty() {
+        return Ok(());
+    }
+    b.extend_from_slice(b"<defs>\n");
+    for (k, t) in textures.iter().enumerate() {
+        let uri = texture_images::png_data_uri(t).ok_or(PaintError::Style {
+            what: "texture",
+            reason: "the image cannot be encoded as PNG",
+        })?;
+        // The padded image: its inner texels fill the unit square of texture space;
+        // each repetition is clipped to that square grown by half a texel.
+        let (tw, th) = (f64::from(t.width()), f64::from(t.height()));
+        let pad = f64::from(texture_images::PAD);
+        let (px, py) = (pad / tw, pad / th);
+        b.extend_from_slice(b"<image id=\"tex");
+        push_uint(b, k as u64);
+        b.push(b'"');
+        rect_attrs(b, [-px, -py, 1.0 + 2.0 * px, 1.0 + 2.0 * py]);
+        b.extend_from_slice(
+            b" preserveAspectRatio=\"none\" style=\"image-rendering:smooth\" href=\"",
+        );
+        b.extend_from_slice(uri.as_bytes());
+        b.extend_from_slice(b"\"/>\n<clipPath id=\"unit");
+        push_uint(b, k as u64);
+        b.extend_from_slice(b"\"><rect");
+        rect_attrs(b, [-0.5 / tw, -0.5 / th, 1.0 + 1.0 / tw, 1.0 + 1.0 / th]);
+        b.extend_from_slice(b"/></clipPath>\n");
+    }
+    b.extend_from_slice(b"</defs>\n");
+    Ok(())
+}
+
+/// ` x="…" y="…" width="…" height="…"`.
+fn rect_attrs(b: &mut Vec<u8>, r: [f64; 4]) {
+    for (name, v) in [&b" x=\""[..], b"\" y=\"", b"\" width=\"", b"\" height=\""]
+        .iter()
+        .zip(r)
+    {
+        b.extend_from_slice(name);
+        push_num(b, v, 9);
+    }
+    b.push(b'"');
+}
+
+impl SvgTextures {
+    /// Writes a run of textured fragments with texture `k` (opacity in thousandths,
+    /// `mean` the texture's mean colour); returns the number of elements drawn.
+    pub fn run(
+        &mut self,
+        b: &mut Vec<u8>,
+        run: &[Frag<'_>],
+        k: u32,
+        alpha: u16,
+        mean: [f64; 3],
+        d: u8,
+    ) -> usize {
+        let fill = run[0].src.fill;
+        let rgb = rgb_u8([fill[0], fill[1], fill[2]]);
+        // Fill times texture: a colour matrix over the group (exact at every pixel,
+        // edges included).
+        let filter = (rgb != [255; 3]).then(|| {
+            let next = self.filters.len();
+            let id = *self.filters.entry(rgb).or_insert(next);
+            if id == next {
+                b.extend_from_slice(b"<filter id=\"m");
+                push_uint(b, id as u64);
+                b.extend_from_slice(
+                    b"\" color-interpolation-filters=\"sRGB\"><feColorMatrix values=\"",
+                );
+                for (i, c) in rgb.iter().enumerate() {
+                    for j in 0..5 {
+                        if i + j > 0 {
+                            b.push(b' ');
+                        }
+                        if i == j {
+                            push_num(b, f64::from(*c) / 255.0, 4);
+                        } else {
+                            b.push(b'0');
+                        }
+                    }
+                }
+                b.extend_from_slice(b" 0 0 0 1 0\"/></filter>\n");
+            }
+            id
+        });
+        b.extend_from_slice(b"<g");
+        if alpha < 1000 {
+            b.extend_from_slice(b" opacity=\"");
+            super::number::push_milli(b, alpha);
+            b.push(b'"');
+        }
+        if let Some(id) = filter {
+            b.extend_from_slice(b" filter=\"url(#m");
+            push_uint(b, id as u64);
+            b.extend_from_slice(b")\"");
+        }
+        b.extend_from_slice(b">\n");
+        let mut drawn = 0;
+        // Under the pieces, the whole run (fragments and seam flaps, one clip path, so
+        // their shared edges are covered at once) under one affine map, the first fan
+        // triangle's: the anti-aliased edges between pieces then show nearly the same
+        // texels, not the page.
+        let polys: Vec<Vec<[f64; 2]>> = run
+            .iter()
+            .zip(reversals(run))
+            .map(|(f, reverse)| f.oriented(reverse).collect())
+            .collect();
+        let source = run.iter().find_map(|f| f.src.texture);
+        let whole = source.as_ref().and_then(|map| {
+            affine_pieces(&run[0].points, map, f64::INFINITY)
+                .first()
+                .copied()
+        });
+        if let Some(whole) = whole {
+            drawn += self.clipped(b, &polys, &whole, k, mean, d);
+        }
+        for f in run {
+            let Some(map) = &f.src.texture else { continue };
+            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
+                drawn += self.clipped(b, &[p.points.to_vec()], &p, k, mean, d);
+            }
+        }
+        b.extend_from_slice(b"</g>\n");
+        drawn
+    }
+
+    /// The polygons `polys` (one path, non-zero rule) clipped out of the texture placed
+    /// by `piece`'s map (one `<use>` per repetition `piece` reaches), or filled with the
+    /// mean colour when it reaches too many repetitions.
+    fn clipped(
+        &mut self,
+        b: &mut Vec<u8>,
+        polys: &[Vec<[f64; 2]>],
+        piece: &AffinePiece,
+        k: u32,
+        mean: [f64; 3],
+        d: u8,
+    ) -> usize {
+        let path = |b: &mut Vec<u8>| {
+            for poly in polys {
+                for (i, p) in poly.iter().enumerate() {
+                    b.push(match i {
+                        0 => b'M',
+                        1 => b'L',
+                        _ => b' ',
+                    });
+                    push_num(b, p[0], d);
+                    b.push(b' ');
+                    push_num(b, p[1], d);
+                }
+                b.push(b'Z');
+            }
+        };
+        let Some(tiles) = piece.repetitions() else {
+            b.extend_from_slice(b"<path d=\"");
+            path(b);
+            b.extend_from_slice(b"\" fill=\"");
+            push_hex_color(b, rgb_u8(mean));
+            b.extend_from_slice(b"\"/>\n");
+            self.approximated += 1;
+            return 1;
+        };
+        b.extend_from_slice(b"<clipPath id=\"tc");
+        push_uint(b, self.clips);
+        b.extend_from_slice(b"\"><path d=\"");
+        path(b);
+        b.extend_from_slice(b"\"/></clipPath>\n<g clip-path=\"url(#tc");
+        push_uint(b, self.clips);
+        b.extend_from_slice(b")\">\n");
+        let [ma, mb, mc, md, me, mf] = piece.st_to_page;
+        for (i, j) in tiles {
+            b.extend_from_slice(b"<use href=\"#tex");
+            push_uint(b, k.into());
+            b.extend_from_slice(b"\" transform=\"matrix(");
+            let m = [ma, mb, mc, md, ma * i + mc * j + me, mb * i + md * j + mf];
+            for (n, v) in m.iter().enumerate() {
+                if n > 0 {
+                    b.push(b' ');
+                }
+                // The linear part scales the unit square up to the page: more decimals.
+                push_num(b, *v, if n < 4 { d + 4 } else { d + 2 });
+            }
+            b.extend_from_slice(b")\" clip-path=\"url(#unit");
+            push_uint(b, k.into());
+            b.extend_from_slice(b")\"/>\n");
+        }
+        b.extend_from_slice(b"</g>\n");
+        self.clips += 1;
+        1
+    }
+}

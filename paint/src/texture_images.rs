@@ -1,0 +1,73 @@
+//! Texture images as the vector formats embed them: PNG for SVG `data:` URIs, raw RGB
+//! rows for PDF image XObjects (which compress them themselves). Texture alpha is not
+//! drawn (see [`limn_scene::texture`]), so both carry RGB only.
+//!
+//! **Padding.** Viewers interpolate an image only within itself: near its border they
+//! clamp (or fade to transparent), where limn's repeating sampler blends with the
+//! opposite border. So each image is embedded with a border of [`PAD`] texel taken from
+//! the opposite side (the repeat), and placed so that its inner `W × H` texels fill the
+//! texture's unit square: inside the square every viewer then interpolates as limn
+//! samples.
+
+use base64::Engine as _;
+use limn_scene::Texture;
+use tiny_skia::{IntSize, Pixmap};
+
+/// Texels of wrapped border around each embedded image.
+pub(crate) const PAD: u32 = 1;
+
+/// The texture with its wrapped border (see the module docs), opaque RGBA, and its size.
+fn padded(t: &Texture) -> (Vec<u8>, u32, u32) {
+    let (w, h) = (t.width(), t.height());
+    let (pw, ph) = (w + 2 * PAD, h + 2 * PAD);
+    let src = t.rgba();
+    let mut out = Vec::with_capacity(4 * pw as usize * ph as usize);
+    for j in 0..ph {
+        let sj = (i64::from(j) - i64::from(PAD)).rem_euclid(i64::from(h)) as usize;
+        for i in 0..pw {
+            let si = (i64::from(i) - i64::from(PAD)).rem_euclid(i64::from(w)) as usize;
+            let at = 4 * (sj * w as usize + si);
+            out.extend_from_slice(&[src[at], src[at + 1], src[at + 2], 255]);
+        }
+    }
+    (out, pw, ph)
+}
+
+/// The padded texture as a `data:image/png;base64,…` URI (opaque); `None` if it cannot
+/// be encoded.
+pub(crate) fn png_data_uri(t: &Texture) -> Option<String> {
+    let (rgba, w, h) = padded(t);
+    let size = IntSize::from_wh(w, h)?;
+    let png = Pixmap::from_vec(rgba, size)?.encode_png().ok()?;
+    let mut uri = String::from("data:image/png;base64,");
+    base64::engine::general_purpose::STANDARD.encode_string(png, &mut uri);
+    Some(uri)
+}
+
+/// The padded texture's RGB bytes, rows top to bottom, and its size.
+pub(crate) fn rgb_rows(t: &Texture) -> (Vec<u8>, u32, u32) {
+    let (rgba, w, h) = padded(t);
+    let rgb = rgba
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    (rgb, w, h)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_border_repeats_the_opposite_side() {
+        let rgba: Vec<u8> = (0..6u8).flat_map(|v| [v, v, v, 7]).collect();
+        let t = Texture::new("t", 3, 2, rgba).unwrap();
+        let (rgb, w, h) = rgb_rows(&t);
+        assert_eq!((w, h), (5, 4));
+        let row = |j: usize| -> Vec<u8> { (0..5).map(|i| rgb[3 * (j * 5 + i)]).collect() };
+        assert_eq!(row(0), vec![5, 3, 4, 5, 3]);
+        assert_eq!(row(1), vec![2, 0, 1, 2, 0]);
+        assert_eq!(row(2), vec![5, 3, 4, 5, 3]);
+        assert_eq!(row(3), vec![2, 0, 1, 2, 0]);
+    }
+}

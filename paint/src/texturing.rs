@@ -1,0 +1,247 @@
+//! Textured faces: the projective map from the page to each face's texture, and the
+//! split of a fragment of a larger face along its fan triangles (each fan triangle maps
+//! its texture affinely in world space, so with a map of its own on the page).
+
+use std::collections::HashMap;
+use std::sync::Arc;
+
+use glam::{DMat3, DMat4, DVec3};
+use limn_scene::{polygon_normal, Camera, FaceTexcoords, Texture};
+
+use crate::{PaintFragment, TextureMap};
+
+/// The textures of a picture, each once (by identity of the shared image).
+#[derive(Default)]
+pub(crate) struct TextureTable {
+    index: HashMap<*const Texture, u32>,
+    pub list: Vec<Arc<Texture>>,
+}
+
+impl TextureTable {
+    /// The index of `t`, added when new.
+    pub fn index_of(&mut self, t: &Arc<Texture>) -> u32 {
+        let key = Arc::as_ptr(t);
+        if let Some(&i) = self.index.get(&key) {
+            return i;
+        }
+        self.list.push(t.clone());
+        let i = (self.list.len() - 1) as u32;
+        self.index.insert(key, i);
+        i
+    }
+}
+
+/// One textured face seen by one camera: a map per fan triangle.
+pub(crate) struct FaceTexture {
+    corners: Vec<DVec3>,
+    normal: DVec3,
+    maps: Vec<Option<TextureMap>>,
+}
+
+/// What the page projection needs: the camera and its view-projection matrix.
+pub(crate) struct Projector<'a> {
+    pub camera: &'a Camera,
+    pub vp: DMat4,
+}
+
+impl Projector<'_> {
+    fn project(&self, p: DVec3) -> [f64; 2] {
+        let q = self.camera.project_with(&self.vp, p);
+        [q.x, q.y]
+    }
+}
+
+impl FaceTexture {
+    /// The maps of `face` (texture `texture` in the picture's table).
+    pub fn new(face: &FaceTexcoords, texture: u32, view: &Projector<'_>) -> FaceTexture {
+        let c = face.corners();
+        let st = face.st();
+        let maps = (1..c.len().saturating_sub(1))
+            .map(|i| {
+                page_to_texture([c[0], c[i], c[i + 1]], [st[0], st[i], st[i + 1]], view).map(
+                    |screen_to_st| TextureMap {
+                        texture,
+                        screen_to_st,
+                    },
+                )
+            })
+            .collect();
+        FaceTexture {
+            corners: c.to_vec(),
+            normal: polygon_normal(c),
+            maps,
+        }
+    }
+
+    /// Appends `template` (a fragment of the face with world corners `world`) with its
+    /// texture map: whole when the face is a triangle or the fragment lies in one fan
+    /// triangle, else cut along the fan's diagonals. Pieces whose map is undefined (a
+    /// face seen edge-on) keep the flat fill.
+    pub fn apply(
+        &self,
+        template: PaintFragment,
+        world: &[DVec3],
+        view: &Projector<'_>,
+        out: &mut Vec<PaintFragment>,
+    ) {
+        if self.maps.len() == 1 || world.len() != template.points.len() {
+            let mut f = template;
+            f.texture = self.maps.first().copied().flatten();
+            out.push(f);
+            return;
+        }
+        let start: Vec<Corner> = (0..world.len())
+            .map(|i| Corner {
+                world: world[i],
+                screen: template.points[i],
+                edge: template.original_edges.get(i).copied().unwrap_or(false),
+            })
+            .collect();
+        let c = &self.corners;
+        let n = c.len();
+        for (k, map) in self.maps.iter().enumerate() {
+            let i = k + 1;
+            let mut poly = start.clone();
+            // The wedge of fan triangle (0, i, i + 1): beyond diagonal 0→i towards
+            // corner i + 1, and before diagonal 0→(i + 1) towards corner i.
+            if i > 1 {
+                poly = self.clip(&poly, c[i], c[i + 1], view);
+            }
+            if i + 1 < n - 1 {
+                poly = self.clip(&poly, c[i + 1], c[i], view);
+            }
+            if poly.len() < 3 {
+                continue;
+            }
+            out.push(PaintFragment {
+                points: poly.iter().map(|v| v.screen).collect(),
+                original_edges: poly.iter().map(|v| v.edge).collect(),
+                texture: *map,
+                ..template.clone()
+            });
+        }
+    }
+
+    /// Keeps the part of `poly` on the side of the line from corner 0 through `through`
+    /// (in the face's plane) where `towards` lies.
+    fn clip(
+        &self,
+        poly: &[Corner],
+        through: DVec3,
+        towards: DVec3,
+        view: &Projector<'_>,
+    ) -> Vec<Corner> {
+        let o = self.corners[0];
+        let axis = through - o;
+        let sign = axis.cross(towards - o).dot(self.normal).signum();
+        let side = |p: DVec3| axis.cross(p - o).dot(self.normal) * sign;
+        let mut out = Vec::with_capacity(poly.len() + 1);
+        for k in 0..poly.len() {
+            let (p, q) = (&poly[k], &poly[(k + 1) % poly.len()]);
+            let (dp, dq) = (side(p.world), side(q.world));
+            if dp >= 0.0 {
+                out.push(p.clone());
+            }
+            if (dp > 0.0 && dq < 0.0) || (dp < 0.0 && dq > 0.0) {
+                let t = dp / (dp - dq);
+                let w = p.world + (q.world - p.world) * t;
+                out.push(Corner {
+                    world: w,
+                    screen: view.project(w),
+                    // Entering: the next edge runs on along p→q; leaving: along the cut.
+                    edge: dp < 0.0 && p.edge,
+                });
+            }
+        }
+        out
+    }
+}
+
+#[derive(Clone)]
+struct Corner {
+    world: DVec3,
+    screen: [f64; 2],
+    /// Whether the edge from this corner to the next is an original model edge.
+    edge: bool,
+}
+
+/// The projective map from the page to texture coordinates of the world triangle `w`
+/// with texture coordinates `st`, as the rows of `H` (scaled so that its largest entry
+/// is 1); `None` when the triangle's plane projects to a line or the triangle is
+/// degenerate.
+///
+/// A point of the triangle's plane is `A + α(B − A) + β(C − A)`; the view-projection
+/// takes `(α, β, 1)` linearly to clip space, and the viewport to homogeneous page
+/// coordinates: a 3 × 3 matrix `K`. The texture coordinates are affine in `(α, β)`: a
+/// matrix `T`. Then `H = T · K⁻¹`.
+pub(crate) fn page_to_texture(
+    w: [DVec3; 3],
+    st: [[f64; 2]; 3],
+    view: &Projector<'_>,
+) -> Option<[[f64; 3]; 3]> {
+    let vp = &view.vp;
+    let (width, height) = (f64::from(view.camera.width), f64::from(view.camera.height));
+    let page =
+        |c: glam::DVec4| DVec3::new(0.5 * width * (c.x + c.w), 0.5 * height * (c.w - c.y), c.w);
+    let k = DMat3::from_cols(
+        page(*vp * (w[1] - w[0]).extend(0.0)),
+        page(*vp * (w[2] - w[0]).extend(0.0)),
+        page(*vp * w[0].extend(1.0)),
+    );
+    let det = k.determinant();
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let t = DMat3::from_cols(
+        DVec3::new(st[1][0] - st[0][0], st[1][1] - st[0][1], 0.0),
+        DVec3::new(st[2][0] - st[0][0], st[2][1] - st[0][1], 0.0),
+        DVec3::new(st[0][0], st[0][1], 1.0),
+    );
+    let h = t * k.inverse();
+    let rows = [h.row(0), h.row(1), h.row(2)].map(|r| r.to_array());
+    let big = rows.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    if big == 0.0 || !big.is_finite() {
+        return None;
+    }
+    Some(rows.map(|r| r.map(|v| v / big)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_map_sends_projected_corners_to_their_coordinates() {
+        let cam = Camera::new(DVec3::new(0.3, -2.0, 4.0), DVec3::ZERO, 200, 100);
+        let view = Projector {
+            camera: &cam,
+            vp: cam.view_projection(0.1, 100.0),
+        };
+        let w = [
+            DVec3::new(-1.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.2, -0.5),
+            DVec3::new(0.0, 1.0, 0.3),
+        ];
+        let st = [[0.0, 0.0], [2.0, 0.5], [0.25, 1.0]];
+        let h = page_to_texture(w, st, &view).unwrap();
+        let map = TextureMap {
+            texture: 0,
+            screen_to_st: h,
+        };
+        for i in 0..3 {
+            let got = map.st_at(view.project(w[i])).unwrap();
+            assert!((got[0] - st[i][0]).abs() < 1e-9 && (got[1] - st[i][1]).abs() < 1e-9);
+        }
+        // A world point inside: its texture coordinates by world barycentrics.
+        let p = w[0] * 0.2 + w[1] * 0.3 + w[2] * 0.5;
+        let want = [0, 1].map(|k| st[0][k] * 0.2 + st[1][k] * 0.3 + st[2][k] * 0.5);
+        let got = map.st_at(view.project(p)).unwrap();
+        assert!((got[0] - want[0]).abs() < 1e-9 && (got[1] - want[1]).abs() < 1e-9);
+        // The screen midpoint of an edge is not the world midpoint (perspective).
+        let (a, b) = (view.project(w[0]), view.project(w[1]));
+        let mid = map
+            .st_at([(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0])
+            .unwrap();
+        assert!((mid[0] - 1.0).abs() > 1e-3, "{mid:?}");
+    }
+}

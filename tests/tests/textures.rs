@@ -1,0 +1,353 @@
+//! Textures drawn by the vector writers against the PNG painter, perspective
+//! correctness at a grazing angle, and seams between textured triangles.
+
+use std::sync::Arc;
+
+use glam::DVec3;
+use limn_depthsort::{order, OrderOptions};
+use limn_paint::{
+    affine_pieces, picture, Painter, Picture, PngOptions, PngPainter, Style, SvgPainter,
+    MAX_PERSPECTIVE_ERROR,
+};
+use limn_scene::{Camera, Material, Scene, Texture};
+
+/// An `n` × `n` checker of two soft colours (so that bilinear blending stays gentle).
+fn checker(n: u32) -> Arc<Texture> {
+    let mut rgba = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            let c = if (i + j) % 2 == 0 {
+                [200, 90, 60]
+            } else {
+                [240, 220, 150]
+            };
+            rgba.extend_from_slice(&[c[0], c[1], c[2], 255]);
+        }
+    }
+    Arc::new(Texture::new("checker", n, n, rgba).unwrap())
+}
+
+/// A `cells` × `cells` grid of textured triangles covering the square [-1, 1]² at
+/// y = 0, texture coordinates `reps` repetitions across; `lit` gives a diffusely lit
+/// material (the fill is not white) instead of an unlit white one.
+fn textured_floor(cells: u32, reps: f64, lit: bool, texture: Arc<Texture>) -> Scene {
+    let mut s = Scene::default();
+    let mut m = if lit {
+        Material::diffuse("t", [0.9, 0.8, 1.0])
+    } else {
+        Material::unlit("t", [1.0; 3])
+    };
+    m.texture = Some(texture);
+    let mat = s.add_material(m);
+    let obj = s.add_object("floor");
+    let k = f64::from(cells);
+    for j in 0..=cells {
+        for i in 0..=cells {
+            let (u, v) = (f64::from(i) / k, f64::from(j) / k);
+            s.add_vertex(DVec3::new(2.0 * u - 1.0, 0.0, 1.0 - 2.0 * v));
+            s.texcoords.push([reps * u, reps * v]);
+        }
+    }
+    let id = |i: u32, j: u32| j * (cells + 1) + i;
+    for j in 0..cells {
+        for i in 0..cells {
+            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            for tri in [[a, b, c], [a, c, d]] {
+                let f = s.add_face(&tri, mat, obj).unwrap();
+                s.faces[f as usize].texcoords = Some(tri.to_vec());
+            }
+        }
+    }
+    s
+}
+
+fn ordered_picture(scene: &Scene, camera: &Camera) -> Picture {
+    let o = order(scene, camera, &OrderOptions::default()).unwrap();
+    picture(scene, &o, &Style::default())
+}
+
+fn png_pixels(p: &Picture) -> Vec<u8> {
+    let (pixmap, _) = PngPainter::new(PngOptions::default()).render(p).unwrap();
+    pixmap.data().to_vec()
+}
+
+fn svg_pixels(p: &Picture) -> (String, Vec<u8>) {
+    let mut out = Vec::new();
+    SvgPainter::default().paint(p, &mut out).unwrap();
+    let svg = String::from_utf8(out).unwrap();
+    let tree = resvg::usvg::Tree::from_str(&svg, &resvg::usvg::Options::default()).unwrap();
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(p.width, p.height).unwrap();
+    resvg::render(
+        &tree,
+        resvg::tiny_skia::Transform::identity(),
+        &mut pixmap.as_mut(),
+    );
+    (svg, pixmap.data().to_vec())
+}
+
+/// Pixels within `band` pixels of the picture's silhouette (the projected outline of
+/// the floor), where anti-aliasing differs between renderers.
+fn near_outline(x: f64, y: f64, outline: &[[f64; 2]], band: f64) -> bool {
+    (0..outline.len()).any(|i| {
+        let (a, b) = (outline[i], outline[(i + 1) % outline.len()]);
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let t = (((x - a[0]) * dx + (y - a[1]) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+        (x - a[0] - t * dx).hypot(y - a[1] - t * dy) <= band
+    })
+}
+
+fn floor_outline(camera: &Camera) -> Vec<[f64; 2]> {
+    let vp = camera.view_projection(0.1, 100.0);
+    [(-1.0, 1.0), (1.0, 1.0), (1.0, -1.0), (-1.0, -1.0)]
+        .map(|(x, z)| {
+            let p = camera.project_with(&vp, DVec3::new(x, 0.0, z));
+            [p.x, p.y]
+        })
+        .to_vec()
+}
+
+/// Over the pixels away from the outline: the largest channel difference, how many
+/// differ by more than `tolerance` levels, and how many were compared.
+fn compare(a: &[u8], b: &[u8], w: u32, outline: &[[f64; 2]], tolerance: u8) -> (u8, usize, usize) {
+    let mut worst = 0u8;
+    let mut over = 0;
+    let mut compared = 0;
+    for (i, (pa, pb)) in a.chunks_exact(4).zip(b.chunks_exact(4)).enumerate() {
+        let (x, y) = ((i as u32 % w) as f64 + 0.5, (i as u32 / w) as f64 + 0.5);
+        if near_outline(x, y, outline, 2.0) {
+            continue;
+        }
+        let d = pa
+            .iter()
+            .zip(pb)
+            .map(|(p, q)| p.abs_diff(*q))
+            .max()
+            .unwrap();
+        worst = worst.max(d);
+        compared += 1;
+        if d > tolerance {
+            over += 1;
+        }
+    }
+    (worst, over, compared)
+}
+
+/// The stated tolerance, outside a 2 px band around the outline: every pixel within
+/// [`MOST`] levels of 255 per channel but at most [`FEW`] of the pixels compared, and
+/// every pixel within [`ALL`] levels. Bilinear interpolation has a corner at each texel
+/// centre (the checker's extremes); the PNG painter samples it exactly, while image
+/// filters of SVG renderers round it off over a pixel or two (resvg and librsvg both
+/// do, by 10 to 25 levels there): the few pixels on those corners are the exception.
+const MOST: u8 = 8;
+/// See [`MOST`]: the share of pixels allowed above it.
+const FEW: f64 = 0.02;
+/// See [`MOST`]: the bound for every pixel.
+const ALL: u8 = 40;
+
+fn assert_agree(png: &[u8], svg: &[u8], w: u32, outline: &[[f64; 2]], what: &str) {
+    let (worst, over, compared) = compare(png, svg, w, outline, MOST);
+    let share = over as f64 / compared as f64;
+    eprintln!("{what}: worst {worst}, {over} of {compared} pixels above {MOST} levels");
+    assert!(compared > 10_000, "{what}: {compared} pixels compared");
+    assert!(
+        share <= FEW,
+        "{what}: {over} of {compared} pixels above {MOST} levels"
+    );
+    assert!(worst <= ALL, "{what}: worst difference {worst}");
+}
+
+#[test]
+fn a_textured_quad_in_svg_matches_the_png_painter() {
+    let camera = Camera::new(DVec3::new(0.6, 1.4, 2.6), DVec3::ZERO, 240, 180);
+    let outline = floor_outline(&camera);
+    for lit in [false, true] {
+        let scene = textured_floor(1, 2.0, lit, checker(8));
+        let pic = ordered_picture(&scene, &camera);
+        assert!(pic.has_textures());
+        let png = png_pixels(&pic);
+        let (svg, rendered) = svg_pixels(&pic);
+        assert_eq!(
+            svg.matches("<image").count(),
+            1,
+            "the image is embedded once"
+        );
+        assert_eq!(svg.contains("<feColorMatrix"), lit);
+        assert_agree(&png, &rendered, pic.width, &outline, &format!("lit {lit}"));
+        // The comparison can fail: without the texture most pixels are far off.
+        let flat = svg_pixels(&pic.textures_flattened()).1;
+        let (_, over, compared) = compare(&png, &flat, pic.width, &outline, MOST);
+        assert!(
+            over as f64 > 5.0 * FEW * compared as f64,
+            "{over} of {compared}"
+        );
+    }
+}
+
+/// The least alpha over pixels inside the floor (opaque in the PNG painter's picture,
+/// away from the outline).
+fn least_inner_alpha(png: &[u8], svg: &[u8], w: u32, outline: &[[f64; 2]]) -> u8 {
+    (0..svg.len() / 4)
+        .filter(|&i| {
+            let (x, y) = ((i as u32 % w) as f64 + 0.5, (i as u32 / w) as f64 + 0.5);
+            png[4 * i + 3] == 255 && !near_outline(x, y, outline, 2.0)
+        })
+        .map(|i| svg[4 * i + 3])
+        .min()
+        .unwrap_or(255)
+}
+
+#[test]
+fn textured_triangles_show_no_seams() {
+    // 8 × 8 cells, 128 triangles sharing edges, lit (a colour filter per fill) and
+    // unlit. On a transparent page a hairline along a shared edge lets the page show
+    // through the anti-aliased edge pixels: their alpha drops. Stated bound: every
+    // pixel inside the floor keeps alpha ≥ 250 (the page shows through by at most 2 %;
+    // flat fills with their seam flaps reach 229 in the same view, a bare mesh less).
+    let camera = Camera::new(DVec3::new(0.3, 1.5, 1.9), DVec3::ZERO, 240, 180);
+    let outline = floor_outline(&camera);
+    for lit in [false, true] {
+        let scene = textured_floor(8, 2.0, lit, checker(8));
+        let pic = ordered_picture(&scene, &camera);
+        let png = png_pixels(&pic);
+        let (_, rendered) = svg_pixels(&pic);
+        let least = least_inner_alpha(&png, &rendered, pic.width, &outline);
+        eprintln!("lit {lit}: least alpha inside {least}");
+        assert!(least >= 250, "lit {lit}: alpha {least} inside the floor");
+        assert_agree(
+            &png,
+            &rendered,
+            pic.width,
+            &outline,
+            &format!("8 × 8 cells, lit {lit}"),
+        );
+        // Without seam flaps the test sees the hairlines.
+        let style = Style {
+            seams: 0.0,
+            ..Style::default()
+        };
+        let o = order(&scene, &camera, &OrderOptions::default()).unwrap();
+        let (_, bare) = svg_pixels(&picture(&scene, &o, &style));
+        let least = least_inner_alpha(&png, &bare, pic.width, &outline);
+        assert!(least < 240, "lit {lit}: bare mesh, alpha {least}");
+    }
+}
+
+#[test]
+fn checker_corners_land_at_their_projected_points_at_a_grazing_angle() {
+    // The eye 0.15 above a 2 × 2 floor, looking along it: strong perspective.
+    let camera = Camera::new(
+        DVec3::new(0.0, 0.15, 2.2),
+        DVec3::new(0.0, 0.0, -1.0),
+        320,
+        200,
+    );
+    let n = 8u32;
+    let scene = textured_floor(1, 1.0, false, checker(n));
+    let pic = ordered_picture(&scene, &camera);
+    let o = order(&scene, &camera, &OrderOptions::default()).unwrap();
+    let vp = camera.view_projection(o.near, o.far);
+    let mut pieces = 0;
+    let mut checked = 0;
+    for f in &pic.fragments {
+        let map = f.texture.expect("textured");
+        let affine = affine_pieces(&f.points, &map, MAX_PERSPECTIVE_ERROR);
+        pieces += affine.len();
+        for j in 0..=n {
+            for i in 0..=n {
+                let (s, t) = (f64::from(i) / f64::from(n), f64::from(j) / f64::from(n));
+                // The world point with these texture coordinates, and its projection.
+                let world = DVec3::new(2.0 * s - 1.0, 0.0, 1.0 - 2.0 * t);
+                let p = camera.project_with(&vp, world);
+                // The exact map takes the projected point back to (s, t).
+                let st = map.st_at([p.x, p.y]).unwrap();
+                assert!(
+                    (st[0] - s).abs() < 1e-9 && (st[1] - t).abs() < 1e-9,
+                    "{st:?}"
+                );
+                // The affine piece holding the point draws (s, t) within 0.5 px of it.
+                for piece in &affine {
+                    if !inside(&piece.points, [p.x, p.y]) {
+                        continue;
+                    }
+                    let [a, b, c, d, e, ff] = piece.st_to_page;
+                    let (x, y) = (a * s + c * t + e, b * s + d * t + ff);
+                    let err = (x - p.x).hypot(y - p.y);
+                    assert!(
+                        err <= MAX_PERSPECTIVE_ERROR * 1.05,
+                        "{err} px at ({s}, {t})"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    eprintln!("grazing view: {pieces} affine pieces, {checked} corners checked");
+    assert!(
+        pieces > 8,
+        "a grazing view needs subdivision: {pieces} pieces"
+    );
+    assert!(checked >= 40, "{checked}");
+    // One affine map for the whole quad would be far off.
+    let f = &pic.fragments[0];
+    let whole = affine_pieces(&f.points, &f.texture.unwrap(), 1e9);
+    let [a, b, c, d, e, ff] = whole[0].st_to_page;
+    let p = camera.project_with(&vp, DVec3::new(0.0, 0.0, 0.0));
+    let (x, y) = (a * 0.5 + c * 0.5 + e, b * 0.5 + d * 0.5 + ff);
+    assert!((x - p.x).hypot(y - p.y) > 5.0);
+}
+
+fn inside(t: &[[f64; 2]; 3], p: [f64; 2]) -> bool {
+    let side =
+        |a: [f64; 2], b: [f64; 2]| (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+    let s = [side(t[0], t[1]), side(t[1], t[2]), side(t[2], t[0])];
+    s.iter().all(|&v| v >= 0.0) || s.iter().all(|&v| v <= 0.0)
+}
+
+#[test]
+fn image_space_renderers_sample_as_the_png_painter() {
+    use limn_zbuffer::{edge_band, render, Method, RenderOptions};
+    let camera = Camera::new(DVec3::new(0.5, 0.6, 2.4), DVec3::ZERO, 200, 150);
+    let outline = floor_outline(&camera);
+    let scene = textured_floor(4, 3.0, true, checker(8));
+    let pic = ordered_picture(&scene, &camera);
+    let (painted, _) = PngPainter::new(PngOptions {
+        anti_alias: false,
+        ..PngOptions::default()
+    })
+    .render(&pic)
+    .unwrap();
+    let painted = painted.data();
+    // Pixels whose centre lies on an edge between faces may go to either face (whose
+    // flat lighting differs a little): left out, as in every per-pixel comparison.
+    let mut edges = Vec::new();
+    for f in &pic.fragments {
+        let n = f.points.len();
+        for i in 0..n {
+            edges.push((f.points[i], f.points[(i + 1) % n]));
+        }
+    }
+    let band = edge_band(&edges, 200, 150, 0.5);
+    for method in [Method::ZBuffer, Method::RayCast] {
+        let r = render(&scene, &camera, method, &RenderOptions::default()).unwrap();
+        let mut compared = 0;
+        let mut worst = 0u8;
+        for (i, px) in r.color.pixels.iter().enumerate() {
+            let (x, y) = ((i as u32 % 200) as f64 + 0.5, (i as u32 / 200) as f64 + 0.5);
+            let on_edge = band.get(x as u32, y as u32);
+            if painted[4 * i + 3] != 255 || on_edge || near_outline(x, y, &outline, 1.5) {
+                continue;
+            }
+            let d = (0..3)
+                .map(|k| px[k].abs_diff(painted[4 * i + k]))
+                .max()
+                .unwrap();
+            worst = worst.max(d);
+            compared += 1;
+        }
+        assert!(compared > 3000, "{compared}");
+        // Both sample the same bilinear texture at each pixel centre: equal up to the
+        // rounding of the texture coordinates.
+        eprintln!("{method:?}: worst {worst} over {compared} pixels");
+        assert!(worst <= 1, "{method:?}: worst difference {worst}");
+    }
+}
