@@ -4,24 +4,25 @@
 
 use glam::DVec3;
 use limn_kernel::Kernel;
-use limn_kernel::{PolygonSide, Side};
+use limn_kernel::{Orientation, PolygonSide, Side};
 use limn_scene::Scene;
 
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
 use crate::options::{CullMode, OrderError};
-use crate::pieces::{Ctx, Piece, NONE};
+use crate::pieces::{Ctx, Piece, QuadHalves, NONE};
 use crate::view::{view_planes, ViewPlanes};
 use rayon::prelude::*;
 
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
 /// (between vertex positions) must be used exactly once in each direction within the
-/// object.
+/// object. The edges are sorted once by (object, undirected edge, direction): every group
+/// of one undirected edge must then be exactly its two directions.
 pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
     let n = scene.objects.len();
     let mut ok = vec![true; n];
     let mut has_faces = vec![false; n];
-    // Directed edges (object, from, to).
-    let mut edges: Vec<(u32, u32, u32)> = Vec::new();
+    // Edges (object, lower end, upper end, direction).
+    let mut edges: Vec<(u32, u32, u32, bool)> = Vec::new();
     for f in &scene.faces {
         let o = f.object as usize;
         has_faces[o] = true;
@@ -33,21 +34,22 @@ pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
             let a = canon[f.vertices[i] as usize];
             let b = canon[f.vertices[(i + 1) % m] as usize];
             if a != b {
-                edges.push((f.object, a, b));
+                edges.push((f.object, a.min(b), a.max(b), a > b));
             }
         }
     }
     edges.par_sort_unstable();
-    for (i, &(o, a, b)) in edges.iter().enumerate() {
-        let o = o as usize;
-        if !ok[o] {
-            continue;
+    let mut i = 0;
+    while i < edges.len() {
+        let (o, a, b, _) = edges[i];
+        let mut j = i + 1;
+        while j < edges.len() && (edges[j].0, edges[j].1, edges[j].2) == (o, a, b) {
+            j += 1;
         }
-        let dup = (i > 0 && edges[i - 1] == (o as u32, a, b))
-            || (i + 1 < edges.len() && edges[i + 1] == (o as u32, a, b));
-        if dup || edges.binary_search(&(o as u32, b, a)).is_err() {
-            ok[o] = false;
+        if j - i != 2 || edges[i].3 == edges[i + 1].3 {
+            ok[o as usize] = false;
         }
+        i = j;
     }
     for o in 0..n {
         ok[o] &= has_faces[o];
@@ -79,7 +81,7 @@ pub(crate) fn prepare<K: Kernel>(
     // block at a time (so that the pieces waiting to be added stay few); their pieces are
     // then added in face order, so ids do not depend on the threads.
     let mut items = Vec::new();
-    ctx.quad_halves = vec![false; scene.faces.len()];
+    ctx.quad_halves = vec![QuadHalves::No; scene.faces.len()];
     for block in (0..scene.faces.len()).step_by(FACES_PER_BLOCK) {
         let end = (block + FACES_PER_BLOCK).min(scene.faces.len());
         let shared: &Ctx<'_, K> = ctx;
@@ -145,8 +147,9 @@ struct FaceOut<K: Kernel> {
     lost_to_near: bool,
     /// Near-plane splits made.
     splits: usize,
-    /// The face is a quad converted into two polygons (sharing a diagonal).
-    quad_halves: bool,
+    /// Whether the face is a quad converted into two polygons (sharing a diagonal), and
+    /// whether they are coplanar.
+    quad_halves: QuadHalves,
     /// The pieces, each with whether it can be painted inside the picture.
     pieces: Vec<(Piece<K>, bool)>,
 }
@@ -164,9 +167,17 @@ fn prepare_face<K: Kernel>(
     scratch.clear();
     scratch.extend(face.vertices.iter().map(|&v| scene.vertices[v as usize]));
     let polys = ctx.k.face_polygons(scratch)?;
+    let quad: Option<[DVec3; 4]> = match (&scratch[..], polys.len()) {
+        (&[a, b, c, d], 2) => Some([a, b, c, d]),
+        _ => None,
+    };
     let mut out = FaceOut {
         degenerate: polys.is_empty(),
-        quad_halves: face.vertices.len() == 4 && polys.len() == 2,
+        quad_halves: if quad.is_some() {
+            QuadHalves::Untested
+        } else {
+            QuadHalves::No
+        },
         culled_all: true,
         intact: true,
         lost_to_near: false,
@@ -223,7 +234,30 @@ fn prepare_face<K: Kernel>(
             || !b.min_x.is_finite();
         out.pieces.push((piece, !outside));
     }
+    if let (Some(q), 2) = (quad, out.pieces.len()) {
+        out.quad_halves = quad_planarity(ctx, &q)?;
+    }
     Ok(out)
+}
+
+/// Whether the two triangles of a quad (its four corners, distinct, each triangle with a
+/// plane) lie in one plane: exactly when the four corners do, one orientation (the
+/// merge of fragments asks it of every quad whose halves are painted one after the
+/// other; here it is asked once, in parallel, of the quads both of whose halves are
+/// kept).
+fn quad_planarity<K: Kernel>(ctx: &Ctx<'_, K>, q: &[DVec3; 4]) -> Result<QuadHalves, OrderError> {
+    if (0..4).any(|i| (i + 1..4).any(|j| q[i] == q[j])) {
+        // A repeated corner: the halves are not the usual two; leave it to the merge.
+        return Ok(QuadHalves::Untested);
+    }
+    let mut e = Vec::with_capacity(4);
+    for &c in q {
+        e.push(ctx.k.point_exact(&ctx.k.point(c)?));
+    }
+    Ok(match ctx.k.orientation(&e[0], &e[1], &e[2], &e[3]) {
+        Orientation::Coplanar => QuadHalves::Coplanar,
+        Orientation::Positive | Orientation::Negative => QuadHalves::Bent,
+    })
 }
 
 /// Whether the near plane cuts away a part of `poly` that the camera would see: some of
@@ -256,4 +290,48 @@ fn lost_in_view<K: Kernel>(
         };
     }
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coincident::canonical_vertices;
+    use glam::{DMat3, DVec3};
+    use limn_scene::{shapes, Material, Scene};
+
+    fn cube(opacity: f64) -> Scene {
+        let mut s = Scene::default();
+        let mut mat = Material::diffuse("m", [0.5, 0.5, 0.5]);
+        mat.opacity = opacity;
+        let m = s.add_material(mat);
+        let o = s.add_object("cube");
+        shapes::cuboid(&mut s, -DVec3::ONE, DVec3::ONE, DMat3::IDENTITY, m, o).unwrap();
+        s
+    }
+
+    fn closed(s: &Scene) -> bool {
+        closed_opaque_objects(s, &canonical_vertices(s))[0]
+    }
+
+    #[test]
+    fn a_cube_is_closed_and_a_changed_one_is_not() {
+        let s = cube(1.0);
+        assert!(closed(&s));
+        assert!(!closed(&cube(0.5)), "translucent");
+        let mut open = s.clone();
+        open.faces.pop();
+        assert!(!closed(&open), "a face missing");
+        let mut twice = s.clone();
+        let f = twice.faces[0].clone();
+        twice.faces.push(f);
+        assert!(!closed(&twice), "a face used twice");
+        let mut flipped = s.clone();
+        flipped.faces[0].vertices.reverse();
+        assert!(!closed(&flipped), "a face turned over");
+        let mut separate = s.clone();
+        let o = separate.add_object("other");
+        separate.faces[5].object = o;
+        let both = closed_opaque_objects(&separate, &canonical_vertices(&separate));
+        assert_eq!(both, vec![false, false], "a face in another object");
+    }
 }
