@@ -8,7 +8,7 @@ use std::collections::HashSet;
 use limn_kernel::Kernel;
 
 use crate::occlusion::Rel;
-use crate::pieces::{Ctx, QuadHalves, NONE};
+use crate::pieces::{Ctx, NONE};
 
 /// Joins sibling pieces inside each run of consecutive pieces of the same face lying in
 /// the same plane. A non-planar face is triangulated into polygons of different planes,
@@ -22,7 +22,8 @@ pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
         let mut j = i + 1;
         while j < order.len()
             && ctx.pieces[order[j] as usize].face == face
-            && (root(ctx, order[j]) == root(ctx, order[i]) || coplanar(ctx, order[j], order[i]))
+            && (root(ctx, order[j]) == root(ctx, order[i])
+                || ctx.rel(order[j], order[i]) == Rel::Coplanar)
         {
             j += 1;
         }
@@ -34,17 +35,6 @@ pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
         i = j;
     }
     out
-}
-
-/// Whether pieces `p` and `q` of one face, split from different polygons of it, lie in one
-/// plane. The two halves of a quad were compared once in preparation; other faces' polygons
-/// are compared here.
-fn coplanar<K: Kernel>(ctx: &Ctx<'_, K>, p: u32, q: u32) -> bool {
-    match ctx.quad_halves[ctx.pieces[p as usize].face as usize] {
-        QuadHalves::Coplanar => true,
-        QuadHalves::Bent => false,
-        QuadHalves::No | QuadHalves::Untested => ctx.rel(p, q) == Rel::Coplanar,
-    }
 }
 
 /// The polygon piece `p` was split from (itself when it was not split from one): pieces

@@ -5,7 +5,7 @@
 use limn_kernel::{Kernel, Orientation, PolygonSide};
 
 use crate::geom::convex_disjoint;
-use crate::pieces::{Ctx, Piece, QuadHalves};
+use crate::pieces::{Ctx, Piece};
 
 /// A projected polygon.
 type Ring = Vec<[f64; 2]>;
@@ -133,9 +133,7 @@ impl<K: Kernel> Ctx<'_, K> {
     /// other. Exact: facing is decided exactly, and nothing else is computed.
     pub fn apart_by_construction(&self, p: u32, q: u32) -> bool {
         let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
-        pp.face == qq.face
-            && pp.eye_front == qq.eye_front
-            && self.quad_halves[pp.face as usize] != QuadHalves::No
+        pp.face == qq.face && pp.eye_front == qq.eye_front && self.quad_halves[pp.face as usize]
     }
 
     /// Whether some corner of `p` projects to exactly the same screen point as a corner

@@ -35,21 +35,6 @@ pub(crate) struct Piece<K: Kernel> {
     pub dmean: f64,
 }
 
-/// What became of an input quad: one polygon, or two triangles sharing a diagonal (a
-/// quad not exactly planar as given, or not convex), and then whether the two lie in one
-/// plane.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum QuadHalves {
-    /// Not a quad made into two triangles.
-    No,
-    /// Two triangles, not both kept for ordering (their planes were not compared).
-    Untested,
-    /// Two triangles in one plane (a quad that is planar but not convex).
-    Coplanar,
-    /// Two triangles in different planes (a quad not exactly planar as given).
-    Bent,
-}
-
 pub(crate) struct Ctx<'a, K: Kernel> {
     pub k: &'a K,
     pub eye: Eye<K::Point>,
@@ -67,8 +52,8 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     /// Whether a split was refused because of `limit`.
     pub exceeded: bool,
     /// Per input face: whether it is a quad given as two triangles that share a diagonal
-    /// (a quad not exactly planar as given, or not convex), and whether they are coplanar.
-    pub quad_halves: Vec<QuadHalves>,
+    /// (a quad not exactly planar as given, or not convex).
+    pub quad_halves: Vec<bool>,
     rng: SplitMix,
     scratch: Vec<DVec3>,
 }

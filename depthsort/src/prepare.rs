@@ -4,12 +4,12 @@
 
 use glam::DVec3;
 use limn_kernel::Kernel;
-use limn_kernel::{Orientation, PolygonSide, Side};
+use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
 use crate::options::{CullMode, OrderError};
-use crate::pieces::{Ctx, Piece, QuadHalves, NONE};
+use crate::pieces::{Ctx, Piece, NONE};
 use crate::view::{view_planes, ViewPlanes};
 use rayon::prelude::*;
 
@@ -81,7 +81,7 @@ pub(crate) fn prepare<K: Kernel>(
     // block at a time (so that the pieces waiting to be added stay few); their pieces are
     // then added in face order, so ids do not depend on the threads.
     let mut items = Vec::new();
-    ctx.quad_halves = vec![QuadHalves::No; scene.faces.len()];
+    ctx.quad_halves = vec![false; scene.faces.len()];
     for block in (0..scene.faces.len()).step_by(FACES_PER_BLOCK) {
         let end = (block + FACES_PER_BLOCK).min(scene.faces.len());
         let shared: &Ctx<'_, K> = ctx;
@@ -147,9 +147,8 @@ struct FaceOut<K: Kernel> {
     lost_to_near: bool,
     /// Near-plane splits made.
     splits: usize,
-    /// Whether the face is a quad converted into two polygons (sharing a diagonal), and
-    /// whether they are coplanar.
-    quad_halves: QuadHalves,
+    /// The face is a quad converted into two polygons (sharing a diagonal).
+    quad_halves: bool,
     /// The pieces, each with whether it can be painted inside the picture.
     pieces: Vec<(Piece<K>, bool)>,
 }
@@ -167,17 +166,9 @@ fn prepare_face<K: Kernel>(
     scratch.clear();
     scratch.extend(face.vertices.iter().map(|&v| scene.vertices[v as usize]));
     let polys = ctx.k.face_polygons(scratch)?;
-    let quad: Option<[DVec3; 4]> = match (&scratch[..], polys.len()) {
-        (&[a, b, c, d], 2) => Some([a, b, c, d]),
-        _ => None,
-    };
     let mut out = FaceOut {
         degenerate: polys.is_empty(),
-        quad_halves: if quad.is_some() {
-            QuadHalves::Untested
-        } else {
-            QuadHalves::No
-        },
+        quad_halves: face.vertices.len() == 4 && polys.len() == 2,
         culled_all: true,
         intact: true,
         lost_to_near: false,
@@ -234,30 +225,7 @@ fn prepare_face<K: Kernel>(
             || !b.min_x.is_finite();
         out.pieces.push((piece, !outside));
     }
-    if let (Some(q), 2) = (quad, out.pieces.len()) {
-        out.quad_halves = quad_planarity(ctx, &q)?;
-    }
     Ok(out)
-}
-
-/// Whether the two triangles of a quad (its four corners, distinct, each triangle with a
-/// plane) lie in one plane: exactly when the four corners do, one orientation (the
-/// merge of fragments asks it of every quad whose halves are painted one after the
-/// other; here it is asked once, in parallel, of the quads both of whose halves are
-/// kept).
-fn quad_planarity<K: Kernel>(ctx: &Ctx<'_, K>, q: &[DVec3; 4]) -> Result<QuadHalves, OrderError> {
-    if (0..4).any(|i| (i + 1..4).any(|j| q[i] == q[j])) {
-        // A repeated corner: the halves are not the usual two; leave it to the merge.
-        return Ok(QuadHalves::Untested);
-    }
-    let mut e = Vec::with_capacity(4);
-    for &c in q {
-        e.push(ctx.k.point_exact(&ctx.k.point(c)?));
-    }
-    Ok(match ctx.k.orientation(&e[0], &e[1], &e[2], &e[3]) {
-        Orientation::Coplanar => QuadHalves::Coplanar,
-        Orientation::Positive | Orientation::Negative => QuadHalves::Bent,
-    })
 }
 
 /// Whether the near plane cuts away a part of `poly` that the camera would see: some of
