@@ -6,6 +6,7 @@
 //! SVG is rasterised the same way, without anti-aliasing.
 
 mod effects;
+mod large;
 mod limn_runs;
 mod lines_bench;
 mod peers;
@@ -41,6 +42,9 @@ enum Cmd {
     /// the effects machinery on an unlit scene against the flat-only path, SVG bytes
     /// against the shading tolerance.
     Effects(EffectsArgs),
+    /// Time the large scenes (two intersecting 300×300 height fields, the 10k soups)
+    /// against gl2ps's two sorts (Markdown; no rasterising).
+    Large(large::LargeArgs),
 }
 
 #[derive(Debug, clap::Args)]
@@ -100,6 +104,10 @@ fn main() -> Result<()> {
     let a = match Cli::parse().command {
         Cmd::Table(a) => a,
         Cmd::Lines(l) => return lines_bench::run(l),
+        Cmd::Large(l) => {
+            print!("{}", large::run(l)?);
+            return Ok(());
+        }
         Cmd::Effects(e) => {
             print!("{}", effects::run(e.quick, e.runs.max(1))?);
             return Ok(());

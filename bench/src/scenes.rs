@@ -113,6 +113,16 @@ fn surfaces(n: usize) -> Scene {
     })
 }
 
+/// The large scenes timed against gl2ps alone (`limn-bench large`): two intersecting
+/// 300 × 300 height fields and the two soups of 10,000 triangles.
+pub fn large() -> Vec<BenchScene> {
+    vec![
+        framed("surfaces 2×300²", surfaces(300)),
+        framed("soup 10k", soup(10_000, 0.14)),
+        framed("soup 10k dense", soup(10_000, 0.3)),
+    ]
+}
+
 /// The scenes: all of them, or (`quick`) those that stay small.
 pub fn all(quick: bool) -> Vec<BenchScene> {
     let mut out = vec![

@@ -83,61 +83,24 @@ pub(crate) fn components(n: usize, start: &[u32], adj: &[u32]) -> Vec<Vec<u32>> 
     out
 }
 
-/// Fewer candidate pairs than this are tested on the calling thread (handing them out
-/// costs more than it saves).
-const PARALLEL_PAIRS: usize = 512;
-
-/// Candidate pairs per parallel task: below this, splitting the work costs more than it
-/// saves.
-const PAIRS_PER_TASK: usize = 64;
-
 /// Orders one set: constraints, components, and tasks for the stack.
 fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
-    let pairs = candidate_pairs(ctx, &set);
-    order_set_with(ctx, set, pairs, stack);
-}
-
-/// The pairs of `set` whose screen boxes meet (indices into `set`).
-fn candidate_pairs<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> Vec<(u32, u32)> {
-    let mut pairs = Vec::new();
-    box_pairs(ctx, set, |i, j| pairs.push((i as u32, j as u32)));
-    pairs
-}
-
-/// [`order_set`] with the candidate pairs already found.
-fn order_set_with<K: Kernel>(
-    ctx: &mut Ctx<'_, K>,
-    set: Vec<u32>,
-    pairs: Vec<(u32, u32)>,
-    stack: &mut Vec<Task>,
-) {
     let n = set.len();
-    // The pair tests only read the pieces: they run in parallel, and the results come
-    // back in the order of `pairs` whatever the number of threads.
+    // The pair tests only read the pieces: each pair is tested as the broad phase finds
+    // it (in parallel blocks for large sets), and the results come back in the order of
+    // a visit on one thread whatever the number of threads.
     let shared: &Ctx<'_, K> = ctx;
     let margin = shared.margin;
-    let test = |&(i, j): &(u32, u32)| {
-        let (p, q) = (set[i as usize], set[j as usize]);
+    let tested = box_pairs(shared, &set, |i, j, out: &mut Vec<(u32, u32, Pair)>| {
+        let (p, q) = (set[i], set[j]);
         let (pp, qq) = (&shared.pieces[p as usize], &shared.pieces[q as usize]);
-        if shared.apart_by_construction(p, q) || convex_disjoint(&pp.pts, &qq.pts, margin) {
-            None
-        } else {
-            Some(shared.pair(p, q))
+        if !shared.apart_by_construction(p, q) && !convex_disjoint(&pp.pts, &qq.pts, margin) {
+            out.push((i as u32, j as u32, shared.pair(p, q)));
         }
-    };
-    let tested: Vec<Option<Pair>> = if pairs.len() < PARALLEL_PAIRS {
-        pairs.iter().map(test).collect()
-    } else {
-        pairs
-            .par_iter()
-            .with_min_len(PAIRS_PER_TASK)
-            .map(test)
-            .collect()
-    };
-    let mut edges: Vec<(u32, u32)> = Vec::new();
-    for (&(i, j), pair) in pairs.iter().zip(tested) {
-        let Some(pair) = pair else { continue };
-        ctx.stats.candidate_pairs += 1;
+    });
+    ctx.stats.candidate_pairs += tested.len();
+    let mut edges: Vec<(u32, u32)> = Vec::with_capacity(tested.len());
+    for (i, j, pair) in tested {
         match pair {
             Pair::Free => {}
             Pair::FirstBefore => edges.push((i, j)),
@@ -216,24 +179,40 @@ fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
     conflicts >= PROBE_SAMPLE
 }
 
-/// The candidate pairs of `set`, a part of a split component, when analysing it (testing those pairs) is
-/// expected to cost less than finishing it by BSP; `None` otherwise. The cost is counted,
-/// not timed, so the decision is the same on every run, machine and thread count: the
-/// analysis costs its candidate pairs (estimated on the set itself from how its screen
-/// boxes overlap in x and in y) at [`PAIR_COST`] each;
-/// BSP costs, per level of a balanced tree, one classification per member plus the
-/// scoring of `candidates` splitters on a sample. Until the analysis pays, the set is
-/// split one BSP level further and its parts are asked again.
+/// Whether analysing `set`, a part of a split component (testing its candidate pairs), is
+/// expected to cost less than finishing it by BSP, and the density of candidate pairs
+/// (per pair of members) the answer was based on. The cost is counted, not timed, so the
+/// decision is the same on every run, machine and thread count: the analysis costs its
+/// candidate pairs (estimated on the set itself from how its screen boxes overlap in x
+/// and in y) at [`PAIR_COST`] each; BSP costs, per level of a balanced tree, one
+/// classification per member plus the scoring of `candidates` splitters on a sample.
+/// Until the analysis pays, the set is split one BSP level further and its parts are
+/// asked again.
+///
+/// The estimate itself costs a few sorts of the set. `density` is the one measured on a
+/// set this one was split from: while pairs at that density would cost more than
+/// [`SKIP_ESTIMATE`] times the BSP, the set is split without measuring (splitting a
+/// dense set changes its density by a small factor a level).
 fn analysis_pays<K: Kernel>(
     ctx: &Ctx<'_, K>,
     set: &[u32],
     candidates: usize,
-) -> Option<Vec<(u32, u32)>> {
+    density: f64,
+) -> (bool, f64) {
     let n = set.len();
     let levels = (usize::BITS - n.leading_zeros()) as usize;
-    let bsp = levels * (n + candidates * n.min(SCORE_SAMPLE));
-    (estimated_box_pairs(ctx, set) * PAIR_COST <= bsp).then(|| candidate_pairs(ctx, set))
+    let bsp = (levels * (n + candidates * n.min(SCORE_SAMPLE))) as f64;
+    let all = (n * (n - 1) / 2) as f64;
+    if density.is_finite() && density * all * PAIR_COST as f64 > SKIP_ESTIMATE * bsp {
+        return (false, density);
+    }
+    let pairs = estimated_box_pairs(ctx, set);
+    (pairs * PAIR_COST <= bsp as usize, pairs as f64 / all)
 }
+
+/// How far above the cost of BSP the pairs at an inherited density must be for a set to
+/// be split without estimating its pairs (see [`analysis_pays`]).
+const SKIP_ESTIMATE: f64 = 4.0;
 
 /// The adaptive order of `set`.
 pub(crate) fn adaptive<K: Kernel>(
@@ -258,20 +237,21 @@ pub(crate) fn adaptive<K: Kernel>(
             Task::Split(s) => {
                 let sp = choose_splitter(ctx, &s, candidates);
                 let (far, cop, near) = partition(ctx, &s, sp);
-                push_parts_as(&mut stack, far, cop, near, Task::Deep);
+                push_parts_as(&mut stack, far, cop, near, |v| Task::Deep(v, f64::INFINITY));
             }
-            Task::Deep(s) => {
+            Task::Deep(s, density) => {
                 if s.len() <= ALWAYS_ANALYSE {
                     stack.push(Task::Order(s));
                     continue;
                 }
-                if let Some(pairs) = analysis_pays(ctx, &s, candidates) {
-                    order_set_with(ctx, s, pairs, &mut stack);
+                let (pays, density) = analysis_pays(ctx, &s, candidates, density);
+                if pays {
+                    order_set(ctx, s, &mut stack);
                     continue;
                 }
                 let sp = choose_splitter(ctx, &s, candidates);
                 let (far, cop, near) = partition(ctx, &s, sp);
-                push_parts_as(&mut stack, far, cop, near, Task::Deep);
+                push_parts_as(&mut stack, far, cop, near, |v| Task::Deep(v, density));
             }
         }
     }

@@ -2,24 +2,121 @@
 //! where boxes are small against it (meshes, sparse soups); a sweep along x where large
 //! overlapping boxes would crowd the grid's cells (dense soups). Both report every meeting
 //! pair once, in an order that depends only on the boxes.
+//!
+//! A pair is handed to the caller's test as soon as it is found (while both boxes are
+//! still in cache). Large sets are visited in parallel, a block of grid cells (or of swept
+//! pairs) per task, and the tests' results are put together block by block in the order
+//! of one thread's visit, so they do not depend on the number of threads.
+
+use std::ops::Range;
 
 use limn_kernel::Kernel;
+use rayon::prelude::*;
 
 use crate::geom::{boxes_meet, Box2};
 use crate::pieces::Ctx;
 
-/// Calls `f(i, j)` (indices into `set`, i ≠ j, each unordered pair once) for every pair
-/// whose screen boxes (grown by the prefilter margin) meet.
-pub(crate) fn box_pairs<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32], f: impl FnMut(usize, usize)) {
+/// Calls `visit(i, j, out)` (indices into `set`, i ≠ j, each unordered pair once) for
+/// every pair whose screen boxes (grown by the prefilter margin) meet, and returns what
+/// the calls pushed onto `out`, in the order of a visit on one thread whatever the
+/// number of threads.
+pub(crate) fn box_pairs<K: Kernel, T: Send>(
+    ctx: &Ctx<'_, K>,
+    set: &[u32],
+    visit: impl Fn(usize, usize, &mut Vec<T>) + Sync,
+) -> Vec<T> {
     if set.len() < 2 {
-        return;
+        return Vec::new();
     }
     let m = ctx.margin;
     let boxes: Vec<Box2> = set
         .iter()
         .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
         .collect();
-    grid_pairs(&boxes, f);
+    let threads = rayon::current_num_threads() > 1;
+    let mut out = Vec::new();
+    match Plan::of(&boxes) {
+        Plan::AllPairs => all_pairs(&boxes, |i, j| visit(i, j, &mut out)),
+        Plan::Grid(g) if threads && g.work >= PARALLEL_WORK => {
+            let blocks = blocks(g.cells(), CELLS_PER_TASK);
+            let parts: Vec<Vec<T>> = blocks
+                .into_par_iter()
+                .map(|r| {
+                    let mut part = Vec::new();
+                    for c in r {
+                        g.cell_pairs(&boxes, c, |i, j| visit(i, j, &mut part));
+                    }
+                    part
+                })
+                .collect();
+            out = parts.into_iter().flatten().collect();
+            let bigs: Vec<Vec<T>> = (0..g.big.len())
+                .into_par_iter()
+                .map(|k| {
+                    let mut part = Vec::new();
+                    g.big_pairs(&boxes, k, |i, j| visit(i, j, &mut part));
+                    part
+                })
+                .collect();
+            out.extend(bigs.into_iter().flatten());
+        }
+        Plan::Grid(g) => {
+            for c in 0..g.cells() {
+                g.cell_pairs(&boxes, c, |i, j| visit(i, j, &mut out));
+            }
+            for k in 0..g.big.len() {
+                g.big_pairs(&boxes, k, |i, j| visit(i, j, &mut out));
+            }
+        }
+        Plan::Sweep { work } if threads && work >= PARALLEL_WORK => {
+            let mut pairs = Vec::new();
+            sweep_pairs(&boxes, |i, j| pairs.push((i as u32, j as u32)));
+            let parts: Vec<Vec<T>> = pairs
+                .par_chunks(PAIRS_PER_TASK)
+                .map(|chunk| {
+                    let mut part = Vec::new();
+                    for &(i, j) in chunk {
+                        visit(i as usize, j as usize, &mut part);
+                    }
+                    part
+                })
+                .collect();
+            out = parts.into_iter().flatten().collect();
+        }
+        Plan::Sweep { .. } => sweep_pairs(&boxes, |i, j| visit(i, j, &mut out)),
+    }
+    out
+}
+
+/// Pairs of boxes looked at below which a set is visited on the calling thread (handing
+/// out tasks costs more than it saves).
+const PARALLEL_WORK: usize = 2048;
+
+/// Grid cells per parallel task, at least.
+const CELLS_PER_TASK: usize = 32;
+
+/// Swept pairs per parallel task.
+const PAIRS_PER_TASK: usize = 256;
+
+/// `0..n` in consecutive blocks of about `per` (at most 256 blocks).
+fn blocks(n: usize, per: usize) -> Vec<Range<usize>> {
+    let per = per.max(n.div_ceil(256)).max(1);
+    (0..n).step_by(per).map(|s| s..(s + per).min(n)).collect()
+}
+
+/// Sets of at most this many boxes are visited all against all.
+const ALL_PAIRS_MAX: usize = 24;
+
+/// Calls `f(i, j)` (i < j) for every pair of `boxes` that meet, all against all.
+fn all_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
+    let n = boxes.len();
+    for i in 0..n {
+        for j in i + 1..n {
+            if boxes_meet(&boxes[i], &boxes[j], 0.0) {
+                f(i, j);
+            }
+        }
+    }
 }
 
 /// Pieces whose box covers more grid cells than this are tested against everything.
@@ -34,91 +131,148 @@ const CELL_PAIR_COST: usize = 4;
 /// it with the sweep (counting the sweep's pairs costs a sort).
 const CROWDED: usize = 32;
 
-/// Calls `f(i, j)` (i ≠ j, each unordered pair once) for every pair of `boxes` that
-/// meet, using a uniform grid over their extent.
-fn grid_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
-    let n = boxes.len();
-    if n <= 24 {
-        for i in 0..n {
-            for j in i + 1..n {
-                if boxes_meet(&boxes[i], &boxes[j], 0.0) {
-                    f(i, j);
-                }
+/// How the pairs of one set of boxes are found.
+enum Plan {
+    /// Few boxes: all against all.
+    AllPairs,
+    /// A uniform grid.
+    Grid(Grid),
+    /// A sweep along x, looking at `work` pairs.
+    Sweep { work: usize },
+}
+
+/// A uniform grid over a set of boxes: each small box listed in every cell it covers,
+/// the large ones apart.
+struct Grid {
+    /// The extent of all boxes.
+    u: Box2,
+    gx: usize,
+    gy: usize,
+    /// Cell width and height.
+    cw: f64,
+    ch: f64,
+    /// `cells[start[c]..start[c + 1]]` lists the boxes in cell `c`.
+    start: Vec<u32>,
+    cells: Vec<u32>,
+    /// Boxes covering too many cells, tested against every box.
+    big: Vec<usize>,
+    is_big: Vec<bool>,
+    /// Pairs looked at in cells, and by the large boxes.
+    work: usize,
+}
+
+impl Plan {
+    /// The cheaper way to find the pairs of `boxes` that meet.
+    fn of(boxes: &[Box2]) -> Plan {
+        let n = boxes.len();
+        if n <= ALL_PAIRS_MAX {
+            return Plan::AllPairs;
+        }
+        let mut u = Box2::EMPTY;
+        let (mut sw, mut sh) = (0.0, 0.0);
+        for b in boxes {
+            u = u.union(b);
+            sw += b.width();
+            sh += b.height();
+        }
+        let (uw, uh) = (u.width().max(1e-300), u.height().max(1e-300));
+        // Cells about the size of an average box, at most ~2n cells in all.
+        let avg = ((sw / n as f64) * (sh / n as f64)).sqrt().max(1e-300);
+        let mut gx = ((uw / avg).ceil() as usize).clamp(1, 4096);
+        let mut gy = ((uh / avg).ceil() as usize).clamp(1, 4096);
+        while gx * gy > 2 * n + 16 {
+            gx = (gx / 2).max(1);
+            gy = (gy / 2).max(1);
+        }
+        let mut g = Grid {
+            u,
+            gx,
+            gy,
+            cw: uw / gx as f64,
+            ch: uh / gy as f64,
+            start: vec![0u32; gx * gy + 1],
+            cells: Vec::new(),
+            big: Vec::new(),
+            is_big: vec![false; n],
+            work: 0,
+        };
+        let mut ranges = Vec::with_capacity(n);
+        for (i, b) in boxes.iter().enumerate() {
+            let (x0, x1, y0, y1) = (
+                g.cell_x(b.min_x),
+                g.cell_x(b.max_x),
+                g.cell_y(b.min_y),
+                g.cell_y(b.max_y),
+            );
+            if (x1 - x0 + 1) * (y1 - y0 + 1) > MAX_CELLS_PER_ITEM {
+                g.big.push(i);
+                g.is_big[i] = true;
+                ranges.push(None);
+                continue;
             }
-        }
-        return;
-    }
-    let mut u = Box2::EMPTY;
-    let (mut sw, mut sh) = (0.0, 0.0);
-    for b in boxes {
-        u = u.union(b);
-        sw += b.width();
-        sh += b.height();
-    }
-    let (uw, uh) = (u.width().max(1e-300), u.height().max(1e-300));
-    // Cells about the size of an average box, at most ~2n cells in all.
-    let avg = ((sw / n as f64) * (sh / n as f64)).sqrt().max(1e-300);
-    let mut gx = ((uw / avg).ceil() as usize).clamp(1, 4096);
-    let mut gy = ((uh / avg).ceil() as usize).clamp(1, 4096);
-    while gx * gy > 2 * n + 16 {
-        gx = (gx / 2).max(1);
-        gy = (gy / 2).max(1);
-    }
-    let (cw, ch) = (uw / gx as f64, uh / gy as f64);
-    let cell_x = |x: f64| (((x - u.min_x) / cw) as isize).clamp(0, gx as isize - 1) as usize;
-    let cell_y = |y: f64| (((y - u.min_y) / ch) as isize).clamp(0, gy as isize - 1) as usize;
-    let mut big = Vec::new();
-    let mut counts = vec![0u32; gx * gy + 1];
-    let mut ranges = Vec::with_capacity(n);
-    for (i, b) in boxes.iter().enumerate() {
-        let (x0, x1, y0, y1) = (
-            cell_x(b.min_x),
-            cell_x(b.max_x),
-            cell_y(b.min_y),
-            cell_y(b.max_y),
-        );
-        if (x1 - x0 + 1) * (y1 - y0 + 1) > MAX_CELLS_PER_ITEM {
-            big.push(i);
-            ranges.push(None);
-            continue;
-        }
-        ranges.push(Some((x0, x1, y0, y1)));
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                counts[y * gx + x + 1] += 1;
-            }
-        }
-    }
-    // Large boxes crowd many cells, and a pair is looked at in every cell both cover:
-    // when that costs more than sweeping along x, sweep instead (a pair in a cell costs
-    // about [`CELL_PAIR_COST`] times a pair the sweep passes over).
-    let cell_work: usize = counts
-        .iter()
-        .map(|&c| (c as usize) * (c as usize) / 2)
-        .sum::<usize>()
-        + big.len() * n;
-    if cell_work > CROWDED * n && cell_work * CELL_PAIR_COST > x_overlaps(boxes) + n {
-        return sweep_pairs(boxes, f);
-    }
-    for c in 1..counts.len() {
-        counts[c] += counts[c - 1];
-    }
-    let mut fill = counts.clone();
-    let mut cells = vec![0u32; counts[gx * gy] as usize];
-    for (i, r) in ranges.iter().enumerate() {
-        if let Some((x0, x1, y0, y1)) = *r {
+            ranges.push(Some((x0, x1, y0, y1)));
             for y in y0..=y1 {
                 for x in x0..=x1 {
-                    let c = y * gx + x;
-                    cells[fill[c] as usize] = i as u32;
-                    fill[c] += 1;
+                    g.start[y * gx + x + 1] += 1;
                 }
             }
         }
+        // Large boxes crowd many cells, and a pair is looked at in every cell both cover:
+        // when that costs more than sweeping along x, sweep instead (a pair in a cell costs
+        // about [`CELL_PAIR_COST`] times a pair the sweep passes over).
+        g.work = g
+            .start
+            .iter()
+            .map(|&c| (c as usize) * (c as usize) / 2)
+            .sum::<usize>()
+            + g.big.len() * n;
+        if g.work > CROWDED * n {
+            let swept = x_overlaps(boxes);
+            if g.work * CELL_PAIR_COST > swept + n {
+                return Plan::Sweep { work: swept };
+            }
+        }
+        for c in 1..g.start.len() {
+            g.start[c] += g.start[c - 1];
+        }
+        let mut fill = g.start.clone();
+        g.cells = vec![0u32; g.start[gx * gy] as usize];
+        for (i, r) in ranges.iter().enumerate() {
+            if let Some((x0, x1, y0, y1)) = *r {
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        let c = y * gx + x;
+                        g.cells[fill[c] as usize] = i as u32;
+                        fill[c] += 1;
+                    }
+                }
+            }
+        }
+        Plan::Grid(g)
     }
-    for c in 0..gx * gy {
-        let list = &cells[counts[c] as usize..counts[c + 1] as usize];
-        let (cx, cy) = (c % gx, c / gx);
+}
+
+impl Grid {
+    /// The column of x (clamped to the grid).
+    fn cell_x(&self, x: f64) -> usize {
+        (((x - self.u.min_x) / self.cw) as isize).clamp(0, self.gx as isize - 1) as usize
+    }
+
+    /// The row of y (clamped to the grid).
+    fn cell_y(&self, y: f64) -> usize {
+        (((y - self.u.min_y) / self.ch) as isize).clamp(0, self.gy as isize - 1) as usize
+    }
+
+    /// How many cells the grid has.
+    fn cells(&self) -> usize {
+        self.gx * self.gy
+    }
+
+    /// Calls `f(i, j)` for the pairs of small boxes that meet with the corner of their
+    /// overlap in cell `c` (so each such pair in exactly one cell).
+    fn cell_pairs(&self, boxes: &[Box2], c: usize, mut f: impl FnMut(usize, usize)) {
+        let list = &self.cells[self.start[c] as usize..self.start[c + 1] as usize];
+        let (cx, cy) = (c % self.gx, c / self.gx);
         for (a, &i) in list.iter().enumerate() {
             for &j in &list[a + 1..] {
                 let (bi, bj) = (&boxes[i as usize], &boxes[j as usize]);
@@ -126,19 +280,21 @@ fn grid_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
                     continue;
                 }
                 // Report the pair only in the cell holding the corner of the overlap.
-                if cell_x(bi.min_x.max(bj.min_x)) == cx && cell_y(bi.min_y.max(bj.min_y)) == cy {
+                if self.cell_x(bi.min_x.max(bj.min_x)) == cx
+                    && self.cell_y(bi.min_y.max(bj.min_y)) == cy
+                {
                     f(i as usize, j as usize);
                 }
             }
         }
     }
-    let mut is_big = vec![false; n];
-    for &i in &big {
-        is_big[i] = true;
-    }
-    for &i in &big {
-        for j in 0..n {
-            if j != i && (!is_big[j] || j > i) && boxes_meet(&boxes[i], &boxes[j], 0.0) {
+
+    /// Calls `f(i, j)` for the pairs of the `k`-th large box `i` with every box it meets
+    /// (a pair of large boxes once, from the earlier one).
+    fn big_pairs(&self, boxes: &[Box2], k: usize, mut f: impl FnMut(usize, usize)) {
+        let i = self.big[k];
+        for j in 0..boxes.len() {
+            if j != i && (!self.is_big[j] || j > i) && boxes_meet(&boxes[i], &boxes[j], 0.0) {
                 f(i, j);
             }
         }
@@ -218,10 +374,26 @@ mod tests {
         if sweep {
             sweep_pairs(boxes, push);
         } else {
-            grid_pairs(boxes, push);
+            planned_pairs(boxes, push);
         }
         v.sort_unstable();
         v
+    }
+
+    /// The pairs as [`box_pairs`] visits them on one thread.
+    fn planned_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
+        match Plan::of(boxes) {
+            Plan::AllPairs => all_pairs(boxes, f),
+            Plan::Grid(g) => {
+                for c in 0..g.cells() {
+                    g.cell_pairs(boxes, c, &mut f);
+                }
+                for k in 0..g.big.len() {
+                    g.big_pairs(boxes, k, &mut f);
+                }
+            }
+            Plan::Sweep { .. } => sweep_pairs(boxes, f),
+        }
     }
 
     fn random_boxes(n: usize, size: f64, seed: u64) -> Vec<Box2> {

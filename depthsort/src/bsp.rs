@@ -91,8 +91,9 @@ pub(crate) enum Task {
     Emit(Vec<u32>),
     /// A part of a split component: analyse it when that is expected to cost less than
     /// finishing it by BSP, split it further otherwise (analysing a set that is nearly
-    /// all one cycle is wasted work).
-    Deep(Vec<u32>),
+    /// all one cycle is wasted work). With the density of candidate pairs last estimated
+    /// on a set it was split from (pairs per pair of members; infinite when none was).
+    Deep(Vec<u32>, f64),
 }
 
 /// Pushes the three parts of a partition so that they are processed far, plane, near.
@@ -125,7 +126,7 @@ pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: us
     while let Some(t) = stack.pop() {
         match t {
             Task::Emit(v) => out.extend(v),
-            Task::Order(s) | Task::Split(s) | Task::Deep(s) => {
+            Task::Order(s) | Task::Split(s) | Task::Deep(s, _) => {
                 if s.len() <= 1 {
                     out.extend(s);
                     continue;

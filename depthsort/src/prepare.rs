@@ -15,13 +15,14 @@ use rayon::prelude::*;
 
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
 /// (between vertex positions) must be used exactly once in each direction within the
-/// object.
+/// object. The edges are sorted once by (object, undirected edge, direction): every group
+/// of one undirected edge must then be exactly its two directions.
 pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
     let n = scene.objects.len();
     let mut ok = vec![true; n];
     let mut has_faces = vec![false; n];
-    // Directed edges (object, from, to).
-    let mut edges: Vec<(u32, u32, u32)> = Vec::new();
+    // Edges (object, lower end, upper end, direction).
+    let mut edges: Vec<(u32, u32, u32, bool)> = Vec::new();
     for f in &scene.faces {
         let o = f.object as usize;
         has_faces[o] = true;
@@ -33,21 +34,22 @@ pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
             let a = canon[f.vertices[i] as usize];
             let b = canon[f.vertices[(i + 1) % m] as usize];
             if a != b {
-                edges.push((f.object, a, b));
+                edges.push((f.object, a.min(b), a.max(b), a > b));
             }
         }
     }
     edges.par_sort_unstable();
-    for (i, &(o, a, b)) in edges.iter().enumerate() {
-        let o = o as usize;
-        if !ok[o] {
-            continue;
+    let mut i = 0;
+    while i < edges.len() {
+        let (o, a, b, _) = edges[i];
+        let mut j = i + 1;
+        while j < edges.len() && (edges[j].0, edges[j].1, edges[j].2) == (o, a, b) {
+            j += 1;
         }
-        let dup = (i > 0 && edges[i - 1] == (o as u32, a, b))
-            || (i + 1 < edges.len() && edges[i + 1] == (o as u32, a, b));
-        if dup || edges.binary_search(&(o as u32, b, a)).is_err() {
-            ok[o] = false;
+        if j - i != 2 || edges[i].3 == edges[i + 1].3 {
+            ok[o as usize] = false;
         }
+        i = j;
     }
     for o in 0..n {
         ok[o] &= has_faces[o];
@@ -256,4 +258,48 @@ fn lost_in_view<K: Kernel>(
         };
     }
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coincident::canonical_vertices;
+    use glam::{DMat3, DVec3};
+    use limn_scene::{shapes, Material, Scene};
+
+    fn cube(opacity: f64) -> Scene {
+        let mut s = Scene::default();
+        let mut mat = Material::diffuse("m", [0.5, 0.5, 0.5]);
+        mat.opacity = opacity;
+        let m = s.add_material(mat);
+        let o = s.add_object("cube");
+        shapes::cuboid(&mut s, -DVec3::ONE, DVec3::ONE, DMat3::IDENTITY, m, o).unwrap();
+        s
+    }
+
+    fn closed(s: &Scene) -> bool {
+        closed_opaque_objects(s, &canonical_vertices(s))[0]
+    }
+
+    #[test]
+    fn a_cube_is_closed_and_a_changed_one_is_not() {
+        let s = cube(1.0);
+        assert!(closed(&s));
+        assert!(!closed(&cube(0.5)), "translucent");
+        let mut open = s.clone();
+        open.faces.pop();
+        assert!(!closed(&open), "a face missing");
+        let mut twice = s.clone();
+        let f = twice.faces[0].clone();
+        twice.faces.push(f);
+        assert!(!closed(&twice), "a face used twice");
+        let mut flipped = s.clone();
+        flipped.faces[0].vertices.reverse();
+        assert!(!closed(&flipped), "a face turned over");
+        let mut separate = s.clone();
+        let o = separate.add_object("other");
+        separate.faces[5].object = o;
+        let both = closed_opaque_objects(&separate, &canonical_vertices(&separate));
+        assert_eq!(both, vec![false, false], "a face in another object");
+    }
 }
