@@ -39,10 +39,12 @@ fn lit_sphere(rings: u32, segments: u32) -> Scene {
         Light {
             kind: LightKind::Point(DVec3::new(2.0, 3.0, 4.0)),
             color: [1.0; 3],
+            shadows: false,
         },
         Light {
             kind: LightKind::Ambient,
             color: [0.3; 3],
+            shadows: false,
         },
     ];
     s
