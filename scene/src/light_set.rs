@@ -41,6 +41,11 @@ impl LightSet {
         (0..Self::CAPACITY).filter(move |&i| self.contains(i))
     }
 
+    /// The set as bits (bit `i` for light `i`).
+    pub fn bits(self) -> u64 {
+        self.0
+    }
+
     /// How many lights the set names.
     pub fn len(self) -> usize {
         self.0.count_ones() as usize

@@ -90,9 +90,9 @@ impl LightView {
         };
         for &c in corners {
             let (s, z) = self.project(c)?;
-            for i in 0..2 {
-                e.lo[i] = e.lo[i].min(s[i]);
-                e.hi[i] = e.hi[i].max(s[i]);
+            for (i, v) in s.into_iter().enumerate() {
+                e.lo[i] = e.lo[i].min(v);
+                e.hi[i] = e.hi[i].max(v);
             }
             e.near = e.near.min(z);
             e.far = e.far.max(z);
