@@ -54,7 +54,11 @@ fn render(dir: &std::path::Path, out: &str, extra: &[&str]) -> (Vec<u8>, serde_j
 }
 
 fn has_shadows(v: &serde_json::Value) -> bool {
-    v["effects"].as_array().unwrap().iter().any(|e| e == "shadows")
+    v["effects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|e| e == "shadows")
 }
 
 #[test]
@@ -131,7 +135,16 @@ fn bad_shadow_values_are_errors_with_file_and_line() {
     }
     let run = limn(
         d.path(),
-        &["render", "t.obj", "-o", "x.png", "--method", "zbuffer", "--shadow-bias", "-1"],
+        &[
+            "render",
+            "t.obj",
+            "-o",
+            "x.png",
+            "--method",
+            "zbuffer",
+            "--shadow-bias",
+            "-1",
+        ],
     );
     assert_eq!(run.code, 2, "{}", run.stderr);
 }

@@ -440,6 +440,34 @@ impl Plane {
         None
     }
 
+    /// A point and a direction that define both planes, when there are (both planes
+    /// contain one point and the same direction, as the planes through a light at
+    /// infinity and two edges meeting at a corner): the line through the point along the
+    /// direction is the planes' intersection (if the planes differ).
+    pub(crate) fn common_ray(&self, other: &Plane) -> Option<([f64; 3], [f64; 3])> {
+        let (PlaneDef::Along { p, q, d }, PlaneDef::Along { d: e, .. }) =
+            (self.data.def, other.data.def)
+        else {
+            return None;
+        };
+        if d.map(f64::to_bits) != e.map(f64::to_bits) {
+            return None;
+        }
+        [p, q]
+            .into_iter()
+            .find(|x| other.data.def.defined_by(x))
+            .map(|x| (x, d))
+    }
+
+    /// Whether the plane contains the direction `d` (is parallel to it), exactly; known
+    /// without arithmetic for a plane defined along `d`.
+    pub(crate) fn contains_direction(&self, d: [f64; 3]) -> bool {
+        match self.data.def {
+            PlaneDef::Along { d: e, .. } if e.map(f64::to_bits) == d.map(f64::to_bits) => true,
+            _ => self.side_of_direction(d) == Side::On,
+        }
+    }
+
     /// The exact side of a point given by its f64 coordinates.
     pub fn side_of(&self, x: [f64; 3]) -> Side {
         self.side_of_counted(x, &mut 0)

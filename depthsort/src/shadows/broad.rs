@@ -194,6 +194,23 @@ impl Grid {
         )
     }
 
+    /// Occluder `i`'s extent.
+    pub fn extent(&self, i: u32) -> Extent {
+        self.extents[i as usize]
+    }
+
+    /// Whether an occluder of extent `o` may shadow a part of extent `r` (boxes meet and
+    /// the occluder reaches nearer to the light than the part's farthest point, within
+    /// the margins).
+    pub fn may_shadow(&self, o: Extent, r: &Extent) -> bool {
+        let m = self.margin;
+        o.lo[0] <= r.hi[0] + m
+            && r.lo[0] <= o.hi[0] + m
+            && o.lo[1] <= r.hi[1] + m
+            && r.lo[1] <= o.hi[1] + m
+            && o.near <= r.far + self.dmargin
+    }
+
     /// The occluders whose box meets `r`'s and which reach nearer to the light than
     /// `r`'s farthest point, each once, in increasing index order (`seen` is working
     /// space of one flag per occluder, left all `false`).
@@ -201,7 +218,6 @@ impl Grid {
         out.clear();
         seen.resize(self.extents.len(), false);
         let (x0, x1, y0, y1) = self.range(r);
-        let m = self.margin;
         for y in y0..=y1 {
             for x in x0..=x1 {
                 for &i in &self.cells[y * self.n + x] {
@@ -209,13 +225,7 @@ impl Grid {
                         continue;
                     }
                     seen[i as usize] = true;
-                    let e = &self.extents[i as usize];
-                    if e.lo[0] <= r.hi[0] + m
-                        && r.lo[0] <= e.hi[0] + m
-                        && e.lo[1] <= r.hi[1] + m
-                        && r.lo[1] <= e.hi[1] + m
-                        && e.near <= r.far + self.dmargin
-                    {
+                    if self.may_shadow(self.extents[i as usize], r) {
                         out.push(i);
                     }
                 }

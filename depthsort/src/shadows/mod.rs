@@ -28,7 +28,7 @@ use rayon::prelude::*;
 use crate::options::OrderError;
 use crate::pieces::Ctx;
 use broad::{Extent, Grid, LightView};
-use volume::{clip, volume, Clip, Source, Volume};
+use volume::{clip, volume, Clip, SidePlanes, Source, Volume};
 
 /// One shadow-casting light with its occluders' volumes and their broad phase.
 struct Caster<K: Kernel> {
@@ -47,15 +47,23 @@ pub(crate) type Parts<P> = Vec<(P, LightSet)>;
 
 /// How a receiver's cuts are kept until they are joined again.
 enum Node<P> {
-    Leaf(P, LightSet),
-    /// A polygon cut into parts that tile it.
-    Cut(P, Vec<Node<P>>),
+    /// A part, the lights it is in the shadow of, and its extent seen from the light
+    /// being cast (`None`: not known, or no view).
+    Leaf(P, LightSet, Option<Extent>),
+    /// A polygon cut into parts that tile it, and its extent seen from the light being
+    /// cast (a visit skips the parts when no volume can reach that extent).
+    Cut(P, Vec<Node<P>>, Option<Extent>),
+    /// Nothing: a node's place while it is rebuilt (never left in a tree).
+    Taken,
 }
 
+/// Fully shadowed cuts are joined every this many occluders, so that a receiver under
+/// thousands of occluders keeps a small tree.
+const JOIN_EVERY: usize = 32;
+
 /// Splits every piece of `order` along the shadows of the lights that ask for them
-/// (`lit` says, per face, whether its material is lit at all: `illum 0` faces keep their
-/// colour and are not split). Returns one list of parts per piece, in order, and the
-/// number of exact clips made.
+/// (faces of `illum 0` materials keep their colour and are not split). Returns one list
+/// of parts per piece, in order.
 pub(crate) fn shadow_parts<K: Kernel>(
     ctx: &Ctx<'_, K>,
     scene: &Scene,
@@ -81,40 +89,72 @@ pub(crate) fn shadow_parts<K: Kernel>(
                 } else {
                     Side::Back
                 };
-                let mut node = Node::Leaf(piece.poly.clone(), LightSet::EMPTY);
+                let mut node = Node::Leaf(piece.poly.clone(), LightSet::EMPTY, None);
                 for c in &casters {
                     if c.source.side(ctx.k, &piece.plane) != seen_side {
-                        node = node.map_leaves(&mut |p, s| Node::Leaf(p, s.with(c.index)));
+                        node.visit(&|_| false, &mut |_, s, _| {
+                            s.insert(c.index);
+                            None
+                        });
                         continue;
                     }
-                    corners.clear();
-                    ctx.k.vertices_world(&piece.poly, corners);
-                    match (&c.grid, c.view.extent(corners)) {
+                    let extent = |p: &K::Polygon, corners: &mut Vec<DVec3>| {
+                        corners.clear();
+                        ctx.k.vertices_world(p, corners);
+                        c.view.extent(corners)
+                    };
+                    // Every leaf's extent from this light (cuts made for an earlier light
+                    // have none from this one).
+                    node.forget_cut_extents();
+                    node.visit(&|_| false, &mut |p, _, e| {
+                        *e = extent(p, corners);
+                        None
+                    });
+                    let whole = extent(&piece.poly, corners);
+                    match (&c.grid, whole) {
                         (Some(grid), Some(e)) => grid.candidates(&e, seen, cand),
                         _ => {
                             cand.clear();
                             cand.extend(0..c.volumes.len() as u32);
                         }
                     }
-                    for &q in cand.iter() {
+                    for (n, &q) in cand.iter().enumerate() {
                         let vol = &c.volumes[q as usize];
-                        node = node.map_leaves(&mut |p, s| {
+                        let ve = c.grid.as_ref().map(|g| (g, g.extent(q)));
+                        let skip = |e: &Extent| ve.is_some_and(|(g, ve)| !g.may_shadow(ve, e));
+                        node.visit(&skip, &mut |p, s, e| {
                             if s.contains(c.index) {
-                                return Node::Leaf(p, s);
+                                return None;
                             }
-                            match clip(ctx.k, &p, vol) {
-                                Clip::Outside => Node::Leaf(p, s),
-                                Clip::Inside => Node::Leaf(p, s.with(c.index)),
+                            if let (Some((g, ve)), Some(e)) = (ve, e.as_ref()) {
+                                if !g.may_shadow(ve, e) {
+                                    return None;
+                                }
+                            }
+                            match clip(ctx.k, p, vol) {
+                                Clip::Outside => None,
+                                Clip::Inside => {
+                                    s.insert(c.index);
+                                    None
+                                }
                                 Clip::Split { inside, outside } => {
-                                    let mut kids: Vec<Node<K::Polygon>> =
-                                        outside.into_iter().map(|o| Node::Leaf(o, s)).collect();
-                                    kids.push(Node::Leaf(inside, s.with(c.index)));
-                                    Node::Cut(p, kids)
+                                    let mut kids: Vec<Node<K::Polygon>> = outside
+                                        .into_iter()
+                                        .map(|o| {
+                                            let e = extent(&o, corners);
+                                            Node::Leaf(o, *s, e)
+                                        })
+                                        .collect();
+                                    kids.push(Node::Leaf(inside, s.with(c.index), None));
+                                    Some(kids)
                                 }
                             }
                         });
+                        if n % JOIN_EVERY == JOIN_EVERY - 1 {
+                            node.join();
+                        }
                     }
-                    node = node.joined();
+                    node.join();
                 }
                 let mut parts = Vec::new();
                 node.into_parts(&mut parts);
@@ -150,15 +190,14 @@ fn casters<K: Kernel>(k: &K, scene: &Scene) -> Result<Vec<Caster<K>>, OrderError
             LightKind::Directional(d) => (Source::Toward(d), LightView::parallel(d)),
             LightKind::Ambient | LightKind::Headlight => continue,
         };
-        let built: Vec<(Volume<K::Plane>, Option<Extent>)> = polys
-            .par_iter()
-            .map_init(Vec::new, |corners, poly| {
-                Ok(volume(k, poly, &source, corners)?.map(|v| (v, view.extent(corners))))
-            })
-            .collect::<Result<Vec<_>, OrderError>>()?
-            .into_iter()
-            .flatten()
-            .collect();
+        let mut shared = SidePlanes::new();
+        let mut corners = Vec::new();
+        let mut built: Vec<(Volume<K::Plane>, Option<Extent>)> = Vec::with_capacity(polys.len());
+        for poly in &polys {
+            if let Some(v) = volume(k, poly, &source, &mut corners, &mut shared)? {
+                built.push((v, view.extent(&corners)));
+            }
+        }
         let grid = if built.iter().all(|(_, e)| e.is_some()) {
             Some(Grid::new(built.iter().filter_map(|(_, e)| *e).collect()))
         } else {
@@ -176,34 +215,52 @@ fn casters<K: Kernel>(k: &K, scene: &Scene) -> Result<Vec<Caster<K>>, OrderError
 }
 
 impl<P> Node<P> {
-    /// Replaces every leaf by what `f` makes of it.
-    fn map_leaves(self, f: &mut impl FnMut(P, LightSet) -> Node<P>) -> Node<P> {
+    /// Calls `f` on every leaf (its polygon, lights and extent, which `f` may change);
+    /// a leaf for which `f` returns parts becomes a cut into them.
+    /// Cuts whose extent `skip` rejects are not entered.
+    fn visit(
+        &mut self,
+        skip: &impl Fn(&Extent) -> bool,
+        f: &mut impl FnMut(&P, &mut LightSet, &mut Option<Extent>) -> Option<Vec<Node<P>>>,
+    ) {
         match self {
-            Node::Leaf(p, s) => f(p, s),
-            Node::Cut(p, kids) => Node::Cut(p, kids.into_iter().map(|k| k.map_leaves(f)).collect()),
+            Node::Cut(_, _, Some(e)) if skip(e) => {}
+            Node::Cut(_, kids, _) => kids.iter_mut().for_each(|k| k.visit(skip, f)),
+            Node::Taken => {}
+            Node::Leaf(p, s, e) => {
+                if let Some(kids) = f(p, s, e) {
+                    if let Node::Leaf(p, _, e) = std::mem::replace(self, Node::Taken) {
+                        *self = Node::Cut(p, kids, e);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Drops the extents of every cut (they were seen from another light).
+    fn forget_cut_extents(&mut self) {
+        if let Node::Cut(_, kids, e) = self {
+            *e = None;
+            kids.iter_mut().for_each(Node::forget_cut_extents);
         }
     }
 
     /// Joins cut polygons whose parts all ended up with the same lights again.
-    fn joined(self) -> Node<P> {
-        match self {
-            Node::Leaf(..) => self,
-            Node::Cut(p, kids) => {
-                let kids: Vec<Node<P>> = kids.into_iter().map(Node::joined).collect();
-                let first = match &kids[0] {
-                    Node::Leaf(_, s) => Some(*s),
-                    Node::Cut(..) => None,
-                };
-                match first {
-                    Some(s)
-                        if kids
-                            .iter()
-                            .all(|k| matches!(k, Node::Leaf(_, t) if *t == s)) =>
-                    {
-                        Node::Leaf(p, s)
-                    }
-                    _ => Node::Cut(p, kids),
-                }
+    fn join(&mut self) {
+        let Node::Cut(_, kids, _) = self else {
+            return;
+        };
+        kids.iter_mut().for_each(Node::join);
+        let first = match &kids[0] {
+            Node::Leaf(_, s, _) => *s,
+            _ => return,
+        };
+        if kids
+            .iter()
+            .all(|k| matches!(k, Node::Leaf(_, t, _) if *t == first))
+        {
+            if let Node::Cut(p, ..) = std::mem::replace(self, Node::Taken) {
+                *self = Node::Leaf(p, first, None);
             }
         }
     }
@@ -211,8 +268,9 @@ impl<P> Node<P> {
     /// The leaves, in order.
     fn into_parts(self, out: &mut Vec<(P, LightSet)>) {
         match self {
-            Node::Leaf(p, s) => out.push((p, s)),
-            Node::Cut(_, kids) => kids.into_iter().for_each(|k| k.into_parts(out)),
+            Node::Leaf(p, s, _) => out.push((p, s)),
+            Node::Cut(_, kids, _) => kids.into_iter().for_each(|k| k.into_parts(out)),
+            Node::Taken => {}
         }
     }
 }

@@ -9,6 +9,8 @@
 //! these planes is defined by input points and the light, so every side a clip decides
 //! is exact; the pieces it cuts have implicit vertices, never rounded ones.
 
+use std::collections::HashMap;
+
 use glam::DVec3;
 use limn_kernel::{Kernel, PolygonSide, Side};
 
@@ -47,6 +49,45 @@ pub(crate) struct Volume<P> {
     pub bounds: Vec<Bound<P>>,
 }
 
+/// The side planes of the occluders, one per edge: occluders sharing an edge share its
+/// plane (the same plane value, so that a vertex cut by it is known to lie on it without
+/// arithmetic when the neighbour's volume classifies it).
+pub(crate) struct SidePlanes<P> {
+    planes: HashMap<([u64; 3], [u64; 3]), P>,
+}
+
+impl<P: Clone> SidePlanes<P> {
+    /// No planes yet.
+    pub fn new() -> Self {
+        SidePlanes {
+            planes: HashMap::new(),
+        }
+    }
+
+    /// The plane through the light and the edge `a b`, made once per edge (its
+    /// orientation is that of the edge's corners in a fixed order).
+    fn plane<K: Kernel<Plane = P>>(
+        &mut self,
+        k: &K,
+        light: &Source<K::Point>,
+        a: DVec3,
+        b: DVec3,
+    ) -> Result<P, OrderError> {
+        let key = |v: DVec3| v.to_array().map(f64::to_bits);
+        let (lo, hi) = if key(a) <= key(b) { (a, b) } else { (b, a) };
+        let entry = (key(lo), key(hi));
+        if let Some(p) = self.planes.get(&entry) {
+            return Ok(p.clone());
+        }
+        let plane = match light {
+            Source::At(l, _) => k.plane_through_points(*l, lo, hi)?,
+            Source::Toward(d) => k.plane_along(lo, hi, *d)?,
+        };
+        self.planes.insert(entry, plane.clone());
+        Ok(plane)
+    }
+}
+
 /// What a clip by a volume leaves of a polygon.
 #[derive(Debug)]
 pub(crate) enum Clip<P> {
@@ -66,6 +107,7 @@ pub(crate) fn volume<K: Kernel>(
     poly: &K::Polygon,
     light: &Source<K::Point>,
     corners: &mut Vec<DVec3>,
+    shared: &mut SidePlanes<K::Plane>,
 ) -> Result<Option<Volume<K::Plane>>, OrderError> {
     let support = k.support(poly);
     let beyond = match light.side(k, &support) {
@@ -83,10 +125,7 @@ pub(crate) fn volume<K: Kernel>(
     });
     for i in 0..n {
         let (a, b) = (corners[i], corners[(i + 1) % n]);
-        let plane = match light {
-            Source::At(l, _) => k.plane_through_points(*l, a, b)?,
-            Source::Toward(d) => k.plane_along(a, b, *d)?,
-        };
+        let plane = shared.plane(k, light, a, b)?;
         // The inside is where the occluder's other corners are.
         let mut inside = Side::On;
         for j in 2..n {
