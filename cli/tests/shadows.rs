@@ -148,3 +148,18 @@ fn bad_shadow_values_are_errors_with_file_and_line() {
     );
     assert_eq!(run.code, 2, "{}", run.stderr);
 }
+
+#[test]
+fn check_compares_shadows_with_the_exact_shadow_rays() {
+    let d = tempdir();
+    scene(d.path(), "shadows = true");
+    let run = limn(d.path(), &["check", "s.toml", "--against", "raycast"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let v: serde_json::Value = serde_json::from_slice(&run.stdout).unwrap();
+    assert_eq!(v["shadows"]["reference"], "exact shadow rays");
+    assert_eq!(v["shadows"]["mismatches_outside_band"], 0);
+    scene(d.path(), "");
+    let run = limn(d.path(), &["check", "s.toml"]);
+    let v: serde_json::Value = serde_json::from_slice(&run.stdout).unwrap();
+    assert!(v["shadows"].is_null());
+}
