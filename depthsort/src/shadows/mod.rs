@@ -57,10 +57,6 @@ enum Node<P> {
     Taken,
 }
 
-/// Fully shadowed cuts are joined every this many occluders, so that a receiver under
-/// thousands of occluders keeps a small tree.
-const JOIN_EVERY: usize = 32;
-
 /// Splits every piece of `order` along the shadows of the lights that ask for them
 /// (faces of `illum 0` materials keep their colour and are not split). Returns one list
 /// of parts per piece, in order.
@@ -118,7 +114,7 @@ pub(crate) fn shadow_parts<K: Kernel>(
                             cand.extend(0..c.volumes.len() as u32);
                         }
                     }
-                    for (n, &q) in cand.iter().enumerate() {
+                    for &q in cand.iter() {
                         let vol = &c.volumes[q as usize];
                         let ve = c.grid.as_ref().map(|g| (g, g.extent(q)));
                         let skip = |e: &Extent| ve.is_some_and(|(g, ve)| !g.may_shadow(ve, e));
@@ -150,9 +146,6 @@ pub(crate) fn shadow_parts<K: Kernel>(
                                 }
                             }
                         });
-                        if n % JOIN_EVERY == JOIN_EVERY - 1 {
-                            node.join();
-                        }
                     }
                     node.join();
                 }
@@ -225,7 +218,12 @@ impl<P> Node<P> {
     ) {
         match self {
             Node::Cut(_, _, Some(e)) if skip(e) => {}
-            Node::Cut(_, kids, _) => kids.iter_mut().for_each(|k| k.visit(skip, f)),
+            Node::Cut(_, kids, _) => {
+                kids.iter_mut().for_each(|k| k.visit(skip, f));
+                // Parts that now agree are joined at once, so the tree stays as small as
+                // the shadows' boundaries make it.
+                self.join_here();
+            }
             Node::Taken => {}
             Node::Leaf(p, s, e) => {
                 if let Some(kids) = f(p, s, e) {
@@ -247,10 +245,17 @@ impl<P> Node<P> {
 
     /// Joins cut polygons whose parts all ended up with the same lights again.
     fn join(&mut self) {
+        if let Node::Cut(_, kids, _) = self {
+            kids.iter_mut().for_each(Node::join);
+        }
+        self.join_here();
+    }
+
+    /// Joins this cut when its parts are leaves with the same lights.
+    fn join_here(&mut self) {
         let Node::Cut(_, kids, _) = self else {
             return;
         };
-        kids.iter_mut().for_each(Node::join);
         let first = match &kids[0] {
             Node::Leaf(_, s, _) => *s,
             _ => return,
