@@ -39,10 +39,12 @@ fn lit_sphere(rings: u32, segments: u32) -> Scene {
         Light {
             kind: LightKind::Point(DVec3::new(2.0, 3.0, 4.0)),
             color: [1.0; 3],
+            shadows: false,
         },
         Light {
             kind: LightKind::Ambient,
             color: [0.3; 3],
+            shadows: false,
         },
     ];
     s
@@ -110,13 +112,14 @@ fn configs() -> Vec<(&'static str, Change)> {
     ]
 }
 
-fn median(mut v: Vec<f64>) -> f64 {
+/// The median (upper middle) of `v`.
+pub(crate) fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(f64::total_cmp);
     v[v.len() / 2]
 }
 
 /// The median time of `runs` runs after one run to warm caches and the allocator.
-fn time<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+pub(crate) fn time<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     let _ = f();
     let mut times = Vec::with_capacity(runs);
     let mut last = None;
@@ -128,7 +131,8 @@ fn time<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     (median(times), last.expect("at least one run"))
 }
 
-fn write(painter: &dyn Painter, pic: &Picture) -> usize {
+/// The bytes `painter` writes for `pic`.
+pub(crate) fn write(painter: &dyn Painter, pic: &Picture) -> usize {
     let mut out = Vec::new();
     painter.paint(pic, &mut out).expect("in-memory writing");
     out.len()
@@ -137,7 +141,7 @@ fn write(painter: &dyn Painter, pic: &Picture) -> usize {
 /// The painter's flat-only picture as it was built before smooth effects: one flat
 /// colour per face, covers, seam flaps. For an unlit scene it gives the same picture
 /// as [`picture`]; the benchmark checks that.
-fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
+pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     let cam = &ordered.camera;
     let mut cache: Vec<Option<[f64; 4]>> = vec![None; scene.faces.len()];
     let cover = covers(scene, ordered);
@@ -317,5 +321,6 @@ pub fn run(quick: bool, runs: usize) -> Result<String> {
             )?;
         }
     }
+    out += &crate::shadow_costs::run(quick, runs)?;
     Ok(out)
 }

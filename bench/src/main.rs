@@ -12,6 +12,7 @@ mod lines_bench;
 mod peers;
 mod raster;
 mod scenes;
+mod shadow_costs;
 
 use std::path::PathBuf;
 use std::time::Duration;

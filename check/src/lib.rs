@@ -31,6 +31,7 @@
 //! ```
 
 mod lines;
+mod shadows;
 
 pub use lines::{compare_line_images, LineComparison};
 

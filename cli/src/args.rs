@@ -81,6 +81,8 @@ const RENDER_HELP: &str = "Examples:
   limn render plot.toml -o plot.pdf              # [[line]], [[points]], [[label]] hidden exactly
   limn render bunny.obj -o b.pdf --shading phong --shading-tolerance 0.002
   limn render crate.obj -o c.svg                 # vt + map_Kd (PNG/JPEG): each image embedded once
+  limn render shadows.toml -o s.svg              # [[light]] shadows = true: exact shadows
+  limn render shadows.toml -o s.png --method zbuffer --shadow-bias 0.002  # shadow maps
 
 Exit status: 0 done (warnings go to standard error), 1 error (bad input, refused output, \
 limit reached; no output file is left), 2 usage error.";
@@ -260,6 +262,16 @@ pub struct RenderArgs {
     /// How to render: painter's order (vector) or an image-space method (PNG only).
     #[arg(long, value_enum, default_value_t = MethodArg::Painter)]
     pub method: MethodArg,
+    /// Shadow maps of --method zbuffer, scanline and warnock (lights with `shadows =
+    /// true`): samples per side of each map (a point light has six).
+    #[arg(long, value_name = "N", default_value_t = 2048, value_parser = clap::value_parser!(u32).range(1..=16384))]
+    pub shadow_map_size: u32,
+    /// Shadow maps' depth bias, as a fraction of the scene's bounding-box diagonal: a
+    /// point is shadowed only when farther from the light than the map's sample by more
+    /// (too small: acne; too large: shadows detach). The painter and ray casting are
+    /// exact and use none.
+    #[arg(long, value_name = "B", default_value_t = 1e-3, value_parser = parse_bias)]
+    pub shadow_bias: f64,
     /// TikZ output: wrap the picture in a complete LaTeX document (`standalone` class)
     /// that pdflatex compiles as it is, instead of a bare `tikzpicture` for `\input`.
     #[arg(long)]
@@ -435,6 +447,17 @@ fn parse_distance(s: &str) -> Result<f64, String> {
         .map_err(|_| format!("`{s}` is not a number"))?;
     if !(v.is_finite() && v > 0.0) {
         return Err(format!("distance `{s}` must be a positive number"));
+    }
+    Ok(v)
+}
+
+fn parse_bias(s: &str) -> Result<f64, String> {
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{s}` is not a number"))?;
+    if !(v.is_finite() && (0.0..=1.0).contains(&v)) {
+        return Err(format!("shadow bias `{s}` must be 0 to 1"));
     }
     Ok(v)
 }

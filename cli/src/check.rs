@@ -6,7 +6,9 @@ use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 use limn_check::paint;
-use limn_zbuffer::{default_band_tolerance, diff_png, DepthFormat, Method, NO_FACE};
+use limn_zbuffer::{
+    default_band_tolerance, diff_png, DepthFormat, Method, ShadowMapOptions, NO_FACE,
+};
 use serde_json::json;
 
 use crate::args::{AgainstArg, CheckArgs};
@@ -44,6 +46,14 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     let tol = default_band_tolerance(w, h);
     let cmp = painted.compare(&reference);
     let lines = painted.compare_lines(scene)?;
+    // Shadows: the lights each pixel's point is hidden from; exact against ray casting,
+    // by shadow maps (reported, never failed on) against the other references.
+    let shadows = if scene.shadow_lights().is_empty() {
+        None
+    } else {
+        let r = painted.reference_shadows(scene, method, &ShadowMapOptions::default())?;
+        Some(painted.compare_shadows(&r))
+    };
     if let Some(path) = &a.diff {
         let png = diff_png(&painted.ids, &reference, Some(&painted.band))?;
         write_atomic(path, &scene.files, |out| {
@@ -92,6 +102,11 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         // and the comparison cannot see it.
         "near": ordered.near,
         "faces_near_clipped_by_both": ordered.stats.faces_near_clipped,
+        "shadows": shadows.as_ref().map(|c| json!({
+            "reference": if method == Method::RayCast { "exact shadow rays" } else { "shadow maps" },
+            "mismatches": c.mismatches,
+            "mismatches_outside_band": c.mismatches_outside_band,
+        })),
     });
     if ordered.stats.faces_near_clipped > 0 && !a.view.quiet {
         eprintln!(
@@ -118,6 +133,17 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
                 "limn: {} pixels disagree with {} outside the edge band",
                 cmp.mismatches_outside_band,
                 method.name()
+            );
+        }
+        return Ok(ExitCode::from(MISMATCH));
+    }
+    if let Some(c) = shadows.filter(|c| method == Method::RayCast && c.mismatches_outside_band > 0)
+    {
+        if !a.view.quiet {
+            eprintln!(
+                "limn: {} pixels are shadowed from other lights than by the exact shadow rays \
+                 outside the edge band",
+                c.mismatches_outside_band
             );
         }
         return Ok(ExitCode::from(MISMATCH));

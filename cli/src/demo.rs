@@ -82,10 +82,12 @@ pub fn scene() -> Result<Scene, SceneError> {
         Light {
             kind: LightKind::Directional(DVec3::new(0.6, 1.0, 0.9)),
             color: [0.9, 0.9, 0.9],
+            shadows: false,
         },
         Light {
             kind: LightKind::Ambient,
             color: [1.0, 1.0, 1.0],
+            shadows: false,
         },
     ];
     Ok(s)

@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use limn_depthsort::{CullMode, OrderOptions};
 use limn_scene::{Camera, Scene};
-use limn_zbuffer::{render, Method, RenderOptions};
+use limn_zbuffer::{render_with_shadow_maps, Method, RenderOptions, ShadowMapOptions};
 
 use crate::args::{MethodArg, ViewArgs};
 use crate::output::write_atomic;
@@ -31,13 +31,17 @@ pub fn raster(
     output: &Path,
     view: &ViewArgs,
     oo: &OrderOptions,
+    maps: &ShadowMapOptions,
 ) -> Result<ExitCode> {
     let method = method_of(m).context("the painter is not a raster method")?;
     let opts = RenderOptions {
         cull_back_faces: oo.cull == CullMode::On,
         ..RenderOptions::default()
     };
-    let r = render(scene, cam, method, &opts)?;
+    if method == Method::ABuffer && !scene.shadow_lights().is_empty() && !view.quiet {
+        eprintln!("limn: warning: the A-buffer draws no shadows (use zbuffer, scanline, warnock or raycast)");
+    }
+    let r = render_with_shadow_maps(scene, cam, method, &opts, maps)?;
     let png = r.color.encode_png()?;
     write_atomic(output, &scene.files, |w| {
         w.write_all(&png)?;

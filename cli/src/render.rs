@@ -52,7 +52,11 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
             bail!("--method {:?} renders a raster: write a .png", a.method);
         }
         progress.phase("rendering");
-        let done = raster(&loaded.scene, &cam, a.method, &output, &a.view, &oo);
+        let maps = limn_zbuffer::ShadowMapOptions {
+            size: a.shadow_map_size,
+            bias: a.shadow_bias,
+        };
+        let done = raster(&loaded.scene, &cam, a.method, &output, &a.view, &oo, &maps);
         drop(progress);
         return done;
     }

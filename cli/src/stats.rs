@@ -64,6 +64,7 @@ pub fn write_stats(
         "fragments_before_merge": s.fragments_before_merge,
         "fragments_out": s.fragments_out,
         "fragments_made": s.fragments_made,
+        "fragments_in_shadow": s.fragments_in_shadow,
         "fragment_limit": s.fragment_limit,
         "paths_out": ps.paths,
         "bytes_out": ps.bytes,
@@ -93,6 +94,7 @@ pub fn write_stats(
             "prepare": s.ms_prepare,
             "sort": s.ms_order,
             "merge": s.ms_merge,
+            "shadows": s.ms_shadows,
         },
     });
     let text = serde_json::to_string_pretty(&v)? + "\n";

@@ -45,6 +45,7 @@ mod options;
 mod pieces;
 mod prepare;
 mod rng;
+mod shadows;
 mod simple;
 mod view;
 
@@ -52,7 +53,7 @@ use std::time::Instant;
 
 use glam::DVec3;
 use limn_kernel::{ExactKernel, FloatKernel, Kernel};
-use limn_scene::{Camera, Scene};
+use limn_scene::{Camera, LightSet, Scene};
 
 pub use crate::feature_edges::{feature_edges, EdgeKind, FeatureEdge};
 pub use crate::marks::{
@@ -74,6 +75,9 @@ pub struct Fragment {
     pub world: Vec<DVec3>,
     /// Per edge `i` (vertex `i` to `i + 1`): does it lie on an edge of the input face?
     pub original_edges: Vec<bool>,
+    /// The lights (indices into [`Scene::lights`]) this fragment is in the shadow of;
+    /// always empty unless some light casts shadows (see [`Scene::shadow_lights`]).
+    pub shadowed: LightSet,
 }
 
 /// The result of [`order`]: fragments back to front.
@@ -187,14 +191,25 @@ fn ordered<K: Kernel>(
     } else {
         order
     };
-    let (fragments, polys) = fragments(&ctx, &order);
+    let parts = if scene.shadow_lights().is_empty() {
+        None
+    } else {
+        let t = Instant::now();
+        let parts = shadows::shadow_parts(&ctx, scene, &order)?;
+        ctx.stats.ms_shadows = t.elapsed().as_secs_f64() * 1e3;
+        Some(parts)
+    };
+    let (fragments, polys) = match parts {
+        None => fragments(&ctx, &order),
+        Some(parts) => shadowed_fragments(&mut ctx, &order, parts),
+    };
     let t3 = Instant::now();
     let mut stats = ctx.stats;
     stats.fragments_out = fragments.len();
     stats.filter_fallbacks = kernel.fallbacks() - fallbacks0;
     stats.ms_prepare = (t1 - t0).as_secs_f64() * 1e3;
     stats.ms_order = (t2 - t1).as_secs_f64() * 1e3;
-    stats.ms_merge = (t3 - t2).as_secs_f64() * 1e3;
+    stats.ms_merge = (t3 - t2).as_secs_f64() * 1e3 - stats.ms_shadows;
     let ordered = Ordered {
         fragments,
         stats,
@@ -233,8 +248,44 @@ fn fragments<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> (Vec<Fragment>, Vec<
             points: p.pts.clone(),
             world,
             original_edges,
+            shadowed: LightSet::EMPTY,
         });
         polys.push(p.poly.clone());
+    }
+    (fragments, polys)
+}
+
+/// [`fragments`] with each piece of `order` replaced by its shadow parts (in order).
+fn shadowed_fragments<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    order: &[u32],
+    parts: Vec<shadows::Parts<K::Polygon>>,
+) -> (Vec<Fragment>, Vec<K::Polygon>) {
+    let mut fragments = Vec::with_capacity(order.len());
+    let mut polys = Vec::with_capacity(order.len());
+    let mut scratch = Vec::new();
+    for (&id, parts) in order.iter().zip(parts) {
+        let (face, eye_front) = {
+            let p = &ctx.pieces[id as usize];
+            (p.face, p.eye_front)
+        };
+        for (poly, shadowed) in parts {
+            let piece = ctx.piece(poly, face, id, Some(eye_front), &mut scratch);
+            let original_edges = (0..scratch.len())
+                .map(|i| ctx.k.edge_is_original(&piece.poly, i))
+                .collect();
+            if !shadowed.is_empty() {
+                ctx.stats.fragments_in_shadow += 1;
+            }
+            fragments.push(Fragment {
+                face,
+                points: piece.pts,
+                world: std::mem::take(&mut scratch),
+                original_edges,
+                shadowed,
+            });
+            polys.push(piece.poly);
+        }
     }
     (fragments, polys)
 }

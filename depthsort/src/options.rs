@@ -215,6 +215,11 @@ pub struct Stats {
     pub ms_order: f64,
     /// Milliseconds spent merging and building fragments.
     pub ms_merge: f64,
+    /// Fragments in the shadow of some light (0 unless a light casts shadows).
+    pub fragments_in_shadow: usize,
+    /// Milliseconds spent splitting fragments along shadows (0 unless a light casts
+    /// shadows).
+    pub ms_shadows: f64,
 }
 
 /// Errors of the orderings: all come from invalid input.

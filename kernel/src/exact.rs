@@ -128,6 +128,14 @@ impl Kernel for ExactKernel {
         Plane::point_normal(point.to_array(), normal.to_array())
     }
 
+    fn plane_through_points(&self, p: DVec3, q: DVec3, r: DVec3) -> Result<Plane, KernelError> {
+        Plane::through(p.to_array(), q.to_array(), r.to_array())
+    }
+
+    fn plane_along(&self, p: DVec3, q: DVec3, d: DVec3) -> Result<Plane, KernelError> {
+        Plane::along(p.to_array(), q.to_array(), d.to_array())
+    }
+
     fn support(&self, poly: &ExactPolygon) -> Plane {
         poly.support()
     }

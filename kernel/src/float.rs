@@ -213,6 +213,19 @@ impl Kernel for FloatKernel {
         *p
     }
 
+    fn plane_through_points(
+        &self,
+        p: DVec3,
+        q: DVec3,
+        r: DVec3,
+    ) -> Result<FloatPlane, KernelError> {
+        self.plane_through(p, (q - p).cross(r - p))
+    }
+
+    fn plane_along(&self, p: DVec3, q: DVec3, d: DVec3) -> Result<FloatPlane, KernelError> {
+        self.plane_through(p, (q - p).cross(d))
+    }
+
     fn plane_through(&self, point: DVec3, normal: DVec3) -> Result<FloatPlane, KernelError> {
         for p in [point, normal] {
             if !p.is_finite() {

@@ -45,6 +45,17 @@ pub enum PlaneDef {
         /// Whether the normal is negated.
         flip: bool,
     },
+    /// Through `p` and `q`, containing the direction `d`: normal `(q − p) × d`, offset
+    /// `−n·p` (a plane through an edge and a point at infinity, such as a directional
+    /// light).
+    Along {
+        /// First point.
+        p: [f64; 3],
+        /// Second point.
+        q: [f64; 3],
+        /// The direction the plane contains.
+        d: [f64; 3],
+    },
     /// Through `p` with normal `n`: offset `−n·p`.
     PointNormal {
         /// The point.
@@ -171,6 +182,22 @@ impl PlaneDef {
                 let e = (REL * w[0].abs().max(w[1].abs()).max(w[2].abs()) + ETA) * SAFETY;
                 (n, e, p)
             }
+            PlaneDef::Along { p, q, d: v } => {
+                // As `Through` with the second difference exact (`d` is given).
+                let u = sub(q, p);
+                let n = [
+                    u[1] * v[2] - u[2] * v[1],
+                    u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0],
+                ];
+                let m = [
+                    (u[1] * v[2]).abs() + (u[2] * v[1]).abs(),
+                    (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
+                    (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
+                ];
+                let e = (REL * m[0].max(m[1]).max(m[2]) + ETA) * SAFETY;
+                (n, e, p)
+            }
             PlaneDef::PointNormal { p, n } => (n, 0.0, p),
         };
         let t = [n[0] * p[0], n[1] * p[1], n[2] * p[2]];
@@ -201,6 +228,11 @@ impl PlaneDef {
                 let n = cross_axis_exact(&dsub(&dyadic::point3(q), &pe), k);
                 (if flip { n.map(|x| -&x) } else { n }, pe)
             }
+            PlaneDef::Along { p, q, d } => {
+                let pe = dyadic::point3(p);
+                let u = dsub(&dyadic::point3(q), &pe);
+                (dyadic::cross3(&u, &dyadic::point3(d)), pe)
+            }
             PlaneDef::PointNormal { p, n } => (dyadic::point3(n), dyadic::point3(p)),
         };
         let d = -&dyadic::dot3(&n, &p);
@@ -211,7 +243,7 @@ impl PlaneDef {
     fn points(&self) -> ([[f64; 3]; 3], usize) {
         match *self {
             PlaneDef::Through(pts) => (pts, 3),
-            PlaneDef::Edge { p, q, .. } => ([p, q, q], 2),
+            PlaneDef::Edge { p, q, .. } | PlaneDef::Along { p, q, .. } => ([p, q, q], 2),
             PlaneDef::PointNormal { p, .. } => ([p, p, p], 1),
         }
     }
@@ -220,7 +252,7 @@ impl PlaneDef {
     fn defined_by(&self, x: &[f64; 3]) -> bool {
         match self {
             PlaneDef::Through(pts) => pts.iter().any(|p| p == x),
-            PlaneDef::Edge { p, q, .. } => p == x || q == x,
+            PlaneDef::Edge { p, q, .. } | PlaneDef::Along { p, q, .. } => p == x || q == x,
             PlaneDef::PointNormal { p, .. } => p == x,
         }
     }
@@ -273,6 +305,22 @@ impl Plane {
             check_finite(x)?;
         }
         let plane = Plane::from_def(PlaneDef::Through([p, q, r]));
+        if plane.normal_is_zero() {
+            return Err(KernelError::ZeroNormal);
+        }
+        Ok(plane)
+    }
+
+    /// The plane through `p` and `q` containing the direction `d`, normal `(q − p) × d`
+    /// (front where it points): the plane through an edge and a point at infinity.
+    ///
+    /// Errors: [`KernelError::NonFinite`], or [`KernelError::ZeroNormal`] when `q − p`
+    /// is exactly parallel to `d` (or zero).
+    pub fn along(p: [f64; 3], q: [f64; 3], d: [f64; 3]) -> Result<Plane, KernelError> {
+        for x in [p, q, d] {
+            check_finite(x)?;
+        }
+        let plane = Plane::from_def(PlaneDef::Along { p, q, d });
         if plane.normal_is_zero() {
             return Err(KernelError::ZeroNormal);
         }
@@ -390,6 +438,34 @@ impl Plane {
             }
         }
         None
+    }
+
+    /// A point and a direction that define both planes, when there are (both planes
+    /// contain one point and the same direction, as the planes through a light at
+    /// infinity and two edges meeting at a corner): the line through the point along the
+    /// direction is the planes' intersection (if the planes differ).
+    pub(crate) fn common_ray(&self, other: &Plane) -> Option<([f64; 3], [f64; 3])> {
+        let (PlaneDef::Along { p, q, d }, PlaneDef::Along { d: e, .. }) =
+            (self.data.def, other.data.def)
+        else {
+            return None;
+        };
+        if d.map(f64::to_bits) != e.map(f64::to_bits) {
+            return None;
+        }
+        [p, q]
+            .into_iter()
+            .find(|x| other.data.def.defined_by(x))
+            .map(|x| (x, d))
+    }
+
+    /// Whether the plane contains the direction `d` (is parallel to it), exactly; known
+    /// without arithmetic for a plane defined along `d`.
+    pub(crate) fn contains_direction(&self, d: [f64; 3]) -> bool {
+        match self.data.def {
+            PlaneDef::Along { d: e, .. } if e.map(f64::to_bits) == d.map(f64::to_bits) => true,
+            _ => self.side_of_direction(d) == Side::On,
+        }
     }
 
     /// The exact side of a point given by its f64 coordinates.
@@ -619,6 +695,7 @@ mod tests {
                     flip: round % 2 == 0,
                 },
                 PlaneDef::PointNormal { p, n: q },
+                PlaneDef::Along { p, q, d: r },
             ] {
                 let (n, d, en, ed) = def.approximate();
                 let (ne, de) = def.exact();

@@ -427,12 +427,18 @@ impl ExactPolygon {
 }
 
 /// Whether two of a vertex's planes meet in a line through two input points that both lie
-/// on `h`: then the vertex lies on `h` (the usual case of a vertex made on an edge that
-/// neighbouring faces share).
+/// on `h` (or through an input point along a direction that both lie in `h`): then the
+/// vertex lies on `h` (the usual case of a vertex made on an edge that neighbouring faces
+/// share, or on the shadow of a corner that neighbouring occluders share).
 fn on_common_line(h: &Plane, planes: [&Plane; 3]) -> bool {
     for (x, y) in [(0, 1), (0, 2), (1, 2)] {
         if let Some((p, q)) = planes[x].common_line(planes[y]) {
             if h.side_of(p) == Side::On && h.side_of(q) == Side::On {
+                return true;
+            }
+        }
+        if let Some((p, d)) = planes[x].common_ray(planes[y]) {
+            if h.contains_direction(d) && h.side_of(p) == Side::On {
                 return true;
             }
         }

@@ -46,6 +46,20 @@ pub trait Kernel: Sync {
     /// exact kernel about this plane is exact.
     fn plane_through(&self, point: DVec3, normal: DVec3) -> Result<Self::Plane, KernelError>;
 
+    /// The plane through three points (taken as the given f64 values), normal
+    /// `(q − p) × (r − p)`; exact in the exact kernel. Errors when they are collinear.
+    fn plane_through_points(
+        &self,
+        p: DVec3,
+        q: DVec3,
+        r: DVec3,
+    ) -> Result<Self::Plane, KernelError>;
+
+    /// The plane through `p` and `q` containing the direction `d`, normal `(q − p) × d`
+    /// (all taken as the given f64 values); exact in the exact kernel. Errors when
+    /// `q − p` is parallel to `d`.
+    fn plane_along(&self, p: DVec3, q: DVec3, d: DVec3) -> Result<Self::Plane, KernelError>;
+
     /// The supporting plane of a polygon; its normal points to the polygon's front.
     fn support(&self, poly: &Self::Polygon) -> Self::Plane;
 

@@ -272,3 +272,57 @@ fn split_of_a_huge_triangle_keeps_its_cut_vertices_implicit() {
         }
     }
 }
+
+/// A ground square cut by two planes through the same point along the same direction
+/// (the shadow of an occluder's corner under a light at infinity) has a corner where
+/// that ray meets it; a third such plane passes exactly through that corner, and the
+/// kernel knows it without exact arithmetic: the same sides as with the filter off.
+#[test]
+fn corners_on_a_shared_shadow_ray_lie_on_every_plane_along_it() {
+    let ground = [
+        glam::DVec3::new(-2.0, 0.0, -2.0),
+        glam::DVec3::new(-2.0, 0.0, 2.0),
+        glam::DVec3::new(2.0, 0.0, 2.0),
+        glam::DVec3::new(2.0, 0.0, -2.0),
+    ];
+    let d = glam::DVec3::new(0.3, 1.0, 0.2);
+    let v = glam::DVec3::new(0.1, 1.0, 0.0);
+    let sides = |k: &ExactKernel| {
+        let poly = k.face_polygons(&ground).unwrap().remove(0);
+        let a = k
+            .plane_along(v, glam::DVec3::new(1.1, 1.0, 0.7), d)
+            .unwrap();
+        let b = k
+            .plane_along(v, glam::DVec3::new(-0.6, 1.0, 0.9), d)
+            .unwrap();
+        let c = k
+            .plane_along(v, glam::DVec3::new(0.4, 1.0, -1.3), d)
+            .unwrap();
+        let (fa, ba) = k.split(&poly, &a);
+        let mut wedges = Vec::new();
+        for half in [fa.unwrap(), ba.unwrap()] {
+            let (f, g) = k.split(&half, &b);
+            wedges.extend(f);
+            wedges.extend(g);
+        }
+        assert_eq!(wedges.len(), 4, "the corner lies inside the square");
+        let before = k.fallbacks();
+        let sides: Vec<PolygonSide> = wedges.iter().map(|w| k.classify(w, &c)).collect();
+        (sides, k.fallbacks() - before)
+    };
+    let (filtered, fallbacks) = sides(&ExactKernel::new());
+    let (exact, _) = sides(&ExactKernel::new().without_filter());
+    assert_eq!(filtered, exact);
+    assert_eq!(
+        filtered
+            .iter()
+            .filter(|s| **s == PolygonSide::Spanning)
+            .count(),
+        2,
+        "{filtered:?}"
+    );
+    assert_eq!(
+        fallbacks, 0,
+        "the shared ray's corner needed exact arithmetic"
+    );
+}

@@ -288,3 +288,39 @@ fn shading_and_fog() {
         assert_at(&err(&p), &p, Some(line));
     }
 }
+
+#[test]
+fn light_shadows_are_read_and_refused_where_no_shadow_can_be_cast() {
+    let d = dir();
+    let p = scene(
+        d.path(),
+        "[[mesh]]\npath = \"tri.obj\"\n[[light]]\nkind = \"point\"\nposition = [0, 2, 3]\nshadows = true\n\
+         [[light]]\nkind = \"directional\"\ndirection = [0, 1, 0]\n\
+         [[light]]\nkind = \"directional\"\ndirection = [1, 1, 0]\nshadows = false\n",
+    );
+    let s = ok(&p);
+    let flags: Vec<bool> = s.lights.iter().map(|l| l.shadows).collect();
+    assert_eq!(flags, [true, false, false]);
+    assert_eq!(s.shadow_lights().iter().collect::<Vec<_>>(), [0]);
+    for (bad, line) in [
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[[light]]\nkind = \"ambient\"\nshadows = true\n",
+            5,
+        ),
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[[light]]\nkind = \"headlight\"\n\nshadows = true\n",
+            6,
+        ),
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[[light]]\nkind = \"point\"\nposition = [0, 2, 3]\nshadows = 1\n",
+            6,
+        ),
+        (
+            "[[mesh]]\npath = \"tri.obj\"\n[[light]]\nkind = \"point\"\nposition = [0, 2, 3]\nshadow = true\n",
+            6,
+        ),
+    ] {
+        let p = scene(d.path(), bad);
+        assert_at(&err(&p), &p, Some(line));
+    }
+}

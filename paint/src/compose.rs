@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use glam::DVec3;
-use limn_scene::{shade_face, FaceTexcoords, Scene, Shading};
+use limn_scene::{shade_face, shade_face_in_shadow, FaceTexcoords, Scene, Shading};
 
 use limn_depthsort::Ordered;
 
@@ -79,11 +79,20 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     });
     for (f, cover) in ordered.fragments.iter().zip(&cover) {
         let face = &scene.faces[f.face as usize];
-        let fill = *cache[f.face as usize].get_or_insert_with(|| {
-            let m = &scene.materials[face.material as usize];
-            let c = shade_face(scene, f.face, cam.eye);
-            [c[0], c[1], c[2], m.opacity.clamp(0.0, 1.0)]
-        });
+        let opacity = || {
+            scene.materials[face.material as usize]
+                .opacity
+                .clamp(0.0, 1.0)
+        };
+        let fill = if f.shadowed.is_empty() {
+            *cache[f.face as usize].get_or_insert_with(|| {
+                let c = shade_face(scene, f.face, cam.eye);
+                [c[0], c[1], c[2], opacity()]
+            })
+        } else {
+            let c = shade_face_in_shadow(scene, f.face, cam.eye, f.shadowed);
+            [c[0], c[1], c[2], opacity()]
+        };
         // An opaque face's first piece is painted as the whole polygon (see `covers`);
         // translucent faces must not be painted twice.
         let use_cover = fill[3] >= 1.0 && style.seamless && cover.is_some();
@@ -146,7 +155,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         } else {
             f.world.clone()
         };
-        let light = FaceLight::new(scene, f.face);
+        let light = FaceLight::new(scene, f.face).in_shadow_of(f.shadowed);
         if shading == Shading::Phong && world.len() == frag.points.len() {
             let view = view.get_or_insert_with(|| View {
                 camera: cam,

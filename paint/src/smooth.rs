@@ -3,7 +3,9 @@
 //! tolerance of per-point shading, see [`crate::phong`]).
 
 use glam::{DMat4, DVec3};
-use limn_scene::{polygon_normal, shade_sided_in_scene, Camera, FaceNormals, Material, Scene};
+use limn_scene::{
+    polygon_normal, shade_sided_in_shadow, Camera, FaceNormals, LightSet, Material, Scene,
+};
 
 use crate::phong::{subdivide, Surface};
 use crate::PaintFragment;
@@ -28,6 +30,8 @@ pub(crate) struct FaceLight<'a> {
     material: &'a Material,
     normals: Option<FaceNormals>,
     flat_normal: DVec3,
+    /// The lights left out (the fragment lies in their shadow).
+    shadowed: LightSet,
 }
 
 impl<'a> FaceLight<'a> {
@@ -38,7 +42,13 @@ impl<'a> FaceLight<'a> {
             material: &scene.materials[f.material as usize],
             normals: FaceNormals::new(scene, face),
             flat_normal: polygon_normal(&scene.face_points(face)),
+            shadowed: LightSet::EMPTY,
         }
+    }
+
+    /// The same face shaded without the lights in `shadowed`.
+    pub fn in_shadow_of(self, shadowed: LightSet) -> Self {
+        FaceLight { shadowed, ..self }
     }
 
     fn normal(&self, p: DVec3) -> DVec3 {
@@ -49,13 +59,14 @@ impl<'a> FaceLight<'a> {
     }
 
     fn shade(&self, p: DVec3, eye: DVec3) -> [f64; 3] {
-        shade_sided_in_scene(
+        shade_sided_in_shadow(
             self.scene,
             self.material,
             p,
             self.normal(p),
             self.flat_normal,
             eye,
+            self.shadowed,
         )
     }
 

@@ -24,10 +24,12 @@ fn glossy_sphere(level: u32, ns: f64) -> (Scene, Camera) {
         Light {
             kind: LightKind::Point(DVec3::new(2.0, 3.0, 4.0)),
             color: [1.0; 3],
+            shadows: false,
         },
         Light {
             kind: LightKind::Ambient,
             color: [0.3; 3],
+            shadows: false,
         },
     ];
     let cam = Camera::new(DVec3::new(0.0, 0.0, 4.0), DVec3::ZERO, 160, 160);

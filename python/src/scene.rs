@@ -221,6 +221,7 @@ impl PyScene {
         self.scene.lights.push(Light {
             kind,
             color: rgb("light color", color)?,
+            shadows: false,
         });
         Ok(())
     }

@@ -62,6 +62,15 @@ pub enum SceneError {
     /// Too many faces or vertices for 32-bit ids.
     #[error("scene too large: more than 2^32 - 1 {0}")]
     TooLarge(&'static str),
+    /// A light asks for shadows it cannot cast (an ambient light or a headlight), or is
+    /// beyond the first [`crate::LightSet::CAPACITY`] lights.
+    #[error("light {index}: {problem}")]
+    BadShadows {
+        /// The light's index in [`Scene::lights`].
+        index: usize,
+        /// What is wrong.
+        problem: &'static str,
+    },
 }
 
 /// A surface material, following the Wavefront MTL model.
@@ -186,6 +195,21 @@ pub struct Light {
     pub kind: LightKind,
     /// Intensity per channel (1 = full).
     pub color: [f64; 3],
+    /// Whether the light casts shadows (directional and point lights only; see
+    /// [`Scene::shadow_lights`]). Nothing about shadows is computed for a light that
+    /// does not ask.
+    pub shadows: bool,
+}
+
+impl Light {
+    /// A light of `kind` and `color` that casts no shadows.
+    pub fn new(kind: LightKind, color: [f64; 3]) -> Light {
+        Light {
+            kind,
+            color,
+            shadows: false,
+        }
+    }
 }
 
 /// A whole scene in world coordinates.
@@ -355,7 +379,36 @@ impl Scene {
         for l in &self.labels {
             l.validate(objects)?;
         }
+        for (index, l) in self.lights.iter().enumerate() {
+            if !l.shadows {
+                continue;
+            }
+            if matches!(l.kind, LightKind::Ambient | LightKind::Headlight) {
+                return Err(SceneError::BadShadows {
+                    index,
+                    problem: "only directional and point lights cast shadows",
+                });
+            }
+            if index >= crate::LightSet::CAPACITY {
+                return Err(SceneError::BadShadows {
+                    index,
+                    problem: "only the first 64 lights can cast shadows",
+                });
+            }
+        }
         Ok(())
+    }
+
+    /// The lights that cast shadows (`shadows = true`), as a set of light indices;
+    /// empty when none asks (then nothing about shadows is computed).
+    pub fn shadow_lights(&self) -> crate::LightSet {
+        let mut set = crate::LightSet::EMPTY;
+        for (i, l) in self.lights.iter().enumerate() {
+            if l.shadows && i < crate::LightSet::CAPACITY {
+                set.insert(i);
+            }
+        }
+        set
     }
 
     /// The positions of a face's corners.

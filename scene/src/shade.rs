@@ -8,7 +8,7 @@
 
 use glam::DVec3;
 
-use crate::{Light, LightKind, Material, Scene, Shading};
+use crate::{Light, LightKind, LightSet, Material, Scene, Shading};
 
 /// A linear RGB colour, each channel in [0, 1].
 pub type Rgb = [f64; 3];
@@ -31,6 +31,8 @@ pub struct Effects {
     pub texture: bool,
     /// The scene has fog and some face is lit (fog never touches `illum 0` colours).
     pub fog: bool,
+    /// Some light casts shadows (`shadows = true`) and some face is lit.
+    pub shadows: bool,
 }
 
 impl Effects {
@@ -61,6 +63,7 @@ impl Effects {
             }
         }
         e.fog = e.lighting && scene.fog.is_some();
+        e.shadows = e.lighting && !scene.shadow_lights().is_empty();
         e
     }
 
@@ -87,6 +90,9 @@ impl Effects {
         }
         if self.texture {
             v.push("texture");
+        }
+        if self.shadows {
+            v.push("shadows");
         }
         v
     }
@@ -122,6 +128,20 @@ pub fn shade_sided(
     eye: DVec3,
     lights: &[Light],
 ) -> Rgb {
+    shade_lit_by(m, p, n, side, eye, lights, LightSet::EMPTY)
+}
+
+/// [`shade_sided`] leaving out the lights in `shadowed` (indices into `lights`): the
+/// colour of a point in their shadow. Ambient light is never left out.
+fn shade_lit_by(
+    m: &Material,
+    p: DVec3,
+    n: DVec3,
+    side: DVec3,
+    eye: DVec3,
+    lights: &[Light],
+    shadowed: LightSet,
+) -> Rgb {
     if m.illum == 0 {
         return m.kd;
     }
@@ -133,6 +153,7 @@ pub fn shade_sided(
     const HEADLIGHT: [Light; 1] = [Light {
         kind: LightKind::Headlight,
         color: [1.0, 1.0, 1.0],
+        shadows: false,
     }];
     let lights = if lights.is_empty() {
         &HEADLIGHT[..]
@@ -158,7 +179,10 @@ pub fn shade_sided(
     for (k, o) in out.iter_mut().enumerate() {
         *o = m.ka[k] * ambient[k];
     }
-    for l in lights {
+    for (i, l) in lights.iter().enumerate() {
+        if shadowed.contains(i) {
+            continue;
+        }
         let dir = match l.kind {
             LightKind::Ambient => continue,
             LightKind::Directional(d) => d.normalize_or_zero(),
@@ -268,6 +292,12 @@ pub fn fan_weights(c: &[DVec3], p: DVec3) -> Option<([usize; 3], [f64; 3])> {
 /// normal (and fogged there, when the scene has fog). Returns `Kd` exactly for `illum 0`
 /// materials.
 pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
+    shade_face_in_shadow(scene, face, eye, LightSet::EMPTY)
+}
+
+/// [`shade_face`] for a piece of the face in the shadow of the lights in `shadowed`: the
+/// same point, normal and fog, without those lights.
+pub fn shade_face_in_shadow(scene: &Scene, face: u32, eye: DVec3, shadowed: LightSet) -> Rgb {
     let f = &scene.faces[face as usize];
     let m = &scene.materials[f.material as usize];
     if m.illum == 0 {
@@ -276,7 +306,7 @@ pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
     let pts = scene.face_points(face);
     let c = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
     let n = polygon_normal(&pts);
-    shade_in_scene(scene, m, c, n, eye)
+    shade_sided_in_shadow(scene, m, c, n, n, eye, shadowed)
 }
 
 /// [`shade_point`] under the scene's lights, then seen through the scene's fog (when it
@@ -294,7 +324,21 @@ pub fn shade_sided_in_scene(
     side: DVec3,
     eye: DVec3,
 ) -> Rgb {
-    let c = shade_sided(m, p, n, side, eye, &scene.lights);
+    shade_sided_in_shadow(scene, m, p, n, side, eye, LightSet::EMPTY)
+}
+
+/// [`shade_sided_in_scene`] leaving out the scene's lights in `shadowed` (the point lies
+/// in their shadow); fog is applied as usual.
+pub fn shade_sided_in_shadow(
+    scene: &Scene,
+    m: &Material,
+    p: DVec3,
+    n: DVec3,
+    side: DVec3,
+    eye: DVec3,
+    shadowed: LightSet,
+) -> Rgb {
+    let c = shade_lit_by(m, p, n, side, eye, &scene.lights, shadowed);
     match &scene.fog {
         Some(fog) if m.illum >= 1 => fog.apply(c, p, eye),
         _ => c,

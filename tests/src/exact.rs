@@ -48,6 +48,10 @@ pub fn coefficients(pl: &Plane) -> [Q; 4] {
             };
             (if flip { n.map(|x| -x) } else { n }, p)
         }
+        PlaneDef::Along { p, q, d } => {
+            let p = qp(p);
+            (qcross(&qsub(&qp(q), &p), &qp(d)), p)
+        }
         PlaneDef::PointNormal { p, n } => (qp(n), qp(p)),
     };
     let d = -(&n[0] * &p[0] + &n[1] * &p[1] + &n[2] * &p[2]);

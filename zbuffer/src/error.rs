@@ -30,6 +30,14 @@ pub enum ZError {
         /// The offending value.
         value: f64,
     },
+    /// Shadow map options out of range (size 1 to 16384, bias finite and ≥ 0).
+    #[error("shadow map of size {size} with bias {bias}: the size must be 1 to 16384 and the bias finite and >= 0")]
+    BadShadowMap {
+        /// The size asked for.
+        size: u32,
+        /// The bias asked for.
+        bias: f64,
+    },
     /// The A-buffer would need more than 2³² − 1 fragments.
     #[error("the A-buffer needs more than 2^32 - 1 fragments")]
     TooManyFragments,

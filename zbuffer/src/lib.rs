@@ -64,6 +64,8 @@ mod raycast;
 mod render;
 mod scanline;
 mod setup;
+mod shadow_map;
+mod shadow_rays;
 mod span;
 mod triangulate;
 mod warnock;
@@ -77,8 +79,10 @@ pub use image::{rgb_to_u8, to_u8, ColorImage, DepthImage, IdImage, Mask, NO_FACE
 pub use lines::{bresenham, dda, scene_lines, wireframe, LineAlgorithm, LineOptions};
 pub use png::{diff_png, id_color, save_diff_png};
 pub use render::{
-    render, scene_edges, Method, ParseMethodError, Raster, RenderOptions, RenderStats,
+    render, render_with_shadow_maps, scene_edges, Method, ParseMethodError, Raster, RenderOptions,
+    RenderStats,
 };
+pub use shadow_map::ShadowMapOptions;
 pub use triangulate::triangulate;
 
 #[doc(no_inline)]

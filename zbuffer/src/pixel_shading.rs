@@ -11,8 +11,8 @@
 
 use glam::{DMat4, DVec3, DVec4};
 use limn_scene::{
-    polygon_normal, shade_face, shade_sided_in_scene, FaceNormals, FaceTexcoords, Rgb, Scene,
-    Shading,
+    polygon_normal, shade_face, shade_face_in_shadow, shade_sided_in_scene, shade_sided_in_shadow,
+    FaceNormals, FaceTexcoords, LightSet, Rgb, Scene, Shading,
 };
 
 use crate::image::{rgb_to_u8, NO_FACE};
@@ -42,13 +42,15 @@ struct Smooth {
     origin: DVec3,
 }
 
-/// Colours of `ids` (face per pixel, [`NO_FACE`] for the background): `flat[face]` for
-/// flat faces, per-pixel shading for smooth ones.
+/// Colours of `ids` (face per pixel, [`NO_FACE`] for the background): `flat(pixel,
+/// face)` for flat faces, per-pixel shading for smooth ones, leaving out the lights of
+/// `shadowed[pixel]` when given.
 pub(crate) fn shade(
     scene: &Scene,
     frame: &Frame,
     ids: &[u32],
-    flat: &[[u8; 3]],
+    shadowed: Option<&[LightSet]>,
+    flat: &mut dyn FnMut(usize, u32) -> [u8; 3],
     background: [u8; 3],
 ) -> Vec<[u8; 3]> {
     let eye = frame.camera.eye;
@@ -63,8 +65,9 @@ pub(crate) fn shade(
             }
             let smooth = faces[id as usize].get_or_insert_with(|| smooth_face(scene, id, eye));
             let Some(s) = smooth else {
-                return flat[id as usize];
+                return flat(i, id);
             };
+            let set = shadowed.map_or(LightSet::EMPTY, |sh| sh[i]);
             let x = (i % frame.width as usize) as f64 + 0.5;
             let y = (i / frame.width as usize) as f64 + 0.5;
             // The pixel's ray from the near to the far plane (any projection).
@@ -76,26 +79,44 @@ pub(crate) fn shade(
             let dir = far - near;
             let den = dir.dot(s.side);
             if den == 0.0 || !den.is_finite() {
-                return flat[id as usize];
+                return flat(i, id);
             }
             let p = near + dir * ((s.origin - near).dot(s.side) / den);
             if !p.is_finite() {
-                return flat[id as usize];
+                return flat(i, id);
             }
             let m = &scene.materials[scene.faces[id as usize].material as usize];
             let c = if let Some((tex, flat)) = &s.texture {
                 let t = tex.color_at(p);
+                let flat = if set.is_empty() {
+                    *flat
+                } else {
+                    shade_face_in_shadow(scene, id, eye, set)
+                };
                 [0, 1, 2].map(|k| flat[k] * t[k])
             } else if s.phong {
                 let n = s.normals.as_ref().and_then(|ns| ns.at(p)).unwrap_or(s.side);
-                shade_sided_in_scene(scene, m, p, n, s.side, eye)
+                shade_sided_in_shadow(scene, m, p, n, s.side, eye, set)
             } else {
                 match s.normals.as_ref().and_then(|ns| ns.weights(p)) {
                     Some((idx, wts)) => {
-                        let cc = &s.corner_colors;
-                        [0, 1, 2].map(|k| (0..3).map(|j| wts[j] * cc[idx[j]][k]).sum::<f64>())
+                        let corner = |j: usize| -> Rgb {
+                            if set.is_empty() {
+                                s.corner_colors[j]
+                            } else {
+                                match s.normals.as_ref() {
+                                    Some(ns) => {
+                                        let (c, n) = (ns.corners()[j], ns.normals()[j]);
+                                        shade_sided_in_shadow(scene, m, c, n, s.side, eye, set)
+                                    }
+                                    None => s.corner_colors[j],
+                                }
+                            }
+                        };
+                        let cc = idx.map(corner);
+                        [0, 1, 2].map(|k| (0..3).map(|j| wts[j] * cc[j][k]).sum::<f64>())
                     }
-                    None => return flat[id as usize],
+                    None => return flat(i, id),
                 }
             };
             rgb_to_u8(c)

@@ -29,13 +29,14 @@
 //! not apply.
 
 use glam::{DVec3, DVec4};
-use limn_scene::Scene;
+use limn_scene::{LightSet, Scene};
 use robust::{orient3d, Coord3D};
 
 use crate::bvh::{Bvh, Segment};
 use crate::exact;
 use crate::image::NO_FACE;
 use crate::setup::{face_triangles, is_back_face, Frame};
+use crate::shadow_rays::{Casters, Hit as ShadowHit};
 use crate::{ZError, MIN_RAYCAST_COORD};
 
 /// Ids and depths of a ray-cast rendering, with counters.
@@ -51,6 +52,9 @@ pub(crate) struct Output {
     pub triangles: usize,
     /// Faces dropped as back faces.
     pub culled_faces: usize,
+    /// Per pixel, the lights its point is in the shadow of (only when some light casts
+    /// shadows).
+    pub shadowed: Option<Vec<LightSet>>,
 }
 
 #[derive(Clone, Copy)]
@@ -70,6 +74,8 @@ struct Hit {
     eaf: f64,
     /// Upper bound of the hit parameter.
     t_hi: f64,
+    /// Whether `an` and `af` are `orient3d` negated.
+    negated: bool,
 }
 
 #[inline]
@@ -126,8 +132,14 @@ fn edge_dir(frame: &Frame, a: DVec3, b: DVec3) -> (i8, i8) {
     (flip * sgn(gx), -flip * sgn(gy))
 }
 
-/// Renders by casting one exact ray per pixel centre.
-pub(crate) fn raycast(scene: &Scene, frame: &Frame, cull: bool) -> Result<Output, ZError> {
+/// Renders by casting one exact ray per pixel centre, and from each hit one exact ray
+/// to each light of `casters` (see [`crate::shadow_rays`]).
+pub(crate) fn raycast(
+    scene: &Scene,
+    frame: &Frame,
+    cull: bool,
+    mut casters: Option<&mut Casters>,
+) -> Result<Output, ZError> {
     check_small("eye", frame.camera.eye)?;
     let mut tris = Vec::new();
     let mut scratch = Vec::new();
@@ -171,7 +183,9 @@ pub(crate) fn raycast(scene: &Scene, frame: &Frame, cull: bool) -> Result<Output
             + tris.len() * 4,
         triangles: tris.len(),
         culled_faces,
+        shadowed: casters.as_ref().map(|_| vec![LightSet::EMPTY; w * h]),
     };
+    let mut shadow_stack = Vec::new();
     if tris.is_empty() {
         return Ok(out);
     }
@@ -201,6 +215,19 @@ pub(crate) fn raycast(scene: &Scene, frame: &Frame, cull: bool) -> Result<Output
                 let d = ((c.z / c.w + 1.0) * 0.5).clamp(0.0, 1.0);
                 out.ids[j * w + i] = tris[hit.tri as usize].face;
                 out.depths[j * w + i] = d;
+                if let (Some(c), Some(sh)) = (casters.as_deref_mut(), out.shadowed.as_mut()) {
+                    let h = ShadowHit {
+                        tri: tris[hit.tri as usize].p,
+                        pn,
+                        pf,
+                        an: hit.an,
+                        af: hit.af,
+                        ean: hit.ean,
+                        eaf: hit.eaf,
+                        negated: hit.negated,
+                    };
+                    sh[j * w + i] = c.shadowed(&h, &mut shadow_stack);
+                }
             }
         }
     }
@@ -308,7 +335,8 @@ fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3) -> Option<Hit> {
     }
     let (mut an, ean) = exact::orient3d_bounded(a, b, c, pn);
     let (mut af, eaf) = exact::orient3d_bounded(a, b, c, pf);
-    if sn < 0 || (sn == 0 && sf > 0) {
+    let negated = sn < 0 || (sn == 0 && sf > 0);
+    if negated {
         an = -an;
         af = -af;
     }
@@ -326,6 +354,7 @@ fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3) -> Option<Hit> {
         ean,
         eaf,
         t_hi,
+        negated,
     })
 }
 

@@ -3,13 +3,19 @@
 use std::fmt;
 use std::str::FromStr;
 
-use glam::DVec3;
-use limn_scene::{polygon_normal, shade_face, shade_in_scene, Camera, Rgb, Scene};
+use std::collections::HashMap;
+
+use glam::{DVec3, DVec4};
+use limn_scene::{
+    polygon_normal, shade_face, shade_face_in_shadow, shade_in_scene, Camera, LightSet, Rgb, Scene,
+};
 use thiserror::Error;
 
 use crate::abuffer::{abuffer, FaceLook};
 use crate::image::{rgb_to_u8, ColorImage, DepthImage, IdImage, NO_FACE};
 use crate::setup::{prepare, Collect, Frame, Prepared};
+use crate::shadow_map::{ShadowMapOptions, ShadowMaps};
+use crate::shadow_rays::Casters;
 use crate::{pixel_shading, raycast, scanline, warnock, zbuf, DepthFormat, Segment2, ZError};
 
 /// An image-space hidden-surface method.
@@ -114,6 +120,8 @@ pub struct RenderStats {
     /// Working memory of the method's own buffers in bytes (depth and id buffers, row
     /// buffers and edge tables, fragment lists, BVH), excluding the output images.
     pub working_bytes: usize,
+    /// Exact shadow-ray–triangle tests (ray casting with lights that cast shadows).
+    pub shadow_tests: u64,
 }
 
 /// What a method produces.
@@ -125,6 +133,11 @@ pub struct Raster {
     pub depth: DepthImage,
     /// Face id of the visible surface.
     pub ids: IdImage,
+    /// Per pixel (row-major), the lights (indices into the scene's lights) the visible
+    /// point is in the shadow of: exact for ray casting, by shadow maps for the z-buffer,
+    /// scan-line and Warnock methods. `None` when no light casts shadows, and for the
+    /// A-buffer (which draws no shadows).
+    pub shadowed: Option<Vec<LightSet>>,
     /// Counters.
     pub stats: RenderStats,
 }
@@ -141,14 +154,34 @@ pub fn render(
     method: Method,
     opts: &RenderOptions,
 ) -> Result<Raster, ZError> {
+    render_with_shadow_maps(scene, camera, method, opts, &ShadowMapOptions::default())
+}
+
+/// [`render`] with the shadow maps made and read as `maps` says (they are used only when
+/// a light casts shadows, and only by the z-buffer, scan-line and Warnock methods; ray
+/// casting's shadows are exact).
+pub fn render_with_shadow_maps(
+    scene: &Scene,
+    camera: &Camera,
+    method: Method,
+    opts: &RenderOptions,
+    maps: &ShadowMapOptions,
+) -> Result<Raster, ZError> {
     let frame = Frame::new(scene, camera, opts)?;
+    let mut shadowed = None;
     let (w, h) = (frame.width, frame.height);
     let mut stats = RenderStats::default();
     let (ids, depths, colors) = match method {
         Method::RayCast => {
-            let out = raycast::raycast(scene, &frame, opts.cull_back_faces)?;
+            let mut casters = Casters::new(scene)?;
+            let out = raycast::raycast(scene, &frame, opts.cull_back_faces, casters.as_mut())?;
+            shadowed = out.shadowed;
             stats.fragments = out.tests;
             stats.exact_fallbacks = out.exact_fallbacks;
+            if let Some(c) = &casters {
+                stats.shadow_tests = c.tests;
+                stats.exact_fallbacks += c.fallbacks;
+            }
             stats.working_bytes = out.working_bytes;
             stats.triangles = out.triangles;
             stats.culled_faces = out.culled_faces;
@@ -194,7 +227,48 @@ pub fn render(
             (a.ids, a.depths, Some(a.colors))
         }
     };
-    Ok(finish(scene, &frame, opts, ids, depths, colors, stats))
+    if method != Method::RayCast && method != Method::ABuffer {
+        if let Some(m) = ShadowMaps::new(scene, maps)? {
+            shadowed = Some(map_shadows(scene, &frame, &ids, &m));
+        }
+    }
+    Ok(finish(
+        scene, &frame, opts, ids, depths, colors, shadowed, stats,
+    ))
+}
+
+/// The shadow sets of the pixels' points by the shadow maps.
+fn map_shadows(scene: &Scene, frame: &Frame, ids: &[u32], maps: &ShadowMaps) -> Vec<LightSet> {
+    let inv = frame.vp.inverse();
+    let (w, h) = (f64::from(frame.width), f64::from(frame.height));
+    let mut planes: Vec<Option<(DVec3, DVec3)>> = vec![None; scene.faces.len()];
+    ids.iter()
+        .enumerate()
+        .map(|(i, &id)| {
+            if id == NO_FACE {
+                return LightSet::EMPTY;
+            }
+            let (n, origin) = *planes[id as usize].get_or_insert_with(|| {
+                let pts = scene.face_points(id);
+                let c = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
+                (polygon_normal(&pts), c)
+            });
+            let x = (i % frame.width as usize) as f64 + 0.5;
+            let y = (i / frame.width as usize) as f64 + 0.5;
+            let at = |z: f64| {
+                let q = inv * DVec4::new(x / w * 2.0 - 1.0, 1.0 - y / h * 2.0, z, 1.0);
+                q.truncate() / q.w
+            };
+            let (near, far) = (at(-1.0), at(1.0));
+            let dir = far - near;
+            let den = dir.dot(n);
+            let p = near + dir * ((origin - near).dot(n) / den);
+            if !p.is_finite() {
+                return LightSet::EMPTY;
+            }
+            maps.shadowed(p, n, near)
+        })
+        .collect()
 }
 
 /// Culls, clips and projects for the screen-space methods.
@@ -217,6 +291,7 @@ fn prepared(
     prep
 }
 
+#[allow(clippy::too_many_arguments)] // the parts of a result, gathered once
 fn finish(
     scene: &Scene,
     frame: &Frame,
@@ -224,6 +299,7 @@ fn finish(
     ids: Vec<u32>,
     depths: Vec<f64>,
     colors: Option<Vec<[f64; 3]>>,
+    shadowed: Option<Vec<LightSet>>,
     stats: RenderStats,
 ) -> Raster {
     let (w, h) = (frame.width, frame.height);
@@ -249,8 +325,22 @@ fn finish(
                 })
                 .collect();
             let bg = rgb_to_u8(opts.background);
+            let eye = frame.camera.eye;
+            let mut in_shadow: HashMap<(u32, LightSet), [u8; 3]> = HashMap::new();
+            let sets = shadowed.as_deref();
+            let mut flat = |i: usize, id: u32| match sets.map(|s| s[i]) {
+                Some(set) if !set.is_empty() => *in_shadow
+                    .entry((id, set))
+                    .or_insert_with(|| rgb_to_u8(shade_face_in_shadow(scene, id, eye, set))),
+                _ => palette[id as usize],
+            };
             if pixel_shading::needed(scene) {
-                pixel_shading::shade(scene, frame, &ids, &palette, bg)
+                pixel_shading::shade(scene, frame, &ids, sets, &mut flat, bg)
+            } else if sets.is_some() {
+                ids.iter()
+                    .enumerate()
+                    .map(|(i, &id)| if id == NO_FACE { bg } else { flat(i, id) })
+                    .collect()
             } else {
                 ids.iter()
                     .map(|&id| {
@@ -280,6 +370,7 @@ fn finish(
             height: h,
             ids,
         },
+        shadowed,
         stats,
     }
 }

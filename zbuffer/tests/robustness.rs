@@ -389,6 +389,7 @@ fn smooth_per_pixel(cam: Camera) {
     s.lights = vec![Light {
         kind: LightKind::Point(glam::DVec3::new(2.0, 3.0, 4.0)),
         color: [1.0; 3],
+        shadows: false,
     }];
     let opts = RenderOptions::default();
     let (near, far) = cam.near_far(&s);

@@ -70,6 +70,7 @@ impl Affine {
                 };
                 (if flip { n.map(|x| -x) } else { n }, p)
             }
+            PlaneDef::Along { p, q: b, d } => (cross(&sub(b, p), &q3(d)), p),
             PlaneDef::PointNormal { p, n } => (q3(n), p),
         };
         let pq = q3(p);

@@ -141,7 +141,7 @@ fn dot<const N: usize>(a: &[Wide<N>; 3], b: &[Wide<N>; 3]) -> Wide<N> {
 fn span_of(def: &PlaneDef, points: &mut Span) {
     match def {
         PlaneDef::Through(pts) => pts.iter().for_each(|p| points.add3(p)),
-        PlaneDef::Edge { p, q, .. } => {
+        PlaneDef::Edge { p, q, .. } | PlaneDef::Along { p, q, .. } => {
             points.add3(p);
             points.add3(q);
         }
@@ -163,6 +163,14 @@ fn coefficient_bits(def: &PlaneDef, b: i32) -> (i32, i32) {
             s.add3(n);
             let bn = s.bits();
             (bn, bn + b + 2)
+        }
+        // The direction is scaled on its own (< 2^bd); n: two products of a difference
+        // (< 2^(b+1)) and a direction component; d: three products of n and a point.
+        PlaneDef::Along { d, .. } => {
+            let mut s = Span::EMPTY;
+            s.add3(d);
+            let bd = s.bits();
+            (b + bd + 2, 2 * b + bd + 4)
         }
     }
 }
@@ -187,6 +195,13 @@ fn coefficients<const N: usize>(plane: &Plane, e: i32) -> ([Wide<N>; 3], Wide<N>
                 _ => [w[1], -w[0], z],
             };
             (if flip { n.map(|x| -x) } else { n }, pi)
+        }
+        PlaneDef::Along { p, q, d } => {
+            let pi = int3(&p, e);
+            let w = sub3(&int3(&q, e), &pi);
+            let mut s = Span::EMPTY;
+            s.add3(&d);
+            (cross(&w, &int3(&d, s.exponent())), pi)
         }
         PlaneDef::PointNormal { p, n } => {
             let mut s = Span::EMPTY;

@@ -70,7 +70,7 @@ fn point(rng: &mut Rng, style: Style) -> [f64; 3] {
 
 /// A random plane of any kind and orientation (`None` for a degenerate draw).
 fn plane(rng: &mut Rng, style: Style) -> Option<Plane> {
-    let p = match rng.below(3) {
+    let p = match rng.below(4) {
         0 => Plane::through(point(rng, style), point(rng, style), point(rng, style)).ok()?,
         1 => {
             let (a, b) = (point(rng, style), point(rng, style));
@@ -81,7 +81,8 @@ fn plane(rng: &mut Rng, style: Style) -> Option<Plane> {
             }
             Plane::edge(a, b, k, rng.below(2) == 0)
         }
-        _ => Plane::point_normal(point(rng, style), point(rng, style)).ok()?,
+        2 => Plane::point_normal(point(rng, style), point(rng, style)).ok()?,
+        _ => Plane::along(point(rng, style), point(rng, style), point(rng, style)).ok()?,
     };
     Some(if rng.below(2) == 0 { p.flipped() } else { p })
 }

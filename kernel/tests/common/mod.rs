@@ -63,6 +63,10 @@ pub fn coefficients(pl: &Plane) -> (RPoint, BigRational) {
             };
             (if flip { n.map(|x| -x) } else { n }, p)
         }
+        PlaneDef::Along { p, q: qq, d } => {
+            let p = qp(p);
+            (cross(&sub(&qp(qq), &p), &qp(d)), p)
+        }
         PlaneDef::PointNormal { p, n } => (qp(n), qp(p)),
     };
     let d = -(&n[0] * &p[0] + &n[1] * &p[1] + &n[2] * &p[2]);
@@ -122,6 +126,11 @@ pub fn integer_row(pl: &Plane) -> [BigInt; 4] {
                 _ => [w[1].clone(), -&w[0], z],
             };
             (if flip { n.map(|x| -x) } else { n }, p, l)
+        }
+        PlaneDef::Along { p, q: qq, d } => {
+            // Like `Through`: a cross product of two scaled vectors.
+            let ([p, qq, d], l) = integer_values([p, qq, d]);
+            (icross(&isub(&qq, &p), &d), p, l)
         }
         PlaneDef::PointNormal { p, n } => {
             let ([p, n], l) = integer_values([p, n]);

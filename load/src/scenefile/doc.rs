@@ -232,6 +232,7 @@ pub(crate) struct LightDoc {
     pub(crate) position: Option<V3>,
     pub(crate) color: Option<Spanned<ColourDoc>>,
     pub(crate) intensity: Option<f64>,
+    pub(crate) shadows: Option<Spanned<bool>>,
 }
 
 #[derive(Deserialize)]

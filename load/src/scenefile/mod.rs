@@ -48,6 +48,7 @@
 //! direction = [1.0, 1.0, 1.0]  # towards the light (point lights: position)
 //! color = [1.0, 1.0, 1.0]
 //! intensity = 0.8           # multiplies color
+//! shadows = true            # cast shadows (directional and point lights; default false)
 //!
 //! [[line]]                  # a polyline drawn where visible
 //! points = [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]  # or path = "curve.obj" (only `l`s)

@@ -54,9 +54,25 @@ pub(super) fn light(cx: &Ctx, l: &Spanned<doc::LightDoc>) -> Result<Light, LoadE
     if !(k.is_finite() && k >= 0.0) {
         return Err(cx.invalid(l.span(), "intensity must be a finite number >= 0"));
     }
+    let shadows = match &d.shadows {
+        Some(s)
+            if *s.get_ref() && !matches!(kind, LightKind::Directional(_) | LightKind::Point(_)) =>
+        {
+            return Err(cx.invalid(
+                s.span(),
+                format!(
+                    "a {:?} light casts no shadows (only directional and point lights do)",
+                    d.kind
+                ),
+            ))
+        }
+        Some(s) => *s.get_ref(),
+        None => false,
+    };
     Ok(Light {
         kind,
         color: colour.map(|c| c * k),
+        shadows,
     })
 }
 
