@@ -23,6 +23,9 @@
 mod bins;
 mod cone;
 mod filter;
+mod param;
+#[cfg(test)]
+mod reference;
 mod segment;
 
 use glam::{DMat4, DVec3};
@@ -218,6 +221,19 @@ fn run(
     opaque: Vec<bool>,
 ) -> Result<VisibleMarks, OrderError> {
     let t0 = std::time::Instant::now();
+    let mut ctx = context(ordered, occ, opaque)?;
+    let mut out = hide_all(scene, &mut ctx);
+    out.stats.ms = t0.elapsed().as_millis() as u64;
+    Ok(out)
+}
+
+/// What hiding works with: the occluders with their planes' sides of the eye, the bins,
+/// the eye and the near plane.
+fn context(
+    ordered: &Ordered,
+    occ: Vec<(ExactPolygon, usize, Box2)>,
+    opaque: Vec<bool>,
+) -> Result<segment::Ctx, OrderError> {
     let cam = &ordered.camera;
     let fwd = cam.forward();
     let eye = cam.eye;
@@ -246,7 +262,7 @@ fn run(
             }
         })
         .collect();
-    let mut ctx = segment::Ctx {
+    Ok(segment::Ctx {
         occluders,
         bins: Bins::new(boxes),
         eye: eye_q,
@@ -257,8 +273,14 @@ fn run(
         camera: *cam,
         vp: view_projection(ordered),
         end: ordered.fragments.len(),
+        filter: true,
         stats: MarkStats::default(),
-    };
+    })
+}
+
+/// Every line, marker, label and head, hidden.
+fn hide_all(scene: &Scene, ctx: &mut segment::Ctx) -> VisibleMarks {
+    let cam = ctx.camera;
     let mut out = VisibleMarks::default();
     for (i, line) in scene.lines.iter().enumerate() {
         ctx.stats.lines += 1;
@@ -286,9 +308,8 @@ fn run(
             out.labels.push(a);
         }
     }
-    ctx.stats.ms = t0.elapsed().as_millis() as u64;
     out.stats = ctx.stats;
-    Ok(out)
+    out
 }
 
 impl Occluder {
