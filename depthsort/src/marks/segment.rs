@@ -162,6 +162,8 @@ impl Ctx {
             }
             cuts.sort();
             cuts.dedup();
+            // Each break point's position, rounded once.
+            let at: Vec<DVec3> = cuts.iter().map(|t| Self::point_at(a, b, t)).collect();
             for k in 0..cuts.len() - 1 {
                 let (t0, t1) = (&cuts[k], &cuts[k + 1]);
                 let inside = |lo: &Param, hi: &Param| lo <= t0 && t1 <= hi;
@@ -169,8 +171,8 @@ impl Ctx {
                 if clipped || hidden.iter().any(|(lo, hi)| inside(lo, hi)) {
                     close(&mut open, line, out, self, &mut hidden_open, true);
                     if !clipped {
-                        let p0 = Self::point_at(a, b, t0);
-                        let p1 = Self::point_at(a, b, t1);
+                        let p0 = at[k];
+                        let p1 = at[k + 1];
                         match &mut hopen {
                             Some(o) if o.world.last() == Some(&p0) => o.world.push(p1),
                             _ => {
@@ -192,8 +194,8 @@ impl Ctx {
                     .map(|c| c.2)
                     .min()
                     .unwrap_or(self.end);
-                let p0 = Self::point_at(a, b, t0);
-                let p1 = Self::point_at(a, b, t1);
+                let p0 = at[k];
+                let p1 = at[k + 1];
                 match &mut open {
                     Some(o) if o.before == before && o.world.last() == Some(&p0) => {
                         o.world.push(p1)
