@@ -286,7 +286,8 @@ mod tests {
                 Viewpoint::At(p) => Eye::Point(r3(p.to_array())),
                 Viewpoint::Toward(d) => Eye::Toward(r3(d.to_array())),
             };
-            let mut ctx = context(&ordered, occ(), flags.clone()).unwrap();
+            let shared = context(&ordered, occ(), flags.clone()).unwrap();
+            let mut ctx = shared.task();
             for line in &s.lines {
                 for w in line.points.windows(2) {
                     let (a, b) = (w[0], w[1]);
@@ -294,7 +295,7 @@ mod tests {
                     let (ra, rb) = (r3(a.to_array()), r3(b.to_array()));
                     for (i, poly) in polys.iter().enumerate() {
                         // As in the segment pass: only occluders some end lies behind.
-                        let o = &ctx.occluders[i];
+                        let o = &shared.occluders[i];
                         if ![a, b].iter().any(|p| {
                             crate::marks::cone::may_be_behind(&o.support, o.eye_side, p.to_array())
                         }) {
@@ -335,10 +336,10 @@ mod tests {
                     checked[2] += usize::from(want);
                 }
             }
-            let fast = hide_all(&s, &mut context(&ordered, occ(), flags.clone()).unwrap());
-            let mut slow_ctx = context(&ordered, occ(), flags).unwrap();
-            slow_ctx.filter = false;
-            let mut slow = hide_all(&s, &mut slow_ctx);
+            let fast = hide_all(&s, &context(&ordered, occ(), flags.clone()).unwrap());
+            let mut slow_shared = context(&ordered, occ(), flags).unwrap();
+            slow_shared.filter = false;
+            let mut slow = hide_all(&s, &slow_shared);
             assert!(slow.stats.exact_tests >= fast.stats.exact_tests);
             slow.stats.exact_tests = fast.stats.exact_tests;
             assert_eq!(fast, slow, "round {round}");

@@ -13,16 +13,13 @@ use super::param::Param;
 use super::{MarkStats, Occluder, VisibleAnchor, VisiblePiece};
 use crate::geom::Box2;
 
-/// What the segment pass works with.
-pub(super) struct Ctx {
+/// What every segment and anchor is hidden against (shared by the threads).
+pub(super) struct Shared {
     pub(super) occluders: Vec<Occluder>,
     pub(super) bins: Bins,
     pub(super) eye: EyeQ,
     /// The eye as given.
     pub(super) eye_f: filter::EyeF,
-    /// Scratch space of the filter.
-    pub(super) fa: Vec<filter::Iv>,
-    pub(super) fb: Vec<filter::Iv>,
     pub(super) near: Plane,
     pub(super) camera: Camera,
     pub(super) vp: DMat4,
@@ -31,6 +28,27 @@ pub(super) struct Ctx {
     /// Whether the float filter decides what it can (off: everything exactly, the
     /// reference the filter is tested against).
     pub(super) filter: bool,
+}
+
+impl Shared {
+    /// A context for one task (its own scratch space and counts).
+    pub(super) fn task(&self) -> Ctx<'_> {
+        Ctx {
+            sh: self,
+            fa: Vec::new(),
+            fb: Vec::new(),
+            stats: MarkStats::default(),
+        }
+    }
+}
+
+/// What the segment pass works with: the shared data, and one task's scratch space and
+/// counts.
+pub(super) struct Ctx<'a> {
+    pub(super) sh: &'a Shared,
+    /// Scratch space of the filter.
+    pub(super) fa: Vec<filter::Iv>,
+    pub(super) fb: Vec<filter::Iv>,
     pub(super) stats: MarkStats,
 }
 
@@ -62,9 +80,9 @@ struct Open {
     start: f64,
 }
 
-impl Ctx {
+impl Ctx<'_> {
     fn project(&self, p: DVec3) -> [f64; 2] {
-        let s = self.camera.project_with(&self.vp, p);
+        let s = self.sh.camera.project_with(&self.sh.vp, p);
         [s.x, s.y]
     }
 
@@ -76,9 +94,9 @@ impl Ctx {
     /// Candidate occluders of a screen box that may lie in front of `pts` (exact plane
     /// sides: some point strictly on the far side of the occluder's plane from the eye).
     fn candidates(&mut self, pts: &[DVec3], screen: &Box2) -> Vec<u32> {
-        let mut c = self.bins.query(screen);
+        let mut c = self.sh.bins.query(screen);
         c.retain(|&i| {
-            let o = &self.occluders[i as usize];
+            let o = &self.sh.occluders[i as usize];
             pts.iter()
                 .any(|p| cone::may_be_behind(&o.support, o.eye_side, p.to_array()))
         });
@@ -108,7 +126,7 @@ impl Ctx {
         hidden_out: &mut Vec<VisiblePiece>,
     ) {
         let mut hopen: Option<Open> = None;
-        let near = Affine::of_plane(&self.near);
+        let near = Affine::of_plane(&self.sh.near);
         let mut open: Option<Open> = None;
         let mut hidden_open = false;
         let mut length = 0.0;
@@ -138,7 +156,7 @@ impl Ctx {
             let mut covered: Vec<(Param, Param, usize)> = Vec::new();
             for i in cands {
                 let (opaque, before) = {
-                    let o = &self.occluders[i as usize];
+                    let o = &self.sh.occluders[i as usize];
                     (o.opaque, o.before)
                 };
                 if let Some((lo, hi)) = self.cone_part(i, [a, b], [&qa, &qb], &u_lo, &u_hi) {
@@ -179,7 +197,7 @@ impl Ctx {
                                 self.flush_hidden(&mut hopen, line, hidden_out);
                                 hopen = Some(Open {
                                     world: vec![p0, p1],
-                                    before: self.end,
+                                    before: self.sh.end,
                                     start: seg_start,
                                 });
                             }
@@ -193,7 +211,7 @@ impl Ctx {
                     .filter(|(lo, hi, _)| inside(lo, hi))
                     .map(|c| c.2)
                     .min()
-                    .unwrap_or(self.end);
+                    .unwrap_or(self.sh.end);
                 let p0 = at[k];
                 let p1 = at[k + 1];
                 match &mut open {
@@ -231,13 +249,25 @@ impl Ctx {
         u_lo: &Param,
         u_hi: &Param,
     ) -> Option<(Param, Param)> {
-        if self.filter {
-            let o = &self.occluders[i as usize];
+        if self.sh.filter {
+            let o = &self.sh.occluders[i as usize];
             let [a, b] = ends.map(|p| p.to_array());
-            let ok_a =
-                filter::conditions(&o.poly, &o.support, o.eye_side, self.eye_f, a, &mut self.fa);
-            let ok_b =
-                filter::conditions(&o.poly, &o.support, o.eye_side, self.eye_f, b, &mut self.fb);
+            let ok_a = filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.sh.eye_f,
+                a,
+                &mut self.fa,
+            );
+            let ok_b = filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.sh.eye_f,
+                b,
+                &mut self.fb,
+            );
             if ok_a && ok_b {
                 match filter::segment_verdict(&self.fa, &self.fb) {
                     filter::Verdict::Nowhere => return None,
@@ -260,8 +290,7 @@ impl Ctx {
         u_lo: &Param,
         u_hi: &Param,
     ) -> Option<(Param, Param)> {
-        let eye = self.eye.clone();
-        let c = self.occluders[i as usize].cone(&eye)?;
+        let c = self.sh.occluders[i as usize].cone(&self.sh.eye)?;
         let mut iv = clip(
             &c.behind.at(qa),
             &c.behind.at(qb),
@@ -277,13 +306,13 @@ impl Ctx {
     /// Whether occluder `i`'s cone holds the point `p` (exactly `qp`): decided by the
     /// float filter where it can, exactly otherwise.
     pub(super) fn cone_holds(&mut self, i: u32, p: DVec3, qp: &[Q; 3]) -> bool {
-        if self.filter {
-            let o = &self.occluders[i as usize];
+        if self.sh.filter {
+            let o = &self.sh.occluders[i as usize];
             if !filter::conditions(
                 &o.poly,
                 &o.support,
                 o.eye_side,
-                self.eye_f,
+                self.sh.eye_f,
                 p.to_array(),
                 &mut self.fa,
             ) {
@@ -301,9 +330,8 @@ impl Ctx {
 
     /// [`Ctx::cone_holds`] evaluated exactly.
     pub(super) fn exact_holds(&mut self, i: u32, qp: &[Q; 3]) -> bool {
-        let eye = self.eye.clone();
-        self.occluders[i as usize]
-            .cone(&eye)
+        self.sh.occluders[i as usize]
+            .cone(&self.sh.eye)
             .is_some_and(|c| c.hides(qp))
     }
 
@@ -325,7 +353,7 @@ impl Ctx {
     /// nearer than the near plane.
     pub(super) fn anchor(&mut self, index: u32, p: DVec3) -> Option<VisibleAnchor> {
         let qp = q3(p.to_array());
-        if Affine::of_plane(&self.near).at(&qp).signum() == Ordering::Less {
+        if Affine::of_plane(&self.sh.near).at(&qp).signum() == Ordering::Less {
             return None;
         }
         let at = self.project(p);
@@ -335,10 +363,10 @@ impl Ctx {
             max_x: at[0],
             max_y: at[1],
         };
-        let mut before = self.end;
+        let mut before = self.sh.end;
         for i in self.candidates(&[p], &b) {
             let (opaque, pos) = {
-                let o = &self.occluders[i as usize];
+                let o = &self.sh.occluders[i as usize];
                 (o.opaque, o.before)
             };
             let hides = self.cone_holds(i, p, &qp);
