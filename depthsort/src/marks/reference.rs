@@ -148,7 +148,12 @@ pub(super) fn cone_part(
     hi: R,
 ) -> Option<(R, R)> {
     let (behind, walls) = cone(poly, eye)?;
-    let mut iv = clip(&behind.at(a), &behind.at(b), lo, hi);
+    let (ba, bb) = (behind.at(a), behind.at(b));
+    if ba.is_zero() && bb.is_zero() {
+        // In the plane: never hidden by it.
+        return None;
+    }
+    let mut iv = clip(&ba, &bb, lo, hi);
     for w in &walls {
         iv = iv.and_then(|(lo, hi)| clip(&w.at(a), &w.at(b), lo, hi));
     }
@@ -166,6 +171,7 @@ pub(super) fn hides(poly: &ExactPolygon, eye: &Eye, p: &[R; 3]) -> bool {
 mod tests {
     use glam::DVec3;
     use limn_kernel::ExactKernel;
+    use limn_kernel::Side;
     use limn_scene::{Camera, Material, PointMark, Polyline, Scene, Viewpoint};
 
     use super::*;
@@ -264,7 +270,7 @@ mod tests {
     #[test]
     fn fast_paths_equal_the_rational_reference() {
         let mut rng = SplitMix::new(7);
-        let mut checked = [0usize; 3];
+        let mut checked = [0usize; 4];
         for round in 0..12 {
             let (s, cam) = scene(&mut rng);
             let (ordered, polys) =
@@ -294,8 +300,15 @@ mod tests {
                     let (qa, qb) = (q3(a.to_array()), q3(b.to_array()));
                     let (ra, rb) = (r3(a.to_array()), r3(b.to_array()));
                     for (i, poly) in polys.iter().enumerate() {
-                        // As in the segment pass: only occluders some end lies behind.
+                        // As in the segment pass: only occluders some end lies behind;
+                        // a segment in the occluder's plane is never hidden by it.
                         let o = &shared.occluders[i];
+                        let sides = [a, b].map(|p| o.support.side_of(p.to_array()));
+                        if sides == [Side::On; 2] {
+                            let (lo, hi) = (Param::zero(), Param::one());
+                            assert!(ctx.exact_part(i as u32, [&qa, &qb], &lo, &hi).is_none());
+                            checked[3] += 1;
+                        }
                         if ![a, b].iter().any(|p| {
                             crate::marks::cone::may_be_behind(&o.support, o.eye_side, p.to_array())
                         }) {
@@ -344,9 +357,10 @@ mod tests {
             slow.stats.exact_tests = fast.stats.exact_tests;
             assert_eq!(fast, slow, "round {round}");
         }
-        // The draws reach every case: many pairs, some hidden parts, some hidden points.
+        // The draws reach every case: many pairs, some hidden parts, some hidden points,
+        // segments in a fragment's plane.
         assert!(
-            checked[0] > 10_000 && checked[1] > 100 && checked[2] > 50,
+            checked[0] > 10_000 && checked[1] > 100 && checked[2] > 50 && checked[3] > 100,
             "{checked:?}"
         );
     }

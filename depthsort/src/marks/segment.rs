@@ -291,12 +291,12 @@ impl Ctx<'_> {
         u_hi: &Param,
     ) -> Option<(Param, Param)> {
         let c = self.sh.occluders[i as usize].cone(&self.sh.eye)?;
-        let mut iv = clip(
-            &c.behind.at(qa),
-            &c.behind.at(qb),
-            u_lo.clone(),
-            u_hi.clone(),
-        );
+        let (ba, bb) = (c.behind.at(qa), c.behind.at(qb));
+        if ba.is_zero() && bb.is_zero() {
+            // The segment lies in the occluder's plane: never hidden by it.
+            return None;
+        }
+        let mut iv = clip(&ba, &bb, u_lo.clone(), u_hi.clone());
         for wall in &c.walls {
             iv = iv.and_then(|(lo, hi)| clip(&wall.at(qa), &wall.at(qb), lo, hi));
         }
