@@ -8,7 +8,8 @@
 //! simplicity over speed (a few microseconds per predicate). It is written here rather
 //! than taken from a crate because what it needs (exact ring operations on f64 values
 //! and a sign) is about a hundred lines on top of `num-bigint`, while rational crates
-//! would normalise by gcd on every operation.
+//! would normalise by gcd on every operation. It is public so that exact evaluations
+//! outside the kernel (the hiding of lines and points) use the same numbers.
 
 use std::cmp::Ordering;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -18,14 +19,14 @@ use num_traits::{ToPrimitive, Zero};
 
 /// An exact number `mantissa · 2^exponent`.
 #[derive(Debug, Clone)]
-pub(crate) struct Dyadic {
+pub struct Dyadic {
     m: BigInt,
     e: i64,
 }
 
 impl Dyadic {
     /// Zero.
-    pub(crate) fn zero() -> Dyadic {
+    pub fn zero() -> Dyadic {
         Dyadic {
             m: BigInt::zero(),
             e: 0,
@@ -34,7 +35,7 @@ impl Dyadic {
 
     /// The exact value of a finite f64 (callers check finiteness; NaN and infinities map
     /// to zero).
-    pub(crate) fn from_f64(x: f64) -> Dyadic {
+    pub fn from_f64(x: f64) -> Dyadic {
         if x == 0.0 || !x.is_finite() {
             return Dyadic::zero();
         }
@@ -70,7 +71,7 @@ impl Dyadic {
     }
 
     /// The sign as an ordering against zero.
-    pub(crate) fn signum(&self) -> Ordering {
+    pub fn signum(&self) -> Ordering {
         match self.m.sign() {
             Sign::Minus => Ordering::Less,
             Sign::NoSign => Ordering::Equal,
@@ -78,13 +79,18 @@ impl Dyadic {
         }
     }
 
+    /// The value as `(mantissa, exponent)`: it equals `mantissa · 2^exponent`.
+    pub fn parts(&self) -> (&BigInt, i64) {
+        (&self.m, self.e)
+    }
+
     /// Whether the value is exactly zero.
-    pub(crate) fn is_zero(&self) -> bool {
+    pub fn is_zero(&self) -> bool {
         self.m.is_zero()
     }
 
     /// The value rounded to a nearby f64 (within a few ulps; infinite when out of range).
-    pub(crate) fn to_f64(&self) -> f64 {
+    pub fn to_f64(&self) -> f64 {
         if self.m.is_zero() {
             return 0.0;
         }
@@ -168,13 +174,13 @@ impl Neg for &Dyadic {
 }
 
 /// `a·b + c·d + e·f`, exactly.
-pub(crate) fn dot3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> Dyadic {
+pub fn dot3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> Dyadic {
     let s = &(&a[0] * &b[0]) + &(&a[1] * &b[1]);
     &s + &(&a[2] * &b[2])
 }
 
 /// The cross product `a × b`, exactly.
-pub(crate) fn cross3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
+pub fn cross3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
     [
         &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
         &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
@@ -183,12 +189,12 @@ pub(crate) fn cross3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
 }
 
 /// A point's coordinates as exact dyadic numbers.
-pub(crate) fn point3(p: [f64; 3]) -> [Dyadic; 3] {
+pub fn point3(p: [f64; 3]) -> [Dyadic; 3] {
     p.map(Dyadic::from_f64)
 }
 
 /// `a / b` rounded to a nearby f64 (within a few ulps) for `b ≠ 0`.
-pub(crate) fn quotient_f64(a: &Dyadic, b: &Dyadic) -> f64 {
+pub fn quotient_f64(a: &Dyadic, b: &Dyadic) -> f64 {
     if a.is_zero() {
         return 0.0;
     }

@@ -39,7 +39,7 @@
 
 #[cfg(any(test, feature = "check-invariants"))]
 pub mod check;
-mod dyadic;
+pub mod dyadic;
 mod error;
 mod exact;
 mod face;

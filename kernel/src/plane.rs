@@ -401,7 +401,7 @@ impl Plane {
     }
 
     /// The exact coefficients, with this plane's orientation.
-    pub(crate) fn exact(&self) -> ([Dyadic; 3], Dyadic) {
+    pub fn exact(&self) -> ([Dyadic; 3], Dyadic) {
         let (n, d) = self.data.def.exact();
         if self.neg {
             (n.map(|x| -&x), -&d)

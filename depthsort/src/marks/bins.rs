@@ -16,9 +16,6 @@ pub(crate) struct Bins {
     /// Occluders whose box is not finite (they may overlap anything).
     everywhere: Vec<u32>,
     boxes: Vec<Box2>,
-    /// Stamp per occluder, so that a query lists each once.
-    seen: Vec<u32>,
-    stamp: u32,
 }
 
 /// The margin added to every box: relative to the coordinates' size, and at least a
@@ -53,9 +50,7 @@ impl Bins {
             cell_h,
             cells: vec![Vec::new(); CELLS * CELLS],
             everywhere: Vec::new(),
-            seen: vec![0; boxes.len()],
             boxes: Vec::new(),
-            stamp: 0,
         };
         for (i, b) in boxes.iter().enumerate() {
             if !finite(b) {
@@ -93,32 +88,21 @@ impl Bins {
 
     /// The occluders whose (grown) box meets `query` (grown too), each once, in
     /// increasing order; every occluder when `query` is not finite.
-    pub(crate) fn query(&mut self, query: &Box2) -> Vec<u32> {
+    pub(crate) fn query(&self, query: &Box2) -> Vec<u32> {
         if !finite(query) {
             return (0..self.boxes.len() as u32).collect();
         }
         let q = query.grown(margin(query));
-        self.stamp = self.stamp.wrapping_add(1);
-        if self.stamp == 0 {
-            self.seen.iter_mut().for_each(|s| *s = 0);
-            self.stamp = 1;
-        }
-        let mut out = Vec::new();
-        let mut take = |i: u32, bins_seen: &mut Vec<u32>, boxes: &[Box2], stamp: u32| {
-            let b = &boxes[i as usize];
-            if bins_seen[i as usize] != stamp
-                && b.min_x <= q.max_x
-                && q.min_x <= b.max_x
-                && b.min_y <= q.max_y
-                && q.min_y <= b.max_y
-            {
-                bins_seen[i as usize] = stamp;
-                out.push(i);
-            }
+        let meets = |i: u32| {
+            let b = &self.boxes[i as usize];
+            b.min_x <= q.max_x && q.min_x <= b.max_x && b.min_y <= q.max_y && q.min_y <= b.max_y
         };
-        for &i in &self.everywhere {
-            take(i, &mut self.seen, &self.boxes, self.stamp);
-        }
+        let mut out: Vec<u32> = self
+            .everywhere
+            .iter()
+            .copied()
+            .filter(|&i| meets(i))
+            .collect();
         if finite(&self.area)
             && q.max_x >= self.area.min_x
             && q.min_x <= self.area.max_x
@@ -128,13 +112,17 @@ impl Bins {
             let (x0, x1, y0, y1) = self.range(&q);
             for y in y0..=y1 {
                 for x in x0..=x1 {
-                    for &i in &self.cells[y * CELLS + x] {
-                        take(i, &mut self.seen, &self.boxes, self.stamp);
-                    }
+                    out.extend(
+                        self.cells[y * CELLS + x]
+                            .iter()
+                            .copied()
+                            .filter(|&i| meets(i)),
+                    );
                 }
             }
         }
         out.sort_unstable();
+        out.dedup();
         out
     }
 }

@@ -23,11 +23,17 @@
 mod bins;
 mod cone;
 mod filter;
+mod param;
+#[cfg(test)]
+mod reference;
 mod segment;
+
+use std::sync::OnceLock;
 
 use glam::{DMat4, DVec3};
 use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane, Side};
 use limn_scene::{Camera, Scene, Viewpoint};
+use rayon::prelude::*;
 
 use crate::geom::{bbox, Box2};
 use crate::{order, order_polygons, Arith, OrderError, OrderOptions, Ordered};
@@ -139,7 +145,7 @@ struct Occluder {
     opaque: bool,
     support: Plane,
     eye_side: Side,
-    cone: Option<Option<Cone>>,
+    cone: OnceLock<Option<Cone>>,
 }
 
 /// Hides the marks of `scene` against `ordered`, whose fragments' exact polygons are
@@ -218,6 +224,19 @@ fn run(
     opaque: Vec<bool>,
 ) -> Result<VisibleMarks, OrderError> {
     let t0 = std::time::Instant::now();
+    let shared = context(ordered, occ, opaque)?;
+    let mut out = hide_all(scene, &shared);
+    out.stats.ms = t0.elapsed().as_millis() as u64;
+    Ok(out)
+}
+
+/// What hiding works with: the occluders with their planes' sides of the eye, the bins,
+/// the eye and the near plane.
+fn context(
+    ordered: &Ordered,
+    occ: Vec<(ExactPolygon, usize, Box2)>,
+    opaque: Vec<bool>,
+) -> Result<segment::Shared, OrderError> {
     let cam = &ordered.camera;
     let fwd = cam.forward();
     let eye = cam.eye;
@@ -242,61 +261,109 @@ fn run(
                 opaque,
                 support,
                 eye_side,
-                cone: None,
+                cone: OnceLock::new(),
             }
         })
         .collect();
-    let mut ctx = segment::Ctx {
+    Ok(segment::Shared {
         occluders,
         bins: Bins::new(boxes),
         eye: eye_q,
         eye_f,
-        fa: Vec::new(),
-        fb: Vec::new(),
         near,
         camera: *cam,
         vp: view_projection(ordered),
         end: ordered.fragments.len(),
-        stats: MarkStats::default(),
-    };
-    let mut out = VisibleMarks::default();
-    for (i, line) in scene.lines.iter().enumerate() {
-        ctx.stats.lines += 1;
-        ctx.polyline(i as u32, &line.points, &mut out.pieces, &mut out.hidden);
-        if line.head {
-            let n = line.points.len();
-            if let Some(mut a) = ctx.anchor(i as u32, line.points[n - 1]) {
-                let prev = cam.project_with(&ctx.vp, line.points[n - 2]);
-                a.from = [prev.x, prev.y];
-                out.heads.push(a);
+        filter: true,
+    })
+}
+
+/// What hiding one polyline gives.
+#[derive(Default)]
+struct LineOut {
+    pieces: Vec<VisiblePiece>,
+    hidden: Vec<VisiblePiece>,
+    head: Option<VisibleAnchor>,
+    stats: MarkStats,
+}
+
+/// Every line, marker, label and head, hidden: the lines, points and labels each in
+/// parallel tasks whose results are joined in input order (the same on any number of
+/// threads).
+fn hide_all(scene: &Scene, sh: &segment::Shared) -> VisibleMarks {
+    let cam = sh.camera;
+    let lines: Vec<LineOut> = scene
+        .lines
+        .par_iter()
+        .enumerate()
+        .map(|(i, line)| {
+            let mut ctx = sh.task();
+            let mut o = LineOut::default();
+            ctx.stats.lines += 1;
+            ctx.polyline(i as u32, &line.points, &mut o.pieces, &mut o.hidden);
+            if line.head {
+                let n = line.points.len();
+                o.head = ctx.anchor(i as u32, line.points[n - 1]).map(|mut a| {
+                    let prev = cam.project_with(&sh.vp, line.points[n - 2]);
+                    a.from = [prev.x, prev.y];
+                    a
+                });
             }
-        }
+            o.stats = ctx.stats;
+            o
+        })
+        .collect();
+    let mut out = VisibleMarks::default();
+    for l in lines {
+        out.pieces.extend(l.pieces);
+        out.hidden.extend(l.hidden);
+        out.heads.extend(l.head);
+        out.stats.add(&l.stats);
     }
-    for (i, p) in scene.points.iter().enumerate() {
-        ctx.stats.markers_in += 1;
-        if let Some(a) = ctx.anchor(i as u32, p.at) {
-            ctx.stats.markers_shown += 1;
-            out.points.push(a);
-        }
+    let anchors = |at: Vec<DVec3>| -> Vec<(Option<VisibleAnchor>, MarkStats)> {
+        at.par_iter()
+            .enumerate()
+            .map(|(i, &p)| {
+                let mut ctx = sh.task();
+                (ctx.anchor(i as u32, p), ctx.stats)
+            })
+            .collect()
+    };
+    for (a, st) in anchors(scene.points.iter().map(|p| p.at).collect()) {
+        out.stats.add(&st);
+        out.stats.markers_in += 1;
+        out.stats.markers_shown += usize::from(a.is_some());
+        out.points.extend(a);
     }
-    for (i, l) in scene.labels.iter().enumerate() {
-        ctx.stats.labels_in += 1;
-        if let Some(a) = ctx.anchor(i as u32, l.at) {
-            ctx.stats.labels_shown += 1;
-            out.labels.push(a);
-        }
+    for (a, st) in anchors(scene.labels.iter().map(|l| l.at).collect()) {
+        out.stats.add(&st);
+        out.stats.labels_in += 1;
+        out.stats.labels_shown += usize::from(a.is_some());
+        out.labels.extend(a);
     }
-    ctx.stats.ms = t0.elapsed().as_millis() as u64;
-    out.stats = ctx.stats;
-    Ok(out)
+    out
+}
+
+impl MarkStats {
+    /// Adds the counts of `o` (the time is left alone).
+    fn add(&mut self, o: &MarkStats) {
+        self.lines += o.lines;
+        self.segments_in += o.segments_in;
+        self.pieces_out += o.pieces_out;
+        self.hidden_pieces += o.hidden_pieces;
+        self.markers_in += o.markers_in;
+        self.markers_shown += o.markers_shown;
+        self.labels_in += o.labels_in;
+        self.labels_shown += o.labels_shown;
+        self.exact_tests += o.exact_tests;
+    }
 }
 
 impl Occluder {
-    /// The exact cone, computed on first use.
-    fn cone(&mut self, eye: &EyeQ) -> Option<&Cone> {
-        if self.cone.is_none() {
-            self.cone = Some(Cone::new(&self.poly, eye));
-        }
-        self.cone.as_ref().and_then(Option::as_ref)
+    /// The exact cone, computed on first use (by whichever task needs it first).
+    fn cone(&self, eye: &EyeQ) -> Option<&Cone> {
+        self.cone
+            .get_or_init(|| Cone::new(&self.poly, eye))
+            .as_ref()
     }
 }

@@ -4,44 +4,65 @@
 use glam::{DMat4, DVec3};
 use limn_kernel::Plane;
 use limn_scene::Camera;
-use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::cmp::Ordering;
 
 use super::bins::Bins;
 use super::cone::{self, q3, Affine, EyeQ, Q};
 use super::filter;
+use super::param::Param;
 use super::{MarkStats, Occluder, VisibleAnchor, VisiblePiece};
 use crate::geom::Box2;
 
-/// What the segment pass works with.
-pub(super) struct Ctx {
+/// What every segment and anchor is hidden against (shared by the threads).
+pub(super) struct Shared {
     pub(super) occluders: Vec<Occluder>,
     pub(super) bins: Bins,
     pub(super) eye: EyeQ,
     /// The eye as given.
     pub(super) eye_f: filter::EyeF,
-    /// Scratch space of the filter.
-    pub(super) fa: Vec<filter::Iv>,
-    pub(super) fb: Vec<filter::Iv>,
     pub(super) near: Plane,
     pub(super) camera: Camera,
     pub(super) vp: DMat4,
     /// The fragments' count: the paint position after every fragment.
     pub(super) end: usize,
+    /// Whether the float filter decides what it can (off: everything exactly, the
+    /// reference the filter is tested against).
+    pub(super) filter: bool,
+}
+
+impl Shared {
+    /// A context for one task (its own scratch space and counts).
+    pub(super) fn task(&self) -> Ctx<'_> {
+        Ctx {
+            sh: self,
+            fa: Vec::new(),
+            fb: Vec::new(),
+            stats: MarkStats::default(),
+        }
+    }
+}
+
+/// What the segment pass works with: the shared data, and one task's scratch space and
+/// counts.
+pub(super) struct Ctx<'a> {
+    pub(super) sh: &'a Shared,
+    /// Scratch space of the filter.
+    pub(super) fa: Vec<filter::Iv>,
+    pub(super) fb: Vec<filter::Iv>,
     pub(super) stats: MarkStats,
 }
 
 /// The parameters `u ∈ [lo, hi]` where `f(A) + u·(f(B) − f(A)) ≥ 0`, intersected with
 /// `[lo, hi]`; `None` when empty.
-fn clip(fa: &Q, fb: &Q, lo: Q, hi: Q) -> Option<(Q, Q)> {
-    let slope = fb - fa;
+fn clip(fa: &Q, fb: &Q, lo: Param, hi: Param) -> Option<(Param, Param)> {
     let (mut lo, mut hi) = (lo, hi);
-    if slope.is_zero() {
-        if fa.is_negative() {
+    if fa == fb {
+        if fa.signum() == Ordering::Less {
             return None;
         }
     } else {
-        let root = -fa / &slope;
-        if slope.is_positive() {
+        let (root, slope) = Param::root(fa, fb);
+        if slope == Ordering::Greater {
             if root > lo {
                 lo = root;
             }
@@ -59,24 +80,23 @@ struct Open {
     start: f64,
 }
 
-impl Ctx {
+impl Ctx<'_> {
     fn project(&self, p: DVec3) -> [f64; 2] {
-        let s = self.camera.project_with(&self.vp, p);
+        let s = self.sh.camera.project_with(&self.sh.vp, p);
         [s.x, s.y]
     }
 
     /// The exact point `A + u(B − A)`, rounded once.
-    fn point_at(a: &[Q; 3], b: &[Q; 3], u: &Q) -> DVec3 {
-        let c = |i: usize| (&a[i] + u * (&b[i] - &a[i])).to_f64().unwrap_or(f64::NAN);
-        DVec3::new(c(0), c(1), c(2))
+    fn point_at(a: DVec3, b: DVec3, u: &Param) -> DVec3 {
+        DVec3::new(u.lerp(a.x, b.x), u.lerp(a.y, b.y), u.lerp(a.z, b.z))
     }
 
     /// Candidate occluders of a screen box that may lie in front of `pts` (exact plane
     /// sides: some point strictly on the far side of the occluder's plane from the eye).
     fn candidates(&mut self, pts: &[DVec3], screen: &Box2) -> Vec<u32> {
-        let mut c = self.bins.query(screen);
+        let mut c = self.sh.bins.query(screen);
         c.retain(|&i| {
-            let o = &self.occluders[i as usize];
+            let o = &self.sh.occluders[i as usize];
             pts.iter()
                 .any(|p| cone::may_be_behind(&o.support, o.eye_side, p.to_array()))
         });
@@ -106,7 +126,7 @@ impl Ctx {
         hidden_out: &mut Vec<VisiblePiece>,
     ) {
         let mut hopen: Option<Open> = None;
-        let near = Affine::of_plane(&self.near);
+        let near = Affine::of_plane(&self.sh.near);
         let mut open: Option<Open> = None;
         let mut hidden_open = false;
         let mut length = 0.0;
@@ -122,84 +142,24 @@ impl Ctx {
                 continue;
             }
             // The part in front of the near plane.
-            let Some((u_lo, u_hi)) = clip(&near.at(&qa), &near.at(&qb), Q::zero(), Q::one()) else {
+            let Some((u_lo, u_hi)) =
+                clip(&near.at(&qa), &near.at(&qb), Param::zero(), Param::one())
+            else {
                 close(&mut open, line, out, self, &mut hidden_open, true);
                 continue;
             };
-            let ends = [
-                Self::point_at(&qa, &qb, &u_lo),
-                Self::point_at(&qa, &qb, &u_hi),
-            ];
+            let ends = [Self::point_at(a, b, &u_lo), Self::point_at(a, b, &u_hi)];
             let screen = self.screen_box(&ends, &[true, true]);
             let cands = self.candidates(&[a, b], &screen);
             // Exact intervals: hidden (opaque) and covered (translucent, with position).
-            let mut hidden: Vec<(Q, Q)> = Vec::new();
-            let mut covered: Vec<(Q, Q, usize)> = Vec::new();
+            let mut hidden: Vec<(Param, Param)> = Vec::new();
+            let mut covered: Vec<(Param, Param, usize)> = Vec::new();
             for i in cands {
-                let o = &self.occluders[i as usize];
-                let (opaque, before) = (o.opaque, o.before);
-                // The filter: a condition certainly failing at both ends fails all along;
-                // every condition certainly holding at both ends holds all along.
-                let ok_a = filter::conditions(
-                    &o.poly,
-                    &o.support,
-                    o.eye_side,
-                    self.eye_f,
-                    a.to_array(),
-                    &mut self.fa,
-                );
-                let ok_b = filter::conditions(
-                    &o.poly,
-                    &o.support,
-                    o.eye_side,
-                    self.eye_f,
-                    b.to_array(),
-                    &mut self.fb,
-                );
-                if ok_a && ok_b {
-                    let (fa, fb) = (&self.fa, &self.fb);
-                    let fails = fa[0].nonpos() && fb[0].nonpos()
-                        || fa[1..]
-                            .iter()
-                            .zip(&fb[1..])
-                            .any(|(x, y)| x.neg_strict() && y.neg_strict());
-                    if fails {
-                        continue;
-                    }
-                    let holds = fa[0].pos()
-                        && fb[0].pos()
-                        && fa[1..]
-                            .iter()
-                            .zip(&fb[1..])
-                            .all(|(x, y)| x.nonneg() && y.nonneg());
-                    if holds {
-                        if u_lo < u_hi {
-                            if opaque {
-                                hidden.push((u_lo.clone(), u_hi.clone()));
-                            } else {
-                                covered.push((u_lo.clone(), u_hi.clone(), before));
-                            }
-                        }
-                        continue;
-                    }
-                }
-                if ok_a && ok_b && filter::certainly_empty(&self.fa, &self.fb) {
-                    continue;
-                }
-                self.stats.exact_tests += 1;
-                let eye = self.eye.clone();
-                let o = &mut self.occluders[i as usize];
-                let Some(c) = o.cone(&eye) else { continue };
-                let mut iv = clip(
-                    &c.behind.at(&qa),
-                    &c.behind.at(&qb),
-                    u_lo.clone(),
-                    u_hi.clone(),
-                );
-                for wall in &c.walls {
-                    iv = iv.and_then(|(lo, hi)| clip(&wall.at(&qa), &wall.at(&qb), lo, hi));
-                }
-                if let Some((lo, hi)) = iv.filter(|(lo, hi)| lo < hi) {
+                let (opaque, before) = {
+                    let o = &self.sh.occluders[i as usize];
+                    (o.opaque, o.before)
+                };
+                if let Some((lo, hi)) = self.cone_part(i, [a, b], [&qa, &qb], &u_lo, &u_hi) {
                     if opaque {
                         hidden.push((lo, hi));
                     } else {
@@ -208,7 +168,8 @@ impl Ctx {
                 }
             }
             // Elementary intervals between all break points.
-            let mut cuts: Vec<Q> = vec![Q::zero(), u_lo.clone(), u_hi.clone(), Q::one()];
+            let mut cuts: Vec<Param> =
+                vec![Param::zero(), u_lo.clone(), u_hi.clone(), Param::one()];
             for (lo, hi) in &hidden {
                 cuts.push(lo.clone());
                 cuts.push(hi.clone());
@@ -219,22 +180,24 @@ impl Ctx {
             }
             cuts.sort();
             cuts.dedup();
+            // Each break point's position, rounded once.
+            let at: Vec<DVec3> = cuts.iter().map(|t| Self::point_at(a, b, t)).collect();
             for k in 0..cuts.len() - 1 {
                 let (t0, t1) = (&cuts[k], &cuts[k + 1]);
-                let inside = |lo: &Q, hi: &Q| lo <= t0 && t1 <= hi;
+                let inside = |lo: &Param, hi: &Param| lo <= t0 && t1 <= hi;
                 let clipped = t1 <= &u_lo || t0 >= &u_hi;
                 if clipped || hidden.iter().any(|(lo, hi)| inside(lo, hi)) {
                     close(&mut open, line, out, self, &mut hidden_open, true);
                     if !clipped {
-                        let p0 = Self::point_at(&qa, &qb, t0);
-                        let p1 = Self::point_at(&qa, &qb, t1);
+                        let p0 = at[k];
+                        let p1 = at[k + 1];
                         match &mut hopen {
                             Some(o) if o.world.last() == Some(&p0) => o.world.push(p1),
                             _ => {
                                 self.flush_hidden(&mut hopen, line, hidden_out);
                                 hopen = Some(Open {
                                     world: vec![p0, p1],
-                                    before: self.end,
+                                    before: self.sh.end,
                                     start: seg_start,
                                 });
                             }
@@ -248,9 +211,9 @@ impl Ctx {
                     .filter(|(lo, hi, _)| inside(lo, hi))
                     .map(|c| c.2)
                     .min()
-                    .unwrap_or(self.end);
-                let p0 = Self::point_at(&qa, &qb, t0);
-                let p1 = Self::point_at(&qa, &qb, t1);
+                    .unwrap_or(self.sh.end);
+                let p0 = at[k];
+                let p1 = at[k + 1];
                 match &mut open {
                     Some(o) if o.before == before && o.world.last() == Some(&p0) => {
                         o.world.push(p1)
@@ -275,6 +238,103 @@ impl Ctx {
         }
     }
 
+    /// The parameters in `[u_lo, u_hi]` of segment `AB` (`ends`, and exactly `exact`)
+    /// where occluder `i`'s cone conditions hold, when they form an interval of positive
+    /// length: decided by the float filter where it can, exactly otherwise.
+    pub(super) fn cone_part(
+        &mut self,
+        i: u32,
+        ends: [DVec3; 2],
+        exact: [&[Q; 3]; 2],
+        u_lo: &Param,
+        u_hi: &Param,
+    ) -> Option<(Param, Param)> {
+        if self.sh.filter {
+            let o = &self.sh.occluders[i as usize];
+            let [a, b] = ends.map(|p| p.to_array());
+            let ok_a = filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.sh.eye_f,
+                a,
+                &mut self.fa,
+            );
+            let ok_b = filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.sh.eye_f,
+                b,
+                &mut self.fb,
+            );
+            if ok_a && ok_b {
+                match filter::segment_verdict(&self.fa, &self.fb) {
+                    filter::Verdict::Nowhere => return None,
+                    filter::Verdict::Everywhere => {
+                        return (u_lo < u_hi).then(|| (u_lo.clone(), u_hi.clone()));
+                    }
+                    filter::Verdict::Unknown => {}
+                }
+            }
+        }
+        self.stats.exact_tests += 1;
+        self.exact_part(i, exact, u_lo, u_hi)
+    }
+
+    /// [`Ctx::cone_part`] evaluated exactly.
+    pub(super) fn exact_part(
+        &mut self,
+        i: u32,
+        [qa, qb]: [&[Q; 3]; 2],
+        u_lo: &Param,
+        u_hi: &Param,
+    ) -> Option<(Param, Param)> {
+        let c = self.sh.occluders[i as usize].cone(&self.sh.eye)?;
+        let (ba, bb) = (c.behind.at(qa), c.behind.at(qb));
+        if ba.is_zero() && bb.is_zero() {
+            // The segment lies in the occluder's plane: never hidden by it.
+            return None;
+        }
+        let mut iv = clip(&ba, &bb, u_lo.clone(), u_hi.clone());
+        for wall in &c.walls {
+            iv = iv.and_then(|(lo, hi)| clip(&wall.at(qa), &wall.at(qb), lo, hi));
+        }
+        iv.filter(|(lo, hi)| lo < hi)
+    }
+
+    /// Whether occluder `i`'s cone holds the point `p` (exactly `qp`): decided by the
+    /// float filter where it can, exactly otherwise.
+    pub(super) fn cone_holds(&mut self, i: u32, p: DVec3, qp: &[Q; 3]) -> bool {
+        if self.sh.filter {
+            let o = &self.sh.occluders[i as usize];
+            if !filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.sh.eye_f,
+                p.to_array(),
+                &mut self.fa,
+            ) {
+                return false;
+            }
+            match filter::point_verdict(&self.fa) {
+                filter::Verdict::Nowhere => return false,
+                filter::Verdict::Everywhere => return true,
+                filter::Verdict::Unknown => {}
+            }
+        }
+        self.stats.exact_tests += 1;
+        self.exact_holds(i, qp)
+    }
+
+    /// [`Ctx::cone_holds`] evaluated exactly.
+    pub(super) fn exact_holds(&mut self, i: u32, qp: &[Q; 3]) -> bool {
+        self.sh.occluders[i as usize]
+            .cone(&self.sh.eye)
+            .is_some_and(|c| c.hides(qp))
+    }
+
     /// Moves a hidden piece being built to `out`.
     fn flush_hidden(&self, open: &mut Option<Open>, line: u32, out: &mut Vec<VisiblePiece>) {
         if let Some(o) = open.take() {
@@ -293,7 +353,7 @@ impl Ctx {
     /// nearer than the near plane.
     pub(super) fn anchor(&mut self, index: u32, p: DVec3) -> Option<VisibleAnchor> {
         let qp = q3(p.to_array());
-        if Affine::of_plane(&self.near).at(&qp).is_negative() {
+        if Affine::of_plane(&self.sh.near).at(&qp).signum() == Ordering::Less {
             return None;
         }
         let at = self.project(p);
@@ -303,38 +363,13 @@ impl Ctx {
             max_x: at[0],
             max_y: at[1],
         };
-        let mut before = self.end;
+        let mut before = self.sh.end;
         for i in self.candidates(&[p], &b) {
-            let o = &self.occluders[i as usize];
-            let (opaque, pos) = (o.opaque, o.before);
-            let decided = if filter::conditions(
-                &o.poly,
-                &o.support,
-                o.eye_side,
-                self.eye_f,
-                p.to_array(),
-                &mut self.fa,
-            ) {
-                let f = &self.fa;
-                if f[0].nonpos() || f[1..].iter().any(|x| x.neg_strict()) {
-                    Some(false)
-                } else if f[0].pos() && f[1..].iter().all(|x| x.nonneg()) {
-                    Some(true)
-                } else {
-                    None
-                }
-            } else {
-                Some(false)
+            let (opaque, pos) = {
+                let o = &self.sh.occluders[i as usize];
+                (o.opaque, o.before)
             };
-            let hides = match decided {
-                Some(h) => h,
-                None => {
-                    self.stats.exact_tests += 1;
-                    let eye = self.eye.clone();
-                    let o = &mut self.occluders[i as usize];
-                    o.cone(&eye).is_some_and(|c| c.hides(&qp))
-                }
-            };
+            let hides = self.cone_holds(i, p, &qp);
             if hides {
                 if opaque {
                     return None;
