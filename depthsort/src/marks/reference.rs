@@ -53,6 +53,15 @@ impl Affine {
                 };
                 (if flip { n.map(|x| -x) } else { n }, p)
             }
+            PlaneDef::Along { p, q, d } => {
+                let (u, v) = (sub(q, p), [r(d[0]), r(d[1]), r(d[2])]);
+                let n = [
+                    &u[1] * &v[2] - &u[2] * &v[1],
+                    &u[2] * &v[0] - &u[0] * &v[2],
+                    &u[0] * &v[1] - &u[1] * &v[0],
+                ];
+                (n, p)
+            }
             PlaneDef::PointNormal { p, n } => (r3(n), p),
         };
         let pq = r3(p);
