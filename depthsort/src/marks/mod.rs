@@ -155,6 +155,9 @@ pub fn hide_marks(
     ordered: &Ordered,
     polys: &[ExactPolygon],
 ) -> Result<VisibleMarks, OrderError> {
+    if !has_marks(scene) {
+        return Ok(VisibleMarks::default());
+    }
     let occ: Vec<(ExactPolygon, usize, Box2)> = polys
         .iter()
         .zip(&ordered.fragments)
@@ -169,6 +172,9 @@ pub fn hide_marks(
 /// Hides the marks against exact polygons of the input faces (for orders made by the
 /// float kernel, whose fragments have no exact polygons).
 fn hide_marks_by_face(scene: &Scene, ordered: &Ordered) -> Result<VisibleMarks, OrderError> {
+    if !has_marks(scene) {
+        return Ok(VisibleMarks::default());
+    }
     let k = ExactKernel::new();
     let n = ordered.fragments.len();
     let mut first = vec![n; scene.faces.len()];
@@ -205,6 +211,12 @@ fn hide_marks_by_face(scene: &Scene, ordered: &Ordered) -> Result<VisibleMarks, 
         }
     }
     run(scene, ordered, occ, flags)
+}
+
+/// Whether the scene has anything to hide: without lines, markers or labels the
+/// occluders are not even gathered.
+fn has_marks(scene: &Scene) -> bool {
+    !(scene.lines.is_empty() && scene.points.is_empty() && scene.labels.is_empty())
 }
 
 fn face_opaque(scene: &Scene, face: u32) -> bool {
