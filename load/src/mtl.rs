@@ -10,7 +10,7 @@
 //!
 //! `tobj` has an MTL parser, but its errors carry neither file nor line.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::path::Path;
 
 use super::text::{lossy, number, rest_after_keyword, strip_comment, tokens, Lines};
