@@ -505,7 +505,7 @@ impl Obj<'_> {
             Some(&m) => m,
             None => {
                 let name = self.material_name.clone().unwrap_or_default();
-                let mat = match self.library.materials.get(&name) {
+                let mat = match self.library.get(&name) {
                     Some(m) => m.clone(),
                     None => {
                         if !name.is_empty() {
