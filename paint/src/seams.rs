@@ -1,10 +1,6 @@
 //! Seam flaps: closing the hairlines viewers leave between adjacent fills without moving
 //! any boundary of the picture.
 
-use std::collections::hash_map::Entry;
-
-use rustc_hash::FxHashMap;
-
 use crate::PaintFragment;
 
 /// The bits of an edge's end points, smaller end first (an undirected edge key).
@@ -39,7 +35,7 @@ pub fn seam_flaps_indexed(
     fragments: Vec<PaintFragment>,
     width: f64,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
-    let later = EdgeLists::new(&fragments);
+    let later = LaterNeighbours::new(&fragments);
     // The flaps first (they read the later fragments), in the order of the fragments
     // they follow; then the fragments moved into the output with their flaps after
     // them: no fragment is copied.
@@ -52,10 +48,7 @@ pub fn seam_flaps_indexed(
         for e in 0..n {
             let (a, b) = (f.points[e], f.points[(e + 1) % n]);
             // The first fragment of another face painted after this one.
-            let Some(j) = later
-                .after(edge_key(a, b), i)
-                .find(|&j| fragments[j].face != f.face)
-            else {
+            let Some(j) = later.of(i, e) else {
                 continue;
             };
             if let Some(points) = flap(&fragments[j].points, a, b, width) {
@@ -124,62 +117,60 @@ fn opaque(f: &PaintFragment) -> bool {
     f.fill[3] >= 1.0
 }
 
-/// For every edge key, the opaque fragments having that edge, in paint order: a hash
-/// table from the key to the first and last entries of a list threaded through one
-/// vector (no allocation per edge).
-struct EdgeLists {
-    ends: FxHashMap<EdgeKey, (usize, usize)>,
-    /// Per entry: its fragment and the next entry of the same key (`usize::MAX`: none).
-    entries: Vec<(usize, usize)>,
+/// For every edge of every opaque fragment, the first opaque fragment of another face
+/// painted later that has the same edge (end points equal). Found by sorting all
+/// edges by key, then paint order: the fragments sharing an edge become neighbours in
+/// one vector, read front to back (a hash table of the edges cost a cache miss per
+/// edge on large pictures).
+struct LaterNeighbours {
+    /// Where fragment `i`'s edges start in `first_later`.
+    starts: Vec<usize>,
+    /// Per edge: the fragment found, or `usize::MAX`.
+    first_later: Vec<usize>,
 }
 
-impl EdgeLists {
+impl LaterNeighbours {
     fn new(fragments: &[PaintFragment]) -> Self {
-        let edges = fragments
-            .iter()
-            .filter(|f| opaque(f))
-            .map(|f| f.points.len())
-            .sum();
-        let mut ends: FxHashMap<EdgeKey, (usize, usize)> =
-            FxHashMap::with_capacity_and_hasher(edges, Default::default());
-        let mut entries: Vec<(usize, usize)> = Vec::with_capacity(edges);
+        let mut starts = Vec::with_capacity(fragments.len() + 1);
+        let mut edges: Vec<(EdgeKey, usize, usize)> = Vec::new();
         for (j, f) in fragments.iter().enumerate() {
+            starts.push(edges.len());
             if !opaque(f) {
                 continue;
             }
             let n = f.points.len();
-            for i in 0..n {
-                let id = entries.len();
-                entries.push((j, usize::MAX));
-                let key = edge_key(f.points[i], f.points[(i + 1) % n]);
-                match ends.entry(key) {
-                    Entry::Occupied(mut o) => {
-                        let (_, last) = o.get_mut();
-                        entries[*last].1 = id;
-                        *last = id;
-                    }
-                    Entry::Vacant(v) => {
-                        v.insert((id, id));
-                    }
+            for e in 0..n {
+                edges.push((edge_key(f.points[e], f.points[(e + 1) % n]), j, e));
+            }
+        }
+        starts.push(edges.len());
+        // A total order on (key, fragment, edge): the same result from any sort.
+        edges.sort_unstable();
+        let mut first_later = vec![usize::MAX; edges.len()];
+        for group in edges.chunk_by(|a, b| a.0 == b.0) {
+            if group.len() < 2 {
+                continue;
+            }
+            for &(_, i, e) in group {
+                let face = fragments[i].face;
+                if let Some(&(_, j, _)) = group
+                    .iter()
+                    .find(|&&(_, j, _)| j > i && fragments[j].face != face)
+                {
+                    first_later[starts[i] + e] = j;
                 }
             }
         }
-        EdgeLists { ends, entries }
+        LaterNeighbours {
+            starts,
+            first_later,
+        }
     }
 
-    /// The fragments after fragment `i` having the edge `key`, in paint order.
-    fn after(&self, key: EdgeKey, i: usize) -> impl Iterator<Item = usize> + '_ {
-        let mut next = self.ends.get(&key).map_or(usize::MAX, |&(first, _)| first);
-        std::iter::from_fn(move || {
-            while next != usize::MAX {
-                let (j, after) = self.entries[next];
-                next = after;
-                if j > i {
-                    return Some(j);
-                }
-            }
-            None
-        })
+    /// The first later fragment of another face sharing edge `e` of fragment `i`.
+    fn of(&self, i: usize, e: usize) -> Option<usize> {
+        let j = self.first_later[self.starts[i] + e];
+        (j != usize::MAX).then_some(j)
     }
 }
 
@@ -224,7 +215,7 @@ mod tests {
     use super::*;
 
     /// The first implementation: one `Vec` of later fragments per edge key, and one of
-    /// flaps per fragment. The reference the edge lists are checked against.
+    /// flaps per fragment. The reference the sorted edges are checked against.
     fn seam_flaps_reference(
         fragments: Vec<PaintFragment>,
         width: f64,
@@ -343,7 +334,7 @@ mod tests {
     }
 
     #[test]
-    fn edge_lists_give_the_reference_flaps() {
+    fn sorted_edges_give_the_reference_flaps() {
         for seed in 0..20 {
             let frags = grid_fragments(seed);
             let (out, at) = seam_flaps_indexed(frags.clone(), 0.5);
