@@ -4,12 +4,12 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
-use limn_depthsort::order_with_marks;
+use limn_depthsort::{order, order_with_marks, OrderError, OrderOptions, Ordered, VisibleMarks};
 use limn_paint::{
     hidden_line_picture, hidden_line_scene, painter_for, picture_with_marks, Format,
     HiddenLineStyle, Outline, Painter, Style, SvgOptions, SvgPainter, TikzOptions, TikzPainter,
 };
-use limn_scene::Effects;
+use limn_scene::{Camera, Effects, Scene};
 
 use crate::args::{Background, FillArg, HiddenArg, MethodArg, RenderArgs, StyleArg};
 use crate::losses::losses;
@@ -73,8 +73,7 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
         hidden_line_scene(&loaded.scene, &cam, h, fill)
     });
     let scene = drawn_scene.as_ref().map_or(&loaded.scene, |d| &d.0);
-    let (ordered, marks) =
-        order_with_marks(scene, &cam, &oo).map_err(|e| explain_order(e, &a.input))?;
+    let (ordered, marks) = order_scene(scene, &cam, &oo).map_err(|e| explain_order(e, &a.input))?;
     let t2 = Instant::now();
     progress.phase("writing");
     let fo = &loaded.opts;
@@ -157,7 +156,25 @@ pub fn render(a: RenderArgs) -> Result<ExitCode> {
             timing.total
         );
     }
+    // The process ends after this: freeing the scene, the order and the picture one
+    // allocation at a time (millions on large scenes) takes longer than the system takes
+    // to reclaim the whole process.
+    std::mem::forget((loaded, drawn_scene, ordered, marks, pic));
     Ok(ExitCode::SUCCESS)
+}
+
+/// Orders `scene` and hides its lines, markers and labels. A scene without any is only
+/// ordered: hiding marks makes an occluder of every fragment (a copy of its exact
+/// polygon, its planes and screen bins) even when there is nothing to hide.
+fn order_scene(
+    scene: &Scene,
+    cam: &Camera,
+    oo: &OrderOptions,
+) -> Result<(Ordered, VisibleMarks), OrderError> {
+    if scene.lines.is_empty() && scene.points.is_empty() && scene.labels.is_empty() {
+        return Ok((order(scene, cam, oo)?, VisibleMarks::default()));
+    }
+    order_with_marks(scene, cam, oo)
 }
 
 /// The hidden-line style the flags and the scene file ask for, or `None` for filled

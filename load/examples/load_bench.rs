@@ -1,13 +1,14 @@
 //! Times the loaders on generated 1M-triangle files: a binary STL, an OBJ and a binary
-//! PLY of the same torus (1000 × 500 quads, each split in two triangles).
+//! PLY of the same torus (1000 × 500 quads, each split in two triangles); or, when files
+//! are named after the number of runs, on those files.
 //!
 //! ```text
-//! cargo run --release -p limn-scene --example load_bench [-- RUNS]
+//! cargo run --release -p limn-load --example load_bench [-- RUNS [FILE ...]]
 //! ```
 
 use std::f64::consts::TAU;
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 use limn_load::{load, LoadOptions};
@@ -87,13 +88,16 @@ fn write_files(dir: &Path) -> std::io::Result<()> {
     ply.flush()
 }
 
-/// Time this thread has spent on a CPU (Linux `/proc/thread-self/schedstat`), which a
-/// busy shared machine inflates less than wall time; `None` elsewhere.
+/// Time the threads of this process have spent on a CPU (Linux
+/// `/proc/self/task/*/schedstat`; the loaders' worker threads live as long as the
+/// process), which a busy shared machine inflates less than wall time; `None` elsewhere.
 fn cpu_time() -> Option<Duration> {
-    let s = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
-    Some(Duration::from_nanos(
-        s.split_whitespace().next()?.parse().ok()?,
-    ))
+    let mut total = 0;
+    for task in std::fs::read_dir("/proc/self/task").ok()? {
+        let s = std::fs::read_to_string(task.ok()?.path().join("schedstat")).ok()?;
+        total += s.split_whitespace().next()?.parse::<u64>().ok()?;
+    }
+    Some(Duration::from_nanos(total))
 }
 
 fn ms(d: Duration) -> String {
@@ -103,13 +107,21 @@ fn ms(d: Duration) -> String {
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let runs: usize = std::env::args().nth(1).map_or(Ok(5), |a| a.parse())?;
     let dir = tempfile::tempdir()?;
-    write_files(dir.path())?;
+    let named: Vec<PathBuf> = std::env::args().skip(2).map(PathBuf::from).collect();
+    let files = if named.is_empty() {
+        write_files(dir.path())?;
+        ["torus.stl", "torus.obj", "torus.ply"]
+            .map(|name| dir.path().join(name))
+            .to_vec()
+    } else {
+        named
+    };
     println!(
         "| file | size | faces | vertices | wall best | wall median | CPU best | CPU median |"
     );
     println!("|---|---:|---:|---:|---:|---:|---:|---:|");
-    for name in ["torus.stl", "torus.obj", "torus.ply"] {
-        let path = dir.path().join(name);
+    for path in files {
+        let name = path.file_name().unwrap_or_default().to_string_lossy();
         let size = std::fs::metadata(&path)?.len();
         let mut times: Vec<Duration> = Vec::new();
         let mut cpu: Vec<Duration> = Vec::new();

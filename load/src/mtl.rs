@@ -10,7 +10,7 @@
 //!
 //! `tobj` has an MTL parser, but its errors carry neither file nor line.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::path::Path;
 
 use super::text::{lossy, number, rest_after_keyword, strip_comment, tokens, Lines};
@@ -18,13 +18,34 @@ use super::{LoadError, Location};
 use limn_scene::Material;
 
 /// Materials by name, in the order of definition (later definitions replace earlier
-/// ones of the same name).
+/// ones of the same name). Kept in a vector with a small table of names beside it: an
+/// OBJ with one material per face looks a name up for each, and the table's entries stay
+/// few cache lines.
 #[derive(Debug, Default)]
 pub(crate) struct Library {
-    pub(crate) materials: HashMap<String, Material>,
+    materials: Vec<Material>,
+    by_name: HashMap<String, usize>,
     /// The `map_Kd` of each material that has one, by material name. The image is read
     /// only when a face with texture coordinates uses the material.
     pub(crate) maps: HashMap<String, MapRef>,
+}
+
+impl Library {
+    /// Adds `m`, replacing a material of the same name.
+    pub(crate) fn insert(&mut self, m: Material) {
+        match self.by_name.get(&m.name) {
+            Some(&i) => self.materials[i] = m,
+            None => {
+                self.by_name.insert(m.name.clone(), self.materials.len());
+                self.materials.push(m);
+            }
+        }
+    }
+
+    /// The material named `name`.
+    pub(crate) fn get(&self, name: &str) -> Option<&Material> {
+        self.by_name.get(name).map(|&i| &self.materials[i])
+    }
 }
 
 /// A `map_Kd` statement: the image as named, where it was named, and the options that
@@ -65,7 +86,7 @@ pub(crate) fn parse(
         let Some(key) = toks.next() else { continue };
         if key == b"newmtl" {
             if let Some(m) = current.take() {
-                lib.materials.insert(m.name.clone(), m);
+                lib.insert(m);
             }
             // A redefinition starts without the earlier definition's map.
             lib.maps.remove(&lossy(rest_after_keyword(line)));
@@ -155,7 +176,7 @@ pub(crate) fn parse(
         }
     }
     if let Some(m) = current.take() {
-        lib.materials.insert(m.name.clone(), m);
+        lib.insert(m);
     }
     if let Some((line, key)) = textures {
         warnings.push(format!(
@@ -297,17 +318,27 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_later_definition_replaces_an_earlier_one() {
+        let src = b"newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 1 0\nnewmtl a\nKd 0 0 1\n";
+        let mut lib = Library::default();
+        parse(src, Path::new("x.mtl"), &mut lib, &mut Vec::new()).unwrap();
+        assert_eq!(lib.get("a").unwrap().kd, [0.0, 0.0, 1.0]);
+        assert_eq!(lib.get("b").unwrap().kd, [0.0, 1.0, 0.0]);
+        assert!(lib.get("c").is_none());
+    }
+
+    #[test]
     fn reads_the_fields_limn_uses() {
         let src = b"# c\nnewmtl red\nKd 1 0 0\nKs 0.5 0.5 0.5\nNs 20\nillum 2\nTr 0.25\n\
                     newmtl unlit glass\nKd 0.2\nd -halo 0.5\nillum 0\nmap_Ks x.png\n";
         let mut lib = Library::default();
         let mut w = Vec::new();
         parse(src, Path::new("a.mtl"), &mut lib, &mut w).unwrap();
-        let red = &lib.materials["red"];
+        let red = lib.get("red").unwrap();
         assert_eq!(red.kd, [1.0, 0.0, 0.0]);
         assert_eq!(red.ks, [0.5; 3]);
         assert_eq!((red.ns, red.illum, red.opacity), (20.0, 2, 0.75));
-        let g = &lib.materials["unlit glass"];
+        let g = lib.get("unlit glass").unwrap();
         assert_eq!((g.kd, g.opacity, g.illum), ([0.2; 3], 0.5, 0));
         // The texture map is the one thing not drawn: one warning at its line.
         assert_eq!(w.len(), 1, "{w:?}");

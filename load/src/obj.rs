@@ -19,7 +19,7 @@
 //! accepted and ignored; any other statement is an error (so
 //! binary garbage is reported, not silently dropped).
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -97,16 +97,16 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         opts,
         scene: Scene::default(),
         library: Library::default(),
-        objects: HashMap::new(),
+        objects: HashMap::default(),
         object_name: stem(path),
         object: None,
-        materials: HashMap::new(),
+        materials: HashMap::default(),
         material_name: None,
         material_line: 0,
         material: None,
-        images: HashMap::new(),
-        textured: HashMap::new(),
-        moved: HashMap::new(),
+        images: HashMap::default(),
+        textured: HashMap::default(),
+        moved: HashMap::default(),
     };
     let mut lines = Lines::new(bytes, path, true);
     while let Some(next) = lines.next_line() {
@@ -173,13 +173,16 @@ impl Obj<'_> {
                 self.object = None;
             }
             b"usemtl" => {
-                let name = lossy(rest_after_keyword(line));
+                let name = rest_after_keyword(line);
                 if name.is_empty() {
                     return Err(LoadError::syntax(self.path, n, "usemtl without a name"));
                 }
-                self.material_name = Some(name);
+                // The same name again keeps the material found (no lookup, no copy).
+                if self.material_name.as_deref().map(str::as_bytes) != Some(name) {
+                    self.material_name = Some(lossy(name));
+                    self.material = None;
+                }
                 self.material_line = n;
-                self.material = None;
             }
             b"mtllib" => self.mtllib(n, rest_after_keyword(line))?,
             b"l" => self.line(n, toks)?,
@@ -222,9 +225,11 @@ impl Obj<'_> {
 
     fn face<'t>(&mut self, n: u64, toks: impl Iterator<Item = &'t [u8]>) -> Result<(), LoadError> {
         let mut vertices = Vec::with_capacity(4);
-        let mut normals = Vec::with_capacity(4);
+        // Allocated at the first normal index: most faces have none.
+        let mut normals = Vec::new();
         let mut all_normals = true;
-        let mut texcoords = Vec::with_capacity(4);
+        // Allocated at the first texture coordinate index, like the normals.
+        let mut texcoords = Vec::new();
         let mut all_texcoords = true;
         for t in toks {
             let mut parts = t.split(|&b| b == b'/');
@@ -493,11 +498,14 @@ impl Obj<'_> {
             return Ok(m);
         }
         // The default grey is keyed by the empty name, which no usemtl can give.
-        let name = self.material_name.clone().unwrap_or_default();
-        let m = match self.materials.get(&name) {
+        let known = self
+            .materials
+            .get(self.material_name.as_deref().unwrap_or(""));
+        let m = match known {
             Some(&m) => m,
             None => {
-                let mat = match self.library.materials.get(&name) {
+                let name = self.material_name.clone().unwrap_or_default();
+                let mat = match self.library.get(&name) {
                     Some(m) => m.clone(),
                     None => {
                         if !name.is_empty() {

@@ -23,9 +23,19 @@ pub(crate) struct Lines<'a> {
 
 impl<'a> Lines<'a> {
     pub(crate) fn new(bytes: &'a [u8], path: &'a Path, join_backslash: bool) -> Self {
+        Self::starting_at(bytes, path, join_backslash, 1)
+    }
+
+    /// Lines of `bytes`, the first numbered `first` (a part of a file that starts a line).
+    pub(crate) fn starting_at(
+        bytes: &'a [u8],
+        path: &'a Path,
+        join_backslash: bool,
+        first: u64,
+    ) -> Self {
         Lines {
             rest: bytes,
-            next_line: 1,
+            next_line: first,
             path,
             join_backslash,
         }
@@ -45,7 +55,7 @@ impl<'a> Lines<'a> {
         if self.rest.is_empty() {
             return None;
         }
-        let (line, rest) = match self.rest.iter().position(|&b| b == b'\n') {
+        let (line, rest) = match memchr::memchr(b'\n', self.rest) {
             Some(i) => (&self.rest[..i], &self.rest[i + 1..]),
             None => (self.rest, &self.rest[self.rest.len()..]),
         };
@@ -83,16 +93,35 @@ impl<'a> Lines<'a> {
 
 /// The part of a line before a `#` comment.
 pub(crate) fn strip_comment(line: &[u8]) -> &[u8] {
-    match line.iter().position(|&b| b == b'#') {
+    match memchr::memchr(b'#', line) {
         Some(i) => &line[..i],
         None => line,
     }
 }
 
 /// Whitespace-separated tokens.
-pub(crate) fn tokens(line: &[u8]) -> impl Iterator<Item = &[u8]> {
-    line.split(|b| b.is_ascii_whitespace())
-        .filter(|t| !t.is_empty())
+pub(crate) fn tokens(line: &[u8]) -> Tokens<'_> {
+    Tokens { rest: line }
+}
+
+/// The iterator of [`tokens`]: runs of bytes other than ASCII whitespace.
+pub(crate) struct Tokens<'a> {
+    rest: &'a [u8],
+}
+
+impl<'a> Iterator for Tokens<'a> {
+    type Item = &'a [u8];
+
+    fn next(&mut self) -> Option<&'a [u8]> {
+        let start = self.rest.iter().position(|b| !b.is_ascii_whitespace())?;
+        let rest = &self.rest[start..];
+        let end = rest
+            .iter()
+            .position(|b| b.is_ascii_whitespace())
+            .unwrap_or(rest.len());
+        self.rest = &rest[end..];
+        Some(&rest[..end])
+    }
 }
 
 /// The rest of a line after its first token, trimmed (for names that may hold spaces).
@@ -223,6 +252,14 @@ mod tests {
         assert!(l.next_line().unwrap().is_ok());
         let e = l.next_line().unwrap().unwrap_err();
         assert!(matches!(e, LoadError::NotText { ref at } if at.line == Some(2)));
+    }
+
+    #[test]
+    fn tokens_split_at_any_ascii_whitespace() {
+        let got: Vec<String> = tokens(b" \tf  1/2\x0c3 \r").map(lossy).collect();
+        assert_eq!(got, ["f", "1/2", "3"]);
+        assert_eq!(tokens(b" \t ").next(), None);
+        assert_eq!(tokens(b"").next(), None);
     }
 
     #[test]

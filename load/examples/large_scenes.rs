@@ -1,0 +1,105 @@
+//! Writes the OBJ files of the end-to-end measurements in BENCHMARKS.md into a folder:
+//!
+//! * `sphere100k.obj`: a closed UV sphere of 99,856 triangles (159 rings × 316
+//!   segments), numbers in Rust's shortest round-trip form of f64;
+//! * `sphere1m.obj`: the same sphere at 1,001,112 triangles (708 × 708);
+//! * `soup10k.obj`, `soup10k-lib.obj` and `soup10k-mtl.obj`: the same 10,000 random
+//!   triangles (edges up to 0.08 in a 2 × 2 × 2 cube): without materials; with a library
+//!   of 10,000 materials (`soup10k-mtl.mtl`) and one `usemtl` before all faces; with the
+//!   same library and one `usemtl` per face, each naming another material.
+//!
+//! ```text
+//! cargo run --release -p limn-load --example large_scenes -- FOLDER
+//! limn render FOLDER/sphere100k.obj -o sphere100k.svg
+//! ```
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::Path;
+
+use glam::DVec3;
+use limn_scene::{shapes, Material, Scene};
+
+/// How the faces of an OBJ use materials.
+#[derive(Clone, Copy, PartialEq)]
+enum Materials {
+    /// No `mtllib`, no `usemtl`.
+    None,
+    /// The library, and `usemtl m0` before the first face.
+    One,
+    /// The library, and `usemtl m<i>` before face `i`.
+    PerFace,
+}
+
+/// Writes the vertices and faces of `scene` as OBJ, with `mtllib soup10k-mtl.mtl` and
+/// `usemtl` statements as `materials` asks.
+fn write_obj(scene: &Scene, path: &Path, materials: Materials) -> std::io::Result<()> {
+    let mut out = BufWriter::new(File::create(path)?);
+    if materials != Materials::None {
+        writeln!(out, "mtllib soup10k-mtl.mtl")?;
+    }
+    if materials == Materials::One {
+        writeln!(out, "usemtl m0")?;
+    }
+    for v in &scene.vertices {
+        writeln!(out, "v {} {} {}", v.x, v.y, v.z)?;
+    }
+    for (i, f) in scene.faces.iter().enumerate() {
+        if materials == Materials::PerFace {
+            writeln!(out, "usemtl m{i}")?;
+        }
+        write!(out, "f")?;
+        for v in &f.vertices {
+            write!(out, " {}", v + 1)?;
+        }
+        writeln!(out)?;
+    }
+    out.flush()
+}
+
+/// A library of `n` unlit materials `m0` … `m<n-1>` of different colours.
+fn write_mtl(n: usize, path: &Path) -> std::io::Result<()> {
+    let mut out = BufWriter::new(File::create(path)?);
+    for i in 0..n {
+        let c = |k: usize| ((i * k) % 251) as f64 / 250.0;
+        writeln!(out, "newmtl m{i}")?;
+        writeln!(out, "Kd {} {} {}", c(7), c(31), c(101))?;
+        writeln!(out, "illum 0")?;
+    }
+    out.flush()
+}
+
+fn sphere(rings: u32, segments: u32) -> Scene {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::default_grey());
+    let o = s.add_object("sphere");
+    shapes::uv_sphere(&mut s, DVec3::ZERO, 1.0, rings, segments, m, o).expect("valid sphere");
+    s
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let dir = std::env::args()
+        .nth(1)
+        .ok_or("usage: large_scenes FOLDER")?;
+    let dir = Path::new(&dir);
+    std::fs::create_dir_all(dir)?;
+    write_obj(
+        &sphere(159, 316),
+        &dir.join("sphere100k.obj"),
+        Materials::None,
+    )?;
+    write_obj(
+        &sphere(708, 708),
+        &dir.join("sphere1m.obj"),
+        Materials::None,
+    )?;
+    let mut soup = Scene::default();
+    let m = soup.add_material(Material::default_grey());
+    let o = soup.add_object("soup");
+    shapes::random_soup(&mut soup, 10_000, 0.08, 7, m, o)?;
+    write_obj(&soup, &dir.join("soup10k.obj"), Materials::None)?;
+    write_obj(&soup, &dir.join("soup10k-lib.obj"), Materials::One)?;
+    write_obj(&soup, &dir.join("soup10k-mtl.obj"), Materials::PerFace)?;
+    write_mtl(soup.faces.len(), &dir.join("soup10k-mtl.mtl"))?;
+    Ok(())
+}
