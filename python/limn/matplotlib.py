@@ -26,11 +26,15 @@ matplotlib draws them. Scales must be linear.
 
 from __future__ import annotations
 
-from typing import Any, List, Tuple
+from functools import partial
+from typing import Any, Callable, List, NamedTuple, Tuple
 
 import numpy as np
 
 from . import Scene
+from ._depth_shading import depth_shaded, scatter_depth_shading
+from ._layers import under_axes
+from ._panes import Pane, grid_lines, panes
 
 __all__ = ["savefig"]
 
@@ -103,14 +107,53 @@ def _runs(pts: np.ndarray) -> List[np.ndarray]:
     return runs
 
 
+class _Line(NamedTuple):
+    """One limn line of the bridge and how matplotlib draws its visible pieces."""
+
+    points: np.ndarray
+    rgba: np.ndarray
+    width: float
+    """Width in points."""
+    dash: Any
+    """``(offset, sequence)`` in points, or ``None`` for solid."""
+    background: bool = False
+    """A grid line or a pane's outline (painted under the axes' lines)."""
+    cap: str = "butt"
+    clip: Any = None
+    """The clip box of the artist it comes from (``None``: not clipped)."""
+
+
+class _Point(NamedTuple):
+    """One limn point of the bridge (a scatter point or a line's marker) and how
+    matplotlib draws it."""
+
+    at: np.ndarray
+    face: Tuple[float, ...]
+    edge: Tuple[float, ...]
+    edge_width: float
+    """In points."""
+    path: Any
+    """The marker's path (``None``: a circle)."""
+    scale: float
+    """Display units per unit of the path."""
+    clip: Any = None
+
+
+def _clip_of(artist: Any) -> Any:
+    """The clip box matplotlib gives ``artist``'s drawing (``None`` when it is not
+    clipped)."""
+    return artist.get_clip_box() if artist.get_clip_on() else None
+
+
 class _Lines:
-    """The bridge's lines and points: what limn gets, and how matplotlib draws each."""
+    """The bridge's lines, points and texts: what limn gets, and how matplotlib draws
+    each."""
 
     def __init__(self) -> None:
-        # Per limn line: (points, rgba, width in points, dash (offset, seq) in points).
-        self.lines: List[Tuple[np.ndarray, np.ndarray, float, Any]] = []
-        # Per limn point: (position, face rgba, edge rgba, edge width, path, scale).
-        self.points: List[Tuple[np.ndarray, Any, Any, float, Any, float]] = []
+        self.lines: List[_Line] = []
+        self.points: List[_Point] = []
+        # Per limn label: the Text3D it shows.
+        self.texts: List[Any] = []
 
     def add_line3d(self, line: Any, p2p: float) -> None:
         from matplotlib.colors import to_rgba
@@ -122,7 +165,8 @@ class _Lines:
         if line.get_linestyle() not in ("None", "none", " ", ""):
             for r in runs:
                 if len(r) >= 2:
-                    self.lines.append((r, rgba, float(line.get_linewidth()), dash))
+                    w = float(line.get_linewidth())
+                    self.lines.append(_Line(r, rgba, w, dash, clip=_clip_of(line)))
         ms = MarkerStyle(line.get_marker())
         if ms.get_marker() not in ("None", "none", " ", "", None):
             path = ms.get_path().transformed(ms.get_transform())
@@ -131,9 +175,11 @@ class _Lines:
             ec = to_rgba(line.get_markeredgecolor(), line.get_alpha())
             for r in runs:
                 for q in r:
-                    self.points.append((q, fc, ec, float(line.get_markeredgewidth()), path, scale))
+                    ew = float(line.get_markeredgewidth())
+                    self.points.append(_Point(q, fc, ec, ew, path, scale, _clip_of(line)))
 
-    def add_line_collection(self, coll: Any) -> None:
+    def add_line_collection(self, coll: Any, background: bool = False) -> None:
+        """A ``Line3DCollection`` (``plot_wireframe``, ``quiver``, the axes' grid)."""
         segs = coll._segments3d
         col = np.asarray(coll.get_colors(), dtype=float).reshape(-1, 4)
         lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
@@ -144,23 +190,34 @@ class _Lines:
             off, seq = ls[i % len(ls)] if ls else (0, None)
             dash = (off, seq) if seq else None
             for r in _runs(np.asarray(seg, dtype=float).reshape(-1, 3)):
-                if len(r) >= 2:
-                    self.lines.append((r, c, w, dash))
+                if len(r) >= 2 and c[3] > 0 and w > 0:
+                    clip = None if background else _clip_of(coll)
+                    self.lines.append(_Line(r, c, w, dash, background, clip=clip))
 
-    def add_scatter(self, coll: Any, p2p: float) -> None:
+    def add_pane_outline(self, pane: Pane) -> None:
+        if pane.width > 0:
+            loop = np.vstack([pane.corners, pane.corners[:1]])
+            self.lines.append(_Line(loop, pane.edge, pane.width, None, True, "projecting"))
+
+    def add_scatter(self, coll: Any, p2p: float, M: np.ndarray) -> None:
         from matplotlib.collections import PathCollection
 
         coll.update_scalarmappable()
         xs, ys, zs = (np.asarray(np.ma.filled(c, np.nan), dtype=float).ravel() for c in coll._offsets3d)
         pts = np.c_[xs, ys, zs]
         n = len(pts)
-        fc = np.asarray(PathCollection.get_facecolor(coll), dtype=float).reshape(-1, 4)
         # In input order: mplot3d's own getters return colours and widths sorted by
         # depth (and "face" edges through them).
-        if isinstance(coll._edgecolors, str) and coll._edgecolors == "face":
-            ec = fc
-        else:
-            ec = np.asarray(PathCollection.get_edgecolor(coll), dtype=float).reshape(-1, 4)
+        fc = np.asarray(PathCollection.get_facecolor(coll), dtype=float).reshape(-1, 4)
+        face_edges = isinstance(coll._edgecolors, str) and coll._edgecolors == "face"
+        ec = fc if face_edges else np.asarray(PathCollection.get_edgecolor(coll), dtype=float)
+        ec = ec.reshape(-1, 4)
+        shaded, min_alpha, alpha = scatter_depth_shading(coll)
+        if shaded and n:
+            fc = depth_shaded(np.broadcast_to(fc, (n, 4)) if len(fc) else fc, pts, M, min_alpha, alpha)
+            ec = fc if face_edges else (
+                depth_shaded(np.broadcast_to(ec, (n, 4)), pts, M, min_alpha, alpha) if len(ec) else ec
+            )
         lw = np.asarray(getattr(coll, "_linewidths3d", coll.get_linewidths()), dtype=float)
         lw = lw.reshape(-1)
         sizes = np.asarray(coll._sizes3d, dtype=float).reshape(-1)
@@ -171,65 +228,140 @@ class _Lines:
                 continue
             s = float(pick(sizes, i, 36.0))
             self.points.append(
-                (
+                _Point(
                     pts[i],
                     tuple(pick(fc, i, (0, 0, 0, 0))),
                     tuple(pick(ec, i, (0, 0, 0, 0))),
                     float(pick(lw, i, 0.0)),
                     pick(paths, i, None),
                     np.sqrt(max(s, 0.0)) * p2p,
+                    _clip_of(coll),
                 )
             )
 
+    def add_text(self, text: Any) -> None:
+        """A ``Text3D`` (``ax.text``): shown where its anchor is visible."""
+        if text.get_text() and np.isfinite(np.asarray(text.get_position_3d(), float)).all():
+            self.texts.append(text)
+
     def vertices(self) -> List[np.ndarray]:
-        return [r for r, *_ in self.lines] + [np.asarray([q[0] for q in self.points]).reshape(-1, 3)]
+        anchors = [q.at for q in self.points] + [t.get_position_3d() for t in self.texts]
+        return [ln.points for ln in self.lines] + [np.asarray(anchors, dtype=float).reshape(-1, 3)]
+
+
+class _Item(NamedTuple):
+    """One thing limn painted, ready for matplotlib to draw."""
+
+    box: Tuple[float, float, float, float]
+    """Where its drawing may put ink, in display units (x0, y0, x1, y1)."""
+    background: bool
+    """A pane, a grid line or a pane's outline."""
+    draw: Callable[[Any], None]
+
+
+_EVERYWHERE = (-np.inf, -np.inf, np.inf, np.inf)
+
+
+def _box(disp: np.ndarray, pad: float) -> Tuple[float, float, float, float]:
+    lo, hi = disp.min(axis=0), disp.max(axis=0)
+    return (lo[0] - pad, lo[1] - pad, hi[0] + pad, hi[1] + pad)
 
 
 class _Limn3D:
-    """Draws one 3D axes' polygon collections, lines and scatter points through limn, in
-    the collections' place."""
+    """Draws one 3D axes' content through limn in two artists: one under everything else
+    in the axes (the panes, the grid, what lies behind them, then matplotlib's axis lines,
+    ticks and labels when the bridge draws them) and one in the place of the
+    collections (the rest of the data)."""
 
     def __init__(
-        self, ax: Any, colls: List[Any], marks: List[Any], sort: str, arith: str
+        self,
+        ax: Any,
+        colls: List[Any],
+        marks: List[Any],
+        texts: List[Any],
+        sort: str,
+        arith: str,
+        draws_axes: bool,
     ) -> None:
         from matplotlib.artist import Artist
 
         class _Art(Artist):
-            def draw(inner, renderer):  # noqa: N805
-                self.draw(renderer)
+            def __init__(inner, draw: Callable[[Any], None]) -> None:  # noqa: N805
+                super().__init__()
+                inner._draw = draw
 
-        self.ax, self.colls, self.sort, self.arith = ax, colls, sort, arith
-        self.marks = marks
-        self.artist = _Art()
-        zorder = max(axis.get_zorder() for axis in ax._axis_map.values()) + 1
-        self.artist.set_zorder(zorder)
+            def draw(inner, renderer):  # noqa: N805
+                inner._draw(renderer)
+
+        self.ax, self.colls, self.marks, self.texts = ax, colls, marks, texts
+        self.sort, self.arith, self.draws_axes = sort, arith, draws_axes
+        self.back = _Art(self.draw_back)
+        self.front = _Art(self.draw_front)
+        lowest = min([a.get_zorder() for a in ax.get_children()] + [0.0])
+        self.back.set_zorder(lowest - 1)
+        self.front.set_zorder(max(axis.get_zorder() for axis in ax._axis_map.values()) + 1)
+        self.later: List[_Item] = []
         self.seconds = 0.0
 
-    def draw(self, renderer: Any) -> None:
+    def draw_back(self, renderer: Any) -> None:
         import time
 
-        from matplotlib.path import Path
-        from matplotlib.transforms import IdentityTransform
-
         t0 = time.perf_counter()
+        items = self._paint(renderer)
+        under = under_axes(np.array([it.box for it in items]), np.array([it.background for it in items]))
+        for it, u in zip(items, under):
+            if u:
+                it.draw(renderer)
+        if self.draws_axes:
+            for axis in self.ax._axis_map.values():
+                type(axis).draw(axis, renderer)
+        self.later = [it for it, u in zip(items, under) if not u]
+        self.seconds += time.perf_counter() - t0
+
+    def draw_front(self, renderer: Any) -> None:
+        for it in self.later:
+            it.draw(renderer)
+        self.later = []
+
+    def _paint(self, renderer: Any) -> List[_Item]:
+        """The scene of the axes ordered by limn: its painted polygons and visible marks as
+        items in paint order."""
         from mpl_toolkits.mplot3d.art3d import Line3DCollection, Path3DCollection
 
         p2p = float(renderer.points_to_pixels(1.0))
-        polys, fcs, ecs, lws = [], [], [], []
+        M = np.asarray(self.ax.M, dtype=float)
+        polys, fcs, ecs, lws, clips = [], [], [], [], []
         for coll in self.colls:
             p, fc, ec, lw = _polys(coll)
+            clips += [_clip_of(coll)] * len(p)
             polys += p
             fcs.append(fc)
             ecs.append(ec)
             lws.append(lw)
         extra = _Lines()
+        background = np.zeros(len(polys), bool)
+        if self.draws_axes:
+            walls = panes(self.ax)
+            filled = [w for w in walls if w.fill is not None]
+            polys += [w.corners for w in filled]
+            clips += [None] * len(filled)
+            fcs.append(np.array([w.fill for w in filled]).reshape(-1, 4))
+            ecs.append(np.zeros((len(filled), 4)))
+            lws.append(np.zeros(len(filled)))
+            background = np.r_[background, np.ones(len(filled), bool)]
+            for grid in grid_lines(self.ax):
+                extra.add_line_collection(grid, background=True)
+            for w in walls:
+                extra.add_pane_outline(w)
         for art in self.marks:
             if isinstance(art, Path3DCollection):
-                extra.add_scatter(art, p2p)
+                extra.add_scatter(art, p2p, M)
             elif isinstance(art, Line3DCollection):
                 extra.add_line_collection(art)
             else:
                 extra.add_line3d(art, p2p)
+        for text in self.texts:
+            extra.add_text(text)
         fc = np.concatenate(fcs) if fcs else np.zeros((0, 4))
         ec = np.concatenate(ecs) if ecs else np.zeros((0, 4))
         lw = np.concatenate(lws) if lws else np.zeros(0)
@@ -251,8 +383,8 @@ class _Limn3D:
                 for j in range(1, len(p) - 1):
                     tris.append([idx[0], idx[j], idx[j + 1]])
                     owner_t.append(k)
-        if not verts and not extra.lines and not extra.points:
-            return
+        if not verts and not extra.lines and not extra.points and not extra.texts:
+            return []
         v = np.concatenate(verts) if verts else np.zeros((0, 3))
         m, W, H = _camera(self.ax, renderer, np.concatenate([v] + extra.vertices()))
         wl, hl = max(1, int(round(W))), max(1, int(round(H)))
@@ -263,10 +395,12 @@ class _Limn3D:
                 own = np.asarray(own)
                 scene.add_mesh(v, np.asarray(faces), colors=np.clip(fc[own], 0, 1))
                 owner += list(own)
-        for pts, rgba, _, _ in extra.lines:
-            scene.add_line(pts, color=np.clip(rgba, 0, 1))
+        for ln in extra.lines:
+            scene.add_line(ln.points, color=np.clip(ln.rgba, 0, 1))
         if extra.points:
-            scene.add_points(np.asarray([q[0] for q in extra.points]), size=1.0)
+            scene.add_points(np.asarray([q.at for q in extra.points]), size=1.0)
+        for text in extra.texts:
+            scene.add_label(tuple(float(c) for c in text.get_position_3d()), "x")
         scene.set_camera(matrix=m, size=(wl, hl))
         sx, sy = W / wl, H / hl
         polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith)
@@ -274,79 +408,150 @@ class _Limn3D:
         by_place: dict = {}
         for mk in marks:
             by_place.setdefault(mk["before"], []).append(mk)
+        items: List[_Item] = []
 
-        def draw_marks(place: int) -> None:
+        def add_marks(place: int) -> None:
             for mk in by_place.get(place, ()):
                 if mk["kind"] == "line":
-                    self._draw_line(renderer, extra.lines[mk["index"]], disp_of(mk["points"]), mk, p2p)
+                    ln = extra.lines[mk["index"]]
+                    disp = disp_of(mk["points"])
+                    items.append(
+                        _Item(
+                            _box(disp, ln.width * p2p + 1),
+                            ln.background,
+                            partial(self._draw_line, line=ln, disp=disp, mk=mk, p2p=p2p),
+                        )
+                    )
                 elif mk["kind"] == "marker" and mk["index"] is not None:
                     x, y = mk["at"]
-                    self._draw_marker(renderer, extra.points[mk["index"]], (x * sx, H - y * sy), p2p)
+                    pt = extra.points[mk["index"]]
+                    xy = (x * sx, H - y * sy)
+                    reach = _marker_reach(pt.path) * pt.scale + pt.edge_width * p2p + 1
+                    items.append(
+                        _Item(
+                            _box(np.array([xy]), reach),
+                            False,
+                            partial(self._draw_marker, point=pt, xy=xy),
+                        )
+                    )
+                elif mk["kind"] == "label" and mk["index"] is not None:
+                    text = extra.texts[mk["index"]]
+                    items.append(_Item(_EVERYWHERE, False, partial(_draw_text, text=text)))
 
         for i, (face, pts, fill, orig) in enumerate(polygons):
-            draw_marks(i)
+            add_marks(i)
             k = owner[face]
             disp = disp_of(pts)
-            gc = renderer.new_gc()
-            gc.set_linewidth(0)
-            gc.set_foreground((0, 0, 0, 0), isRGBA=True)
-            path = Path(np.vstack([disp, disp[:1]]), closed=True)
-            renderer.draw_path(gc, path, IdentityTransform(), tuple(fill))
-            gc.restore()
-            if lw[k] > 0 and ec[k][3] > 0 and any(orig):
-                segs = [(disp[i], disp[(i + 1) % len(disp)]) for i in range(len(disp)) if orig[i]]
-                codes = [Path.MOVETO, Path.LINETO] * len(segs)
-                gc = renderer.new_gc()
-                gc.set_foreground(tuple(ec[k]), isRGBA=True)
-                gc.set_linewidth(renderer.points_to_pixels(lw[k]))
-                gc.set_capstyle("round")
-                renderer.draw_path(
-                    gc, Path(np.array([q for s in segs for q in s]), codes), IdentityTransform()
+            edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
+            pad = (lw[k] * p2p if edged else 0.0) + 1
+            items.append(
+                _Item(
+                    _box(disp, pad),
+                    bool(background[k]) if k < len(background) else False,
+                    partial(
+                        _draw_polygon,
+                        disp=disp,
+                        fill=tuple(fill),
+                        edges=orig if edged else None,
+                        edge=tuple(ec[k]),
+                        width=float(lw[k]),
+                        clip=clips[k],
+                    ),
                 )
-                gc.restore()
-        draw_marks(len(polygons))
-        self.seconds += time.perf_counter() - t0
+            )
+        add_marks(len(polygons))
+        return items
 
     @staticmethod
-    def _draw_line(renderer: Any, line: Any, disp: np.ndarray, mk: dict, p2p: float) -> None:
+    def _draw_line(renderer: Any, line: _Line, disp: np.ndarray, mk: dict, p2p: float) -> None:
         """One visible piece of a line in its matplotlib style (width and dashes in
         points; the dash pattern continues from where the piece starts on the line)."""
         from matplotlib.path import Path
         from matplotlib.transforms import IdentityTransform
 
-        _, rgba, width, dash = line
         gc = renderer.new_gc()
-        gc.set_foreground(tuple(rgba), isRGBA=True)
-        gc.set_linewidth(width)
-        gc.set_capstyle("butt")
+        gc.set_clip_rectangle(line.clip)
+        gc.set_foreground(tuple(line.rgba), isRGBA=True)
+        gc.set_linewidth(line.width)
+        gc.set_capstyle(line.cap)
         gc.set_joinstyle("round")
-        if dash is not None and dash[1]:
-            off = (dash[0] or 0.0) + mk["dash_offset"] / p2p
-            gc.set_dashes(off, list(dash[1]))
+        if line.dash is not None and line.dash[1]:
+            off = (line.dash[0] or 0.0) + mk["dash_offset"] / p2p
+            gc.set_dashes(off, list(line.dash[1]))
         renderer.draw_path(gc, Path(disp), IdentityTransform())
         gc.restore()
 
     @staticmethod
-    def _draw_marker(renderer: Any, point: Any, xy: Tuple[float, float], p2p: float) -> None:
+    def _draw_marker(renderer: Any, point: _Point, xy: Tuple[float, float]) -> None:
         """One visible scatter point or line marker: matplotlib's marker path, size and
         colours at its projected anchor."""
-        from matplotlib.markers import MarkerStyle
         from matplotlib.transforms import Affine2D
 
-        _, face, edge, ew, path, scale = point
-        if path is None:
-            path = MarkerStyle("o").get_path()
+        path = _marker_path(point.path)
         gc = renderer.new_gc()
-        gc.set_foreground(tuple(edge), isRGBA=True)
-        gc.set_linewidth(ew if edge[3] > 0 else 0)
-        t = Affine2D().scale(scale).translate(*xy)
+        gc.set_clip_rectangle(point.clip)
+        gc.set_foreground(tuple(point.edge), isRGBA=True)
+        gc.set_linewidth(point.edge_width if point.edge[3] > 0 else 0)
+        t = Affine2D().scale(point.scale).translate(*xy)
+        face = point.face
         renderer.draw_path(gc, path, t, tuple(face) if face[3] > 0 else None)
         gc.restore()
 
 
+def _marker_path(path: Any) -> Any:
+    from matplotlib.markers import MarkerStyle
+
+    return MarkerStyle("o").get_path() if path is None else path
+
+
+def _marker_reach(path: Any) -> float:
+    """How far a marker's path reaches from its anchor, in units of its scale."""
+    vs = np.asarray(_marker_path(path).vertices, dtype=float)
+    return float(np.abs(vs).max()) if vs.size else 0.0
+
+
+def _draw_polygon(
+    renderer: Any, disp: np.ndarray, fill: tuple, edges: Any, edge: tuple, width: float, clip: Any
+) -> None:
+    """A painted polygon: its fill, then its original edges in the face's edge colour
+    and width (points)."""
+    from matplotlib.path import Path
+    from matplotlib.transforms import IdentityTransform
+
+    gc = renderer.new_gc()
+    gc.set_clip_rectangle(clip)
+    gc.set_linewidth(0)
+    gc.set_foreground((0, 0, 0, 0), isRGBA=True)
+    path = Path(np.vstack([disp, disp[:1]]), closed=True)
+    renderer.draw_path(gc, path, IdentityTransform(), fill)
+    gc.restore()
+    if edges is not None:
+        n = len(disp)
+        segs = [(disp[i], disp[(i + 1) % n]) for i in range(n) if edges[i]]
+        codes = [Path.MOVETO, Path.LINETO] * len(segs)
+        gc = renderer.new_gc()
+        gc.set_clip_rectangle(clip)
+        gc.set_foreground(edge, isRGBA=True)
+        gc.set_linewidth(renderer.points_to_pixels(width))
+        gc.set_capstyle("round")
+        renderer.draw_path(gc, Path(np.array([q for s in segs for q in s]), codes), IdentityTransform())
+        gc.restore()
+
+
+def _draw_text(renderer: Any, text: Any) -> None:
+    """A visible ``Text3D`` drawn by matplotlib itself (its font, size, colour,
+    alignment and direction)."""
+    text.set_visible(True)
+    try:
+        type(text).draw(text, renderer)
+    finally:
+        text.set_visible(False)
+
+
 def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact", **kwargs: Any) -> None:
-    """Save ``fig`` like ``fig.savefig(path, **kwargs)``, with the polygons of every 3D
-    axes ordered exactly by limn (see the module docs). Figures without 3D axes are saved
+    """Save ``fig`` like ``fig.savefig(path, **kwargs)``, with the content of every 3D
+    axes ordered exactly by limn (see the module docs): its polygon collections, lines,
+    scatter points, 3D texts, panes and grid lines. Figures without 3D axes are saved
     unchanged. ``sort`` and ``arith`` choose limn's ordering (adaptive and exact by
     default). Raises what ``fig.savefig`` raises, and ValueError for geometry limn
     refuses (such as NaN vertices)."""
@@ -355,9 +560,11 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
         Line3DCollection,
         Path3DCollection,
         Poly3DCollection,
+        Text3D,
     )
 
     swaps = []
+    taken = []  # axes whose panes, grid and axis drawing the bridge does
     # Colorbars rasterise their colour solids on their own (50 colours or more); here
     # they stay vectors, so that the file holds no raster.
     rasterized = [
@@ -381,18 +588,37 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
                 for c in ax.collections
                 if isinstance(c, (Line3DCollection, Path3DCollection)) and c.get_visible()
             ] + [ln for ln in ax.lines if isinstance(ln, Line3D) and ln.get_visible()]
-            if not colls and not marks:
+            texts = [t for t in ax.texts if isinstance(t, Text3D) and t.get_visible()]
+            if not colls and not marks and not texts:
                 continue
-            for c in colls + marks:
+            draws_axes = bool(getattr(ax, "_axis3don", False))
+            for c in colls + marks + texts:
                 c.set_visible(False)
-            bridge = _Limn3D(ax, colls, marks, sort, arith)
-            ax.add_artist(bridge.artist)
-            swaps.append((colls + marks, bridge))
+            if draws_axes:
+                # mplot3d draws panes, grid and axes before the axes' children; the
+                # bridge's first artist draws them instead, in limn's order.
+                for axis in ax._axis_map.values():
+                    for name in ("draw_pane", "draw_grid", "draw"):
+                        setattr(axis, name, _draw_nothing)
+                taken.append(ax)
+            bridge = _Limn3D(ax, colls, marks, texts, sort, arith, draws_axes)
+            ax.add_artist(bridge.back)
+            ax.add_artist(bridge.front)
+            swaps.append((colls + marks + texts, bridge))
         fig.savefig(path, **kwargs)
     finally:
         for solids in rasterized:
             solids.set_rasterized(True)
+        for ax in taken:
+            for axis in ax._axis_map.values():
+                for name in ("draw_pane", "draw_grid", "draw"):
+                    vars(axis).pop(name, None)
         for colls, bridge in swaps:
-            bridge.artist.remove()
+            bridge.back.remove()
+            bridge.front.remove()
             for c in colls:
                 c.set_visible(True)
+
+
+def _draw_nothing(*_: Any, **__: Any) -> None:
+    """Stands in for an axis' own drawing while the bridge draws it."""
