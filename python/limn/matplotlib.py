@@ -34,7 +34,7 @@ import numpy as np
 from . import Scene
 from ._depth_shading import depth_shaded, scatter_depth_shading
 from ._layers import under_axes
-from ._panes import Pane, grid_lines, panes
+from ._axes_box import Pane, axis_lines, grid_lines, panes
 
 __all__ = ["savefig"]
 
@@ -313,8 +313,14 @@ class _Limn3D:
             if u:
                 it.draw(renderer)
         if self.draws_axes:
+            # Ticks, tick labels and axis labels; the axis lines are limn's.
             for axis in self.ax._axis_map.values():
-                type(axis).draw(axis, renderer)
+                shown = axis.line.get_visible()
+                axis.line.set_visible(False)
+                try:
+                    type(axis).draw(axis, renderer)
+                finally:
+                    axis.line.set_visible(shown)
         self.later = [it for it, u in zip(items, under) if not u]
         self.seconds += time.perf_counter() - t0
 
@@ -353,6 +359,8 @@ class _Limn3D:
                 extra.add_line_collection(grid, background=True)
             for w in walls:
                 extra.add_pane_outline(w)
+            for a in axis_lines(self.ax):
+                extra.lines.append(_Line(a.ends, a.rgba, a.width, None, True, a.cap))
         for art in self.marks:
             if isinstance(art, Path3DCollection):
                 extra.add_scatter(art, p2p, M)

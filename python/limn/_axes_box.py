@@ -1,10 +1,12 @@
-"""A 3D axes' panes and grid lines as scene content: where they are in data coordinates
-and how matplotlib styles them.
+"""A 3D axes' box as scene content: its panes, grid lines and axis lines, where they are
+in data coordinates and how matplotlib styles them.
 
-mplot3d draws three panes (the walls of the axes' box on the far side from the viewer)
-and, on them, the grid lines at the major ticks, all before the data. The bridge puts
-them into the limn scene instead, so a surface poking out of the box is cut by the pane
-exactly and a grid line passes behind a surface exactly.
+mplot3d draws three panes (the walls of the axes' box on the far side from the viewer),
+on them the grid lines at the major ticks, then the axis lines along the box's edges,
+all before the data. The bridge puts them into the limn scene instead, so a surface
+poking out of the box is cut by the pane exactly, a grid line passes behind a surface
+exactly, and an axis line is hidden where data lie in front of it. Ticks, tick labels
+and axis labels stay matplotlib's 2D drawing.
 """
 
 from __future__ import annotations
@@ -99,4 +101,43 @@ def grid_lines(ax: Any) -> List[Any]:
             lines.set_visible(was)
         if was and len(lines._segments3d):
             out.append(lines)
+    return out
+
+
+class AxisLine(NamedTuple):
+    """One axis line: its ends in data coordinates and its style."""
+
+    ends: np.ndarray
+    """(2, 3): two corners of the axes' box."""
+    rgba: np.ndarray
+    width: float
+    """In points."""
+    cap: str
+    """matplotlib's cap style of the line (``projecting`` by default)."""
+
+
+def axis_lines(ax: Any) -> List[AxisLine]:
+    """The axis lines matplotlib would draw for the 3D axes ``ax``, at the box edges
+    mplot3d chooses for them (``Axis._get_all_axis_line_edge_points``, one per tick
+    position: two when ticks are on both sides); none when the axes are off."""
+    from matplotlib.colors import to_rgba
+
+    if not getattr(ax, "_axis3don", True):
+        return []
+    out = []
+    for axis in ax._axis_map.values():
+        line = axis.line
+        if not line.get_visible():
+            continue
+        mins, maxs, _, highs = axis._get_coord_info()
+        minmax = np.where(highs, maxs, mins)
+        maxmin = np.where(~highs, maxs, mins)
+        rgba = np.array(to_rgba(line.get_color(), line.get_alpha()))
+        width = float(line.get_linewidth())
+        if rgba[3] <= 0 or width <= 0:
+            continue
+        p1s, p2s, _ = axis._get_all_axis_line_edge_points(minmax, maxmin, axis._tick_position)
+        for p1, p2 in zip(p1s, p2s):
+            ends = np.array([p1, p2], dtype=float)
+            out.append(AxisLine(ends, rgba, width, str(line.get_solid_capstyle())))
     return out
