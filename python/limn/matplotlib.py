@@ -355,10 +355,11 @@ class _Limn3D:
             ecs.append(np.zeros((len(filled), 4)))
             lws.append(np.zeros(len(filled)))
             background = np.r_[background, np.ones(len(filled), bool)]
-            for grid in grid_lines(self.ax):
-                extra.add_line_collection(grid, background=True)
+            # In matplotlib's order: outlines of the panes, grid lines, axis lines.
             for w in walls:
                 extra.add_pane_outline(w)
+            for grid in grid_lines(self.ax):
+                extra.add_line_collection(grid, background=True)
             for a in axis_lines(self.ax):
                 extra.lines.append(_Line(a.ends, a.rgba, a.width, None, True, a.cap))
         for art in self.marks:
@@ -413,9 +414,16 @@ class _Limn3D:
         sx, sy = W / wl, H / hl
         polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith)
         disp_of = lambda pts: np.c_[pts[:, 0] * sx, H - pts[:, 1] * sy]  # noqa: E731
+        # Markers and texts between the same two polygons are painted far to near, as
+        # mplot3d paints a scatter (limn's picture keeps them in input order).
+        anchors = [q.at for q in extra.points] + [t.get_position_3d() for t in extra.texts]
+        depth = _depths(M, np.asarray(anchors, dtype=float).reshape(-1, 3))
+        first_text = len(extra.points)
         by_place: dict = {}
         for mk in marks:
             by_place.setdefault(mk["before"], []).append(mk)
+        for run in by_place.values():
+            run.sort(key=partial(_paint_key, depth=depth, first_text=first_text))
         items: List[_Item] = []
 
         def add_marks(place: int) -> None:
@@ -504,6 +512,24 @@ class _Limn3D:
         face = point.face
         renderer.draw_path(gc, path, t, tuple(face) if face[3] > 0 else None)
         gc.restore()
+
+
+def _depths(M: np.ndarray, xyz: np.ndarray) -> np.ndarray:
+    """mplot3d's depth of each point (the third projected coordinate; larger is
+    farther)."""
+    hom = np.c_[xyz, np.ones(len(xyz))] @ M.T
+    return hom[:, 2] / hom[:, 3]
+
+
+def _paint_key(mk: dict, depth: np.ndarray, first_text: int) -> Tuple[int, float]:
+    """Order of the marks painted between the same two polygons: line pieces and heads
+    first (in limn's order), then markers far to near, then texts far to near."""
+    kind, index = mk["kind"], mk["index"]
+    if kind == "marker" and index is not None:
+        return (1, -float(depth[index]))
+    if kind == "label" and index is not None:
+        return (2, -float(depth[first_text + index]))
+    return (0, 0.0)
 
 
 def _marker_path(path: Any) -> Any:
