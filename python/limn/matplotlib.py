@@ -12,16 +12,26 @@ would take, so the file is one vector file of the format the extension names (SV
 ...), with no raster embedded (colorbars, which rasterise their solids of 50 colours or
 more, are kept as vectors too).
 
-Lines (``Line3D`` from ``plot``, ``Line3DCollection`` from ``plot_wireframe``) and
-scatter points (``Path3DCollection``) go into the same limn scene as the polygons, so
-they are hidden exactly by the surfaces in front of them (a line on a surface's own
-polygon is drawn over it); their visible pieces and markers are drawn by matplotlib's
-renderer in matplotlib's own style (colour, width, dashes, marker path, size), at their
-place in limn's paint order. Scatter points are drawn in their colours without
-matplotlib's depth shading (limn decides what is in front).
+Lines (``Line3D`` from ``plot``, ``Line3DCollection`` from ``plot_wireframe`` and
+``quiver``) and scatter points (``Path3DCollection``) go into the same limn scene as the
+polygons, so they are hidden exactly by the surfaces in front of them (a line on a
+surface's own polygon is drawn over it); their visible pieces and markers are drawn by
+matplotlib's renderer in matplotlib's own style (colour, width, dashes, marker path,
+size), at their place in limn's paint order, markers far to near as mplot3d paints them.
+Scatter points keep mplot3d's depth shading (``depthshade``; see ``_depth_shading``).
+3D texts (``Text3D`` from ``ax.text``) are limn labels: shown only where their anchor
+is visible, drawn by matplotlib itself.
 
-The axes' panes and grid lines stay matplotlib's own, drawn first (behind the data) as
-matplotlib draws them. Scales must be linear.
+The axes' box is scene content as well (``_axes_box``): the panes with their colours and
+outlines, the grid lines on them and the axis lines along the box's edges, so that data
+poking out of the box are cut by the panes and grid or axis lines behind data are hidden.
+mplot3d draws the box before the data, then the ticks and labels; the bridge keeps that
+layering where the picture allows (``_layers``): panes, grid, axis lines and every item
+that must be painted before one of them come first, then matplotlib's ticks, tick labels
+and axis labels, then the rest of the data. ``ax.grid(False)``, ``ax.set_axis_off()``,
+pane colours and ``pane.fill`` are respected. Each drawing is clipped as matplotlib clips
+the artist it comes from. Scales must be linear; the private mplot3d attributes read are
+those of matplotlib 3.11.
 """
 
 from __future__ import annotations
