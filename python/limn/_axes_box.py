@@ -52,6 +52,15 @@ def _box_corners(ax: Any) -> np.ndarray:
     )
 
 
+def inside_box(ax: Any, points: np.ndarray) -> bool:
+    """Whether every finite point of ``points`` (N, 3) lies in the axes' closed box
+    (exact comparisons with the axes' bounds)."""
+    pts = np.asarray(points, dtype=float).reshape(-1, 3)
+    pts = pts[np.isfinite(pts).all(axis=1)]
+    corners = _box_corners(ax)
+    return bool(((pts >= corners[0]) & (pts <= corners[6])).all())
+
+
 def panes(ax: Any) -> List[Pane]:
     """The panes matplotlib would draw for the 3D axes ``ax`` (none when its axes are off;
     a pane that is hidden, or neither filled nor outlined, is left out). Each is the

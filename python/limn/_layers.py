@@ -1,40 +1,116 @@
-"""Which of limn's painted items go under the axes' lines and ticks.
+"""Which of limn's painted items go under the axes' ticks and labels.
 
 matplotlib draws a 3D axes' panes, then its grid, then its axis lines, ticks and tick
-labels, then the data. With the panes and the grid in limn's scene, limn's paint order
-mixes them with the data (a surface that pokes out of the box behind a pane is painted
-before the pane). The bridge keeps matplotlib's layering where it can: it paints the
-panes, the grid and every item that must come before one of them, then lets matplotlib
-draw the axis lines, ticks and labels, then paints the rest. Moving an item past another
-one whose drawing it does not overlap leaves the picture unchanged, so the split is
-exact when overlaps are judged conservatively (here by bounding boxes that include the
-stroke widths).
+labels, then the data. With the panes, the grid and the axis lines in limn's scene,
+limn's paint order mixes them with the data (a surface that pokes out of the box behind
+a pane is painted before the pane, a visible grid line comes after everything it is
+drawn over). The bridge keeps matplotlib's layering where the picture allows: it paints
+the box's items and every item that must come before one of them, then lets matplotlib
+draw the ticks and labels, then paints the rest. Moving an item past another one whose
+drawing it does not overlap leaves the picture unchanged, so the split is exact when
+overlaps are judged conservatively.
+
+Overlap is judged on convex parts (a polygon, one segment of a line piece, a marker's
+anchor) widened by a pad (half a stroke, a marker's reach): two parts overlap unless an
+axis separates them (an edge's normal or direction of either part), which never misses
+a real overlap. Parts that only touch do not overlap: the fills of two faces sharing an
+edge may change places, which changes no boundary of the picture, only the blending
+order of the antialiased pixels along that edge (otherwise the rule would pull every
+face of a surface under the ticks, one neighbour after another).
 """
 
 from __future__ import annotations
 
+from typing import List, Optional
+
 import numpy as np
 
+Parts = Optional[List[np.ndarray]]
+"""An item's convex parts, each (k, 2) in display units; ``None`` reaches everywhere."""
 
-def under_axes(boxes: np.ndarray, background: np.ndarray) -> np.ndarray:
-    """The items to paint before the axes' lines: every ``background`` item and, closed
-    under this rule, every item painted before one of them whose box overlaps its box.
+_FAR = 1e12
 
-    boxes: (N, 4) ``(x0, y0, x1, y1)`` in paint order; background: (N,) bool. Painting
-    the returned items in their order, then the others in theirs, gives the same picture
-    as the paint order: no two overlapping items change places.
+
+def _table(parts: List[Parts], pads: np.ndarray):
+    """The parts of all items as one padded table: owner, vertices (P, K, 2), pad and
+    box (P, 4) including the pad."""
+    owner, polys, pad = [], [], []
+    for i, ps in enumerate(parts):
+        if ps is None:
+            ps = [np.array([[-_FAR, -_FAR], [_FAR, -_FAR], [_FAR, _FAR], [-_FAR, _FAR]])]
+        for p in ps:
+            p = np.asarray(p, dtype=float).reshape(-1, 2)
+            if len(p):
+                owner.append(i)
+                polys.append(p)
+                pad.append(pads[i])
+    k = max((len(p) for p in polys), default=1)
+    verts = np.empty((len(polys), k, 2))
+    for j, p in enumerate(polys):
+        verts[j, : len(p)] = p
+        verts[j, len(p) :] = p[-1]
+    pad = np.asarray(pad, dtype=float)
+    lo, hi = verts.min(axis=1), verts.max(axis=1)
+    box = np.c_[lo - pad[:, None], hi + pad[:, None]]
+    return np.asarray(owner, dtype=int), verts, pad, box
+
+
+def _axes(verts: np.ndarray) -> np.ndarray:
+    """Unit normals and directions of the edges of each part: (..., 2K, 2); zero for
+    edges of zero length."""
+    d = np.roll(verts, -1, axis=-2) - verts
+    n = np.stack([-d[..., 1], d[..., 0]], axis=-1)
+    a = np.concatenate([n, d], axis=-2)
+    length = np.linalg.norm(a, axis=-1, keepdims=True)
+    return np.divide(a, length, out=np.zeros_like(a), where=length > 0)
+
+
+def _separated(a: np.ndarray, b: np.ndarray, axes: np.ndarray, gap: np.ndarray) -> np.ndarray:
+    """Whether some axis separates part ``a`` (K, 2) from each part of ``b`` (N, K, 2)
+    by ``gap`` (N,) or more; ``axes`` (N, M, 2). Parts that only touch (gap 0) are
+    separated."""
+    pa = np.einsum("kd,nmd->nmk", a, axes)
+    pb = np.einsum("nkd,nmd->nmk", b, axes)
+    g = gap[:, None]
+    return ((pb.min(axis=2) - pa.max(axis=2) >= g) | (pa.min(axis=2) - pb.max(axis=2) >= g)).any(axis=1)
+
+
+def under_axes(parts: List[Parts], pads: np.ndarray, background: np.ndarray) -> np.ndarray:
+    """The items to paint before matplotlib's ticks and labels: every ``background`` item
+    and, closed under this rule, every item painted before one of them that overlaps it.
+
+    parts: per item in paint order, its convex parts (or ``None``: everywhere); pads: (N,)
+    display units each part is widened by; background: (N,) bool. Painting the returned
+    items in their order, then the others in theirs, gives the same picture as the paint
+    order: no two overlapping items change places.
     """
-    boxes = np.asarray(boxes, dtype=float).reshape(-1, 4)
     under = np.array(background, dtype=bool).copy()
+    if not under.any():
+        return under
+    owner, verts, pad, box = _table(parts, np.asarray(pads, dtype=float))
+    own_axes = _axes(verts)
+    first = np.searchsorted(owner, np.arange(len(parts) + 1))
     queue = list(np.nonzero(under)[0])
     while queue:
         k = queue.pop()
-        x0, y0, x1, y1 = boxes[k]
-        before = boxes[:k]
-        meets = (
-            (before[:, 0] <= x1) & (before[:, 2] >= x0) & (before[:, 1] <= y1) & (before[:, 3] >= y0)
-        )
-        new = np.nonzero(meets & ~under[:k])[0]
-        under[new] = True
-        queue.extend(new)
+        for j in range(first[k], first[k + 1]):
+            x0, y0, x1, y1 = box[j]
+            c = np.nonzero(
+                (owner < k)
+                & ~under[owner]
+                & (box[:, 0] <= x1)
+                & (box[:, 2] >= x0)
+                & (box[:, 1] <= y1)
+                & (box[:, 3] >= y0)
+            )[0]
+            if len(c) == 0:
+                continue
+            gap = pad[c] + pad[j]
+            mine = np.broadcast_to(own_axes[j], (len(c),) + own_axes[j].shape)
+            axes = np.concatenate([mine, own_axes[c]], axis=1)
+            meets = ~_separated(verts[j], verts[c], axes, gap)
+            new = np.unique(owner[c[meets]])
+            new = new[~under[new]]
+            under[new] = True
+            queue.extend(new)
     return under

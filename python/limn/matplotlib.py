@@ -36,15 +36,19 @@ those of matplotlib 3.11.
 
 from __future__ import annotations
 
+import contextlib
+import io
+import os
+import secrets
 from functools import partial
-from typing import Any, Callable, List, NamedTuple, Tuple
+from typing import Any, Callable, List, NamedTuple, Optional, Tuple
 
 import numpy as np
 
 from . import Scene
 from ._depth_shading import depth_shaded, scatter_depth_shading
 from ._layers import under_axes
-from ._axes_box import Pane, axis_lines, grid_lines, panes
+from ._axes_box import Pane, axis_lines, grid_lines, inside_box, panes
 
 __all__ = ["savefig"]
 
@@ -262,19 +266,18 @@ class _Lines:
 class _Item(NamedTuple):
     """One thing limn painted, ready for matplotlib to draw."""
 
-    box: Tuple[float, float, float, float]
-    """Where its drawing may put ink, in display units (x0, y0, x1, y1)."""
+    parts: Optional[List[np.ndarray]]
+    """Convex parts covering where its drawing may put ink once widened by ``pad``, in
+    display units (``None``: anywhere)."""
+    pad: float
     background: bool
     """A pane, a grid line or a pane's outline."""
     draw: Callable[[Any], None]
 
 
-_EVERYWHERE = (-np.inf, -np.inf, np.inf, np.inf)
-
-
-def _box(disp: np.ndarray, pad: float) -> Tuple[float, float, float, float]:
-    lo, hi = disp.min(axis=0), disp.max(axis=0)
-    return (lo[0] - pad, lo[1] - pad, hi[0] + pad, hi[1] + pad)
+def _segments(disp: np.ndarray) -> List[np.ndarray]:
+    """A polyline's segments as convex parts."""
+    return [disp[i : i + 2] for i in range(len(disp) - 1)]
 
 
 class _Limn3D:
@@ -292,6 +295,7 @@ class _Limn3D:
         sort: str,
         arith: str,
         draws_axes: bool,
+        box: str,
     ) -> None:
         from matplotlib.artist import Artist
 
@@ -304,13 +308,14 @@ class _Limn3D:
                 inner._draw(renderer)
 
         self.ax, self.colls, self.marks, self.texts = ax, colls, marks, texts
-        self.sort, self.arith, self.draws_axes = sort, arith, draws_axes
+        self.sort, self.arith, self.draws_axes, self.box = sort, arith, draws_axes, box
         self.back = _Art(self.draw_back)
         self.front = _Art(self.draw_front)
         lowest = min([a.get_zorder() for a in ax.get_children()] + [0.0])
         self.back.set_zorder(lowest - 1)
         self.front.set_zorder(max(axis.get_zorder() for axis in ax._axis_map.values()) + 1)
         self.later: List[_Item] = []
+        self.box_in_limn = False
         self.seconds = 0.0
 
     def draw_back(self, renderer: Any) -> None:
@@ -318,7 +323,23 @@ class _Limn3D:
 
         t0 = time.perf_counter()
         items = self._paint(renderer)
-        under = under_axes(np.array([it.box for it in items]), np.array([it.background for it in items]))
+        if self.draws_axes and not self.box_in_limn:
+            # mplot3d's own order: panes, grid, then axis lines, ticks and labels.
+            axes = list(self.ax._axis_map.values())
+            for axis in axes:
+                type(axis).draw_pane(axis, renderer)
+            for axis in axes:
+                type(axis).draw_grid(axis, renderer)
+            for axis in axes:
+                type(axis).draw(axis, renderer)
+            self.later = items
+            self.seconds += time.perf_counter() - t0
+            return
+        under = under_axes(
+            [it.parts for it in items],
+            np.array([it.pad for it in items], dtype=float),
+            np.array([it.background for it in items], dtype=bool),
+        )
         for it, u in zip(items, under):
             if u:
                 it.draw(renderer)
@@ -354,9 +375,28 @@ class _Limn3D:
             fcs.append(fc)
             ecs.append(ec)
             lws.append(lw)
+        data = _Lines()
+        for art in self.marks:
+            if isinstance(art, Path3DCollection):
+                data.add_scatter(art, p2p, M)
+            elif isinstance(art, Line3DCollection):
+                data.add_line_collection(art)
+            else:
+                data.add_line3d(art, p2p)
+        for text in self.texts:
+            data.add_text(text)
+        # With every vertex, point and anchor inside the axes' box, the panes, the grid
+        # and the axis lines lie behind all of them (or in their plane): mplot3d's own
+        # drawing of the box, before the data, is then the exact picture, and the box
+        # stays out of the scene.
+        self.box_in_limn = self.draws_axes and (
+            self.box == "limn"
+            or self.box == "auto"
+            and not inside_box(self.ax, np.concatenate([np.zeros((0, 3))] + polys + data.vertices()))
+        )
         extra = _Lines()
         background = np.zeros(len(polys), bool)
-        if self.draws_axes:
+        if self.box_in_limn:
             walls = panes(self.ax)
             filled = [w for w in walls if w.fill is not None]
             polys += [w.corners for w in filled]
@@ -372,15 +412,8 @@ class _Limn3D:
                 extra.add_line_collection(grid, background=True)
             for a in axis_lines(self.ax):
                 extra.lines.append(_Line(a.ends, a.rgba, a.width, None, True, a.cap))
-        for art in self.marks:
-            if isinstance(art, Path3DCollection):
-                extra.add_scatter(art, p2p, M)
-            elif isinstance(art, Line3DCollection):
-                extra.add_line_collection(art)
-            else:
-                extra.add_line3d(art, p2p)
-        for text in self.texts:
-            extra.add_text(text)
+        extra.lines += data.lines
+        extra.points, extra.texts = data.points, data.texts
         fc = np.concatenate(fcs) if fcs else np.zeros((0, 4))
         ec = np.concatenate(ecs) if ecs else np.zeros((0, 4))
         lw = np.concatenate(lws) if lws else np.zeros(0)
@@ -443,7 +476,8 @@ class _Limn3D:
                     disp = disp_of(mk["points"])
                     items.append(
                         _Item(
-                            _box(disp, ln.width * p2p + 1),
+                            _segments(disp),
+                            0.75 * ln.width * p2p,  # projecting caps included
                             ln.background,
                             partial(self._draw_line, line=ln, disp=disp, mk=mk, p2p=p2p),
                         )
@@ -452,27 +486,29 @@ class _Limn3D:
                     x, y = mk["at"]
                     pt = extra.points[mk["index"]]
                     xy = (x * sx, H - y * sy)
-                    reach = _marker_reach(pt.path) * pt.scale + pt.edge_width * p2p + 1
+                    reach = _marker_reach(pt.path) * pt.scale + pt.edge_width * p2p
                     items.append(
                         _Item(
-                            _box(np.array([xy]), reach),
+                            [np.array([xy])],
+                            reach,
                             False,
                             partial(self._draw_marker, point=pt, xy=xy),
                         )
                     )
                 elif mk["kind"] == "label" and mk["index"] is not None:
                     text = extra.texts[mk["index"]]
-                    items.append(_Item(_EVERYWHERE, False, partial(_draw_text, text=text)))
+                    items.append(_Item(None, 0.0, False, partial(_draw_text, text=text)))
 
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
             k = owner[face]
             disp = disp_of(pts)
             edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
-            pad = (lw[k] * p2p if edged else 0.0) + 1
+            pad = 0.5 * lw[k] * p2p if edged else 0.0
             items.append(
                 _Item(
-                    _box(disp, pad),
+                    [disp],
+                    pad,
                     bool(background[k]) if k < len(background) else False,
                     partial(
                         _draw_polygon,
@@ -592,13 +628,31 @@ def _draw_text(renderer: Any, text: Any) -> None:
         text.set_visible(False)
 
 
-def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact", **kwargs: Any) -> None:
+def savefig(
+    fig: Any,
+    path: Any,
+    *,
+    sort: str = "adaptive",
+    arith: str = "exact",
+    box: str = "auto",
+    **kwargs: Any,
+) -> None:
     """Save ``fig`` like ``fig.savefig(path, **kwargs)``, with the content of every 3D
     axes ordered exactly by limn (see the module docs): its polygon collections, lines,
-    scatter points, 3D texts, panes and grid lines. Figures without 3D axes are saved
-    unchanged. ``sort`` and ``arith`` choose limn's ordering (adaptive and exact by
-    default). Raises what ``fig.savefig`` raises, and ValueError for geometry limn
-    refuses (such as NaN vertices)."""
+    scatter points, 3D texts, panes, grid lines and axis lines. Figures without 3D axes
+    are saved unchanged. ``sort`` and ``arith`` choose limn's ordering (adaptive and
+    exact by default).
+
+    ``box`` says who draws an axes' panes, grid lines and axis lines: ``"auto"`` (the
+    default, exact) leaves them to matplotlib when every vertex, point and text anchor
+    lies inside the axes' box (they are then behind all the data, and matplotlib's
+    drawing is the exact picture) and makes them limn scene content when something
+    leaves the box; ``"limn"`` always makes them scene content; ``"matplotlib"`` always
+    leaves them to matplotlib, which is faster but wrong where data leave the box (a
+    surface behind a pane is drawn over it).
+
+    Raises what ``fig.savefig`` raises, and ValueError for geometry limn refuses (such
+    as NaN vertices) or an unknown ``box``; nothing is written then."""
     from mpl_toolkits.mplot3d.art3d import (
         Line3D,
         Line3DCollection,
@@ -607,6 +661,8 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
         Text3D,
     )
 
+    if box not in ("auto", "limn", "matplotlib"):
+        raise ValueError(f"box must be 'auto', 'limn' or 'matplotlib', not {box!r}")
     swaps = []
     taken = []  # axes whose panes, grid and axis drawing the bridge does
     # Colorbars rasterise their colour solids on their own (50 colours or more); here
@@ -635,7 +691,7 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
             texts = [t for t in ax.texts if isinstance(t, Text3D) and t.get_visible()]
             if not colls and not marks and not texts:
                 continue
-            draws_axes = bool(getattr(ax, "_axis3don", False))
+            draws_axes = bool(getattr(ax, "_axis3don", False)) and box != "matplotlib"
             for c in colls + marks + texts:
                 c.set_visible(False)
             if draws_axes:
@@ -645,11 +701,11 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
                     for name in ("draw_pane", "draw_grid", "draw"):
                         setattr(axis, name, _draw_nothing)
                 taken.append(ax)
-            bridge = _Limn3D(ax, colls, marks, texts, sort, arith, draws_axes)
+            bridge = _Limn3D(ax, colls, marks, texts, sort, arith, draws_axes, box)
             ax.add_artist(bridge.back)
             ax.add_artist(bridge.front)
             swaps.append((colls + marks + texts, bridge))
-        fig.savefig(path, **kwargs)
+        _save_whole(fig, path, kwargs)
     finally:
         for solids in rasterized:
             solids.set_rasterized(True)
@@ -662,6 +718,40 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
             bridge.front.remove()
             for c in colls:
                 c.set_visible(True)
+
+
+def _save_whole(fig: Any, path: Any, kwargs: dict) -> None:
+    """``fig.savefig(path, **kwargs)``, with a file name written whole or not at all: the
+    figure is saved into memory first (a drawing that fails leaves no partial file), then
+    written to a new file in the target's folder and renamed over the target. The format
+    comes from ``format`` or the extension, as ``fig.savefig`` takes it (the canvas's
+    default format, appended to a name without extension). File objects are passed to
+    ``fig.savefig`` as they are."""
+    if not isinstance(path, (str, os.PathLike)):
+        fig.savefig(path, **kwargs)
+        return
+    target = os.fspath(path)
+    kwargs = dict(kwargs)
+    fmt = kwargs.pop("format", None)
+    if fmt is None:
+        fmt = os.path.splitext(target)[1][1:]
+        if not fmt:
+            fmt = fig.canvas.get_default_filetype()
+            target = target.rstrip(".") + "." + fmt
+    folder, name = os.path.split(os.path.abspath(target))
+    if not os.path.isdir(folder):
+        raise FileNotFoundError(f"cannot write {target}: no folder {folder}")
+    buf = io.BytesIO()
+    fig.savefig(buf, format=fmt, **kwargs)
+    tmp = os.path.join(folder, f".{name}.{secrets.token_hex(6)}.part")
+    try:
+        with open(tmp, "xb") as f:
+            f.write(buf.getvalue())
+        os.replace(tmp, target)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
 
 
 def _draw_nothing(*_: Any, **__: Any) -> None:

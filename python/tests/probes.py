@@ -19,7 +19,8 @@ def pixel_of(fig, ax, img, p):
     """The (row, column) of ``img`` (a raster of ``fig``) where the 3D point p projects."""
     from mpl_toolkits.mplot3d import proj3d
 
-    fig.canvas.draw()
+    if fig.stale:
+        fig.canvas.draw()  # the axes' projection and transforms as drawn
     xp, yp, _ = proj3d.proj_transform(*p, ax.get_proj())
     X, Y = ax.transData.transform((xp, yp))
     h, w = img.shape[:2]

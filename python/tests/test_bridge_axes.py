@@ -196,11 +196,15 @@ PANES = {"x": (0.9, 0.6, 0.6), "y": (0.6, 0.9, 0.6), "z": (0.6, 0.6, 0.9)}
 
 
 @pytest.mark.parametrize("variant", ["default", "grid off", "axis off", "x pane unfilled"])
-def test_the_axes_own_settings_are_respected(tmp_path, variant):
+@pytest.mark.parametrize("point", [(0.0, 0.0, 0.0), (0.0, 0.0, -1.3)], ids=["inside", "below"])
+def test_the_axes_own_settings_are_respected(tmp_path, variant, point):
+    # With the point inside the box, matplotlib draws the box (behind everything, which
+    # is exact); with the point below the floor, the box is limn scene content and the
+    # floor hides the point.
     fig, ax = box_axes(**{"grid.color": GREEN})
     for name, colour in PANES.items():
         getattr(ax, f"{name}axis").set_pane_color(colour, alpha=1.0)
-    ax.scatter([0.0], [0.0], [0.0], color=RED, s=20)  # content for the bridge
+    ax.scatter(*([c] for c in point), color=RED, s=20)
     if variant == "grid off":
         ax.grid(False)
     elif variant == "axis off":
@@ -221,6 +225,11 @@ def test_the_axes_own_settings_are_respected(tmp_path, variant):
         assert sum(counts.values()) < 20, counts  # the point's antialiased rim at most
     else:  # the x pane's outline is left, under the grid's edge lines
         assert counts["x"] < 50 and counts["y"] > 1000, counts
+    # matplotlib draws the point over the floor; the bridge hides it behind the floor
+    # (there is no floor with the axes off).
+    assert count_colour(theirs, RED) > 20
+    hidden = point[2] < -1 and variant != "axis off"
+    assert (count_colour(mine, RED) == 0) == hidden
     plt.close(fig)
 
 
@@ -237,4 +246,43 @@ def test_quiver_arrows_are_hidden_where_they_pass_under_a_surface(tmp_path):
     # matplotlib gives the arrow one depth and paints the sheet over all of it.
     assert near(colour_at(fig, ax, theirs, below), RED)
     assert near(colour_at(fig, ax, theirs, above), RED)
+    plt.close(fig)
+
+
+def test_the_box_drawn_by_limn_is_the_box_matplotlib_draws(tmp_path):
+    # With the data inside the box, "auto" leaves the box to matplotlib; "limn" makes it
+    # scene content. The two pictures agree but for antialiasing.
+    fig, ax, pts, _ = scatter_in_a_box()
+    lm.savefig(fig, tmp_path / "auto.svg")
+    lm.savefig(fig, tmp_path / "limn.svg", box="limn")
+    a = raster((tmp_path / "auto.svg").read_bytes(), 3.0)
+    b = raster((tmp_path / "limn.svg").read_bytes(), 3.0)
+    diff = np.abs(a[:, :, :3] - b[:, :, :3]).max(axis=2)
+    assert (diff > 0.1).sum() < 0.0005 * diff.size, (diff > 0.1).sum()
+    # "matplotlib" always leaves the box to matplotlib: the sheet through the back wall
+    # is then drawn over the wall, as in matplotlib's own export.
+    fig2, ax2 = box_axes()
+    ax2.grid(False)
+    ax2.yaxis.set_pane_color(PANE, alpha=1.0)
+    floor_through_the_back(ax2)
+    lm.savefig(fig2, tmp_path / "mpl_box.svg", box="matplotlib")
+    img = raster((tmp_path / "mpl_box.svg").read_bytes(), 3.0)
+    assert near(colour_at(fig2, ax2, img, (0.15, 1.3, 0.0)), RED)
+    plt.close(fig)
+    plt.close(fig2)
+
+
+@pytest.mark.filterwarnings("ignore:overflow:RuntimeWarning")
+def test_bad_input_raises_and_leaves_no_file(tmp_path):
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")  # limits from the data: no usable projection
+    x, y = np.meshgrid([0.0, 1.0], [0.0, 1.0])
+    ax.plot_surface(x, y, np.array([[0.0, 1e300], [0.0, 1e308]]))
+    with pytest.raises(ValueError):
+        lm.savefig(fig, tmp_path / "huge.svg")
+    with pytest.raises(ValueError, match="box"):
+        lm.savefig(fig, tmp_path / "box.svg", box="pane")
+    with pytest.raises(OSError, match="no folder"):
+        lm.savefig(fig, tmp_path / "missing" / "f.svg")
+    assert list(tmp_path.iterdir()) == []
     plt.close(fig)
