@@ -22,16 +22,19 @@ Scatter points keep mplot3d's depth shading (``depthshade``; see ``_depth_shadin
 3D texts (``Text3D`` from ``ax.text``) are limn labels: shown only where their anchor
 is visible, drawn by matplotlib itself.
 
-The axes' box is scene content as well (``_axes_box``): the panes with their colours and
-outlines, the grid lines on them and the axis lines along the box's edges, so that data
-poking out of the box are cut by the panes and grid or axis lines behind data are hidden.
-mplot3d draws the box before the data, then the ticks and labels; the bridge keeps that
-layering where the picture allows (``_layers``): panes, grid, axis lines and every item
-that must be painted before one of them come first, then matplotlib's ticks, tick labels
-and axis labels, then the rest of the data. ``ax.grid(False)``, ``ax.set_axis_off()``,
-pane colours and ``pane.fill`` are respected. Each drawing is clipped as matplotlib clips
-the artist it comes from. Scales must be linear; the private mplot3d attributes read are
-those of matplotlib 3.11.
+When data leave the axes' box, the box is scene content as well (``_axes_box``): the
+panes with their colours and outlines, the grid lines on them and the axis lines along
+the box's edges, so that data poking out of the box are seen through or behind the panes
+and grid or axis lines behind data are hidden. mplot3d draws the box before the data,
+then the ticks and labels; the bridge keeps that layering where the picture allows
+(``_layers``): panes, grid, axis lines and every item that must be painted before one
+of them come first, then matplotlib's ticks, tick labels and axis labels, then the rest
+of the data. While every vertex, point and text anchor lies inside the box, the box is
+behind all of them and mplot3d's own drawing of it is the exact picture, so the bridge
+leaves it to mplot3d (``box="auto"``). ``ax.grid(False)``, ``ax.set_axis_off()``, pane
+colours and ``pane.fill`` are respected. Each drawing is clipped as matplotlib clips the
+artist it comes from, and the file is written whole or not at all. Scales must be
+linear; the private mplot3d attributes read are those of matplotlib 3.11.
 """
 
 from __future__ import annotations
