@@ -73,7 +73,9 @@ def main():
         ("crossing 40×40, axes off", "none", lambda: crossing(40)),
         ("README example", "limn", readme),
     ]
-    print("| figure | quads | box drawn by | matplotlib | bridge | ratio | bytes matplotlib | bytes bridge |")
+    print(
+        "| figure | quads | box drawn by | matplotlib | bridge | ratio | bytes matplotlib | bytes bridge |"
+    )
     print("|---|---:|---|---:|---:|---:|---:|---:|")
     with tempfile.TemporaryDirectory() as d:
         for name, box, make in figures:

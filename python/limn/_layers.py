@@ -72,7 +72,9 @@ def _separated(a: np.ndarray, b: np.ndarray, axes: np.ndarray, gap: np.ndarray) 
     pa = np.einsum("kd,nmd->nmk", a, axes)
     pb = np.einsum("nkd,nmd->nmk", b, axes)
     g = gap[:, None]
-    return ((pb.min(axis=2) - pa.max(axis=2) >= g) | (pa.min(axis=2) - pb.max(axis=2) >= g)).any(axis=1)
+    return ((pb.min(axis=2) - pa.max(axis=2) >= g) | (pa.min(axis=2) - pb.max(axis=2) >= g)).any(
+        axis=1
+    )
 
 
 def under_axes(parts: List[Parts], pads: np.ndarray, background: np.ndarray) -> np.ndarray:

@@ -49,37 +49,16 @@ from typing import Any, Callable, List, NamedTuple, Optional, Tuple
 import numpy as np
 
 from . import Scene
-from ._depth_shading import depth_shaded, scatter_depth_shading
+from ._axes_box import axis_lines, grid_lines, inside_box, panes
+from ._content import Line, Marks, Polygons
+from ._drawing import draw_line, draw_marker, draw_polygon, draw_text, marker_reach
 from ._layers import under_axes
-from ._axes_box import Pane, axis_lines, grid_lines, inside_box, panes
 
 __all__ = ["savefig"]
 
 
 def _is_3d(ax: Any) -> bool:
     return getattr(ax, "name", "") == "3d"
-
-
-def _polys(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.ndarray, np.ndarray]:
-    """The collection's polygons in data coordinates, with face colours (colormapped),
-    edge colours and line widths per polygon."""
-    coll.do_3d_projection()  # also maps the colours
-    faces = np.asarray(coll._faces)
-    invalid = np.asarray(coll._invalid_vertices)
-    n = len(faces)
-    polys = []
-    for i in range(n):
-        keep = ~invalid[i] if invalid.ndim == 2 else np.ones(faces.shape[1], bool)
-        polys.append(np.asarray(faces[i][keep], dtype=float))
-    rep = lambda c: (  # noqa: E731
-        np.zeros((n, 4)) if len(c) == 0 else (np.repeat(c, n, axis=0) if len(c) != n else c)
-    )
-    fc = rep(np.asarray(coll._facecolor3d, dtype=float).reshape(-1, 4))
-    ec = np.asarray(coll._edgecolor3d, dtype=float).reshape(-1, 4)
-    ec = fc if len(ec) == 0 else rep(ec)
-    lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
-    lw = np.zeros(n) if len(lw) == 0 else (np.repeat(lw, n) if len(lw) != n else lw)
-    return polys, fc, ec, lw
 
 
 def _camera(ax: Any, renderer: Any, points: np.ndarray) -> Tuple[np.ndarray, float, float]:
@@ -103,167 +82,6 @@ def _camera(ax: Any, renderer: Any, points: np.ndarray) -> Tuple[np.ndarray, flo
     m[2] = s * M[2] + (-0.9 - s * zmin) * M[3]
     m[3] = M[3]
     return m, W, H
-
-
-def _lines(artist: Any) -> List[np.ndarray]:
-    """A ``Line3D``'s runs of finite points (matplotlib breaks lines at NaN)."""
-    xyz = (np.asarray(np.ma.filled(c, np.nan), dtype=float) for c in artist.get_data_3d())
-    return _runs(np.c_[tuple(a.ravel() for a in np.broadcast_arrays(*xyz))])
-
-
-def _runs(pts: np.ndarray) -> List[np.ndarray]:
-    """The runs of consecutive finite rows of ``pts``."""
-    ok = np.isfinite(pts).all(axis=1)
-    runs, start = [], None
-    for i, good in enumerate(list(ok) + [False]):
-        if good and start is None:
-            start = i
-        elif not good and start is not None:
-            runs.append(pts[start:i])
-            start = None
-    return runs
-
-
-class _Line(NamedTuple):
-    """One limn line of the bridge and how matplotlib draws its visible pieces."""
-
-    points: np.ndarray
-    rgba: np.ndarray
-    width: float
-    """Width in points."""
-    dash: Any
-    """``(offset, sequence)`` in points, or ``None`` for solid."""
-    background: bool = False
-    """A grid line or a pane's outline (painted under the axes' lines)."""
-    cap: str = "butt"
-    clip: Any = None
-    """The clip box of the artist it comes from (``None``: not clipped)."""
-
-
-class _Point(NamedTuple):
-    """One limn point of the bridge (a scatter point or a line's marker) and how
-    matplotlib draws it."""
-
-    at: np.ndarray
-    face: Tuple[float, ...]
-    edge: Tuple[float, ...]
-    edge_width: float
-    """In points."""
-    path: Any
-    """The marker's path (``None``: a circle)."""
-    scale: float
-    """Display units per unit of the path."""
-    clip: Any = None
-
-
-def _clip_of(artist: Any) -> Any:
-    """The clip box matplotlib gives ``artist``'s drawing (``None`` when it is not
-    clipped)."""
-    return artist.get_clip_box() if artist.get_clip_on() else None
-
-
-class _Lines:
-    """The bridge's lines, points and texts: what limn gets, and how matplotlib draws
-    each."""
-
-    def __init__(self) -> None:
-        self.lines: List[_Line] = []
-        self.points: List[_Point] = []
-        # Per limn label: the Text3D it shows.
-        self.texts: List[Any] = []
-
-    def add_line3d(self, line: Any, p2p: float) -> None:
-        from matplotlib.colors import to_rgba
-        from matplotlib.markers import MarkerStyle
-
-        rgba = np.array(to_rgba(line.get_color(), line.get_alpha()))
-        dash = line._dash_pattern if line.get_linestyle() not in ("-", "solid") else None
-        runs = _lines(line)
-        if line.get_linestyle() not in ("None", "none", " ", ""):
-            for r in runs:
-                if len(r) >= 2:
-                    w = float(line.get_linewidth())
-                    self.lines.append(_Line(r, rgba, w, dash, clip=_clip_of(line)))
-        ms = MarkerStyle(line.get_marker())
-        if ms.get_marker() not in ("None", "none", " ", "", None):
-            path = ms.get_path().transformed(ms.get_transform())
-            scale = float(line.get_markersize()) * p2p
-            fc = to_rgba(line.get_markerfacecolor(), line.get_alpha())
-            ec = to_rgba(line.get_markeredgecolor(), line.get_alpha())
-            for r in runs:
-                for q in r:
-                    ew = float(line.get_markeredgewidth())
-                    self.points.append(_Point(q, fc, ec, ew, path, scale, _clip_of(line)))
-
-    def add_line_collection(self, coll: Any, background: bool = False) -> None:
-        """A ``Line3DCollection`` (``plot_wireframe``, ``quiver``, the axes' grid)."""
-        segs = coll._segments3d
-        col = np.asarray(coll.get_colors(), dtype=float).reshape(-1, 4)
-        lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
-        ls = coll.get_linestyles()
-        for i, seg in enumerate(segs):
-            c = col[i % len(col)] if len(col) else np.array([0, 0, 0, 1.0])
-            w = float(lw[i % len(lw)]) if len(lw) else 1.0
-            off, seq = ls[i % len(ls)] if ls else (0, None)
-            dash = (off, seq) if seq else None
-            for r in _runs(np.asarray(seg, dtype=float).reshape(-1, 3)):
-                if len(r) >= 2 and c[3] > 0 and w > 0:
-                    clip = None if background else _clip_of(coll)
-                    self.lines.append(_Line(r, c, w, dash, background, clip=clip))
-
-    def add_pane_outline(self, pane: Pane) -> None:
-        if pane.width > 0:
-            loop = np.vstack([pane.corners, pane.corners[:1]])
-            self.lines.append(_Line(loop, pane.edge, pane.width, None, True, "projecting"))
-
-    def add_scatter(self, coll: Any, p2p: float, M: np.ndarray) -> None:
-        from matplotlib.collections import PathCollection
-
-        coll.update_scalarmappable()
-        xs, ys, zs = (np.asarray(np.ma.filled(c, np.nan), dtype=float).ravel() for c in coll._offsets3d)
-        pts = np.c_[xs, ys, zs]
-        n = len(pts)
-        # In input order: mplot3d's own getters return colours and widths sorted by
-        # depth (and "face" edges through them).
-        fc = np.asarray(PathCollection.get_facecolor(coll), dtype=float).reshape(-1, 4)
-        face_edges = isinstance(coll._edgecolors, str) and coll._edgecolors == "face"
-        ec = fc if face_edges else np.asarray(PathCollection.get_edgecolor(coll), dtype=float)
-        ec = ec.reshape(-1, 4)
-        shaded, min_alpha, alpha = scatter_depth_shading(coll)
-        if shaded and n:
-            fc = depth_shaded(np.broadcast_to(fc, (n, 4)) if len(fc) else fc, pts, M, min_alpha, alpha)
-            ec = fc if face_edges else (
-                depth_shaded(np.broadcast_to(ec, (n, 4)), pts, M, min_alpha, alpha) if len(ec) else ec
-            )
-        lw = np.asarray(getattr(coll, "_linewidths3d", coll.get_linewidths()), dtype=float)
-        lw = lw.reshape(-1)
-        sizes = np.asarray(coll._sizes3d, dtype=float).reshape(-1)
-        paths = coll.get_paths()
-        pick = lambda a, i, d: a[i % len(a)] if len(a) else d  # noqa: E731
-        for i in range(n):
-            if not np.isfinite(pts[i]).all():
-                continue
-            s = float(pick(sizes, i, 36.0))
-            self.points.append(
-                _Point(
-                    pts[i],
-                    tuple(pick(fc, i, (0, 0, 0, 0))),
-                    tuple(pick(ec, i, (0, 0, 0, 0))),
-                    float(pick(lw, i, 0.0)),
-                    pick(paths, i, None),
-                    np.sqrt(max(s, 0.0)) * p2p,
-                    _clip_of(coll),
-                )
-            )
-
-    def add_text(self, text: Any) -> None:
-        """A ``Text3D`` (``ax.text``): shown where its anchor is visible."""
-        if text.get_text() and np.isfinite(np.asarray(text.get_position_3d(), float)).all():
-            self.texts.append(text)
-
-    def vertices(self) -> List[np.ndarray]:
-        anchors = [q.at for q in self.points] + [t.get_position_3d() for t in self.texts]
-        return [ln.points for ln in self.lines] + [np.asarray(anchors, dtype=float).reshape(-1, 3)]
 
 
 class _Item(NamedTuple):
@@ -363,22 +181,15 @@ class _Limn3D:
             it.draw(renderer)
         self.later = []
 
-    def _paint(self, renderer: Any) -> List[_Item]:
-        """The scene of the axes ordered by limn: its painted polygons and visible marks as
-        items in paint order."""
+    def _content(self, p2p: float, M: np.ndarray) -> Tuple[Polygons, Marks]:
+        """The axes' polygons and marks, with its box when that goes into the scene
+        (first, in matplotlib's order: panes, their outlines, grid lines, axis lines)."""
         from mpl_toolkits.mplot3d.art3d import Line3DCollection, Path3DCollection
 
-        p2p = float(renderer.points_to_pixels(1.0))
-        M = np.asarray(self.ax.M, dtype=float)
-        polys, fcs, ecs, lws, clips = [], [], [], [], []
+        polys = Polygons()
         for coll in self.colls:
-            p, fc, ec, lw = _polys(coll)
-            clips += [_clip_of(coll)] * len(p)
-            polys += p
-            fcs.append(fc)
-            ecs.append(ec)
-            lws.append(lw)
-        data = _Lines()
+            polys.add_collection(coll)
+        data = Marks()
         for art in self.marks:
             if isinstance(art, Path3DCollection):
                 data.add_scatter(art, p2p, M)
@@ -392,63 +203,43 @@ class _Limn3D:
         # and the axis lines lie behind all of them (or in their plane): mplot3d's own
         # drawing of the box, before the data, is then the exact picture, and the box
         # stays out of the scene.
+        everything = np.concatenate([np.zeros((0, 3))] + polys.corners + data.vertices())
         self.box_in_limn = self.draws_axes and (
-            self.box == "limn"
-            or self.box == "auto"
-            and not inside_box(self.ax, np.concatenate([np.zeros((0, 3))] + polys + data.vertices()))
+            self.box == "limn" or self.box == "auto" and not inside_box(self.ax, everything)
         )
-        extra = _Lines()
-        background = np.zeros(len(polys), bool)
+        marks = Marks()
         if self.box_in_limn:
             walls = panes(self.ax)
-            filled = [w for w in walls if w.fill is not None]
-            polys += [w.corners for w in filled]
-            clips += [None] * len(filled)
-            fcs.append(np.array([w.fill for w in filled]).reshape(-1, 4))
-            ecs.append(np.zeros((len(filled), 4)))
-            lws.append(np.zeros(len(filled)))
-            background = np.r_[background, np.ones(len(filled), bool)]
-            # In matplotlib's order: outlines of the panes, grid lines, axis lines.
             for w in walls:
-                extra.add_pane_outline(w)
+                if w.fill is not None:
+                    polys.add_pane(w)
+            for w in walls:
+                marks.add_pane_outline(w)
             for grid in grid_lines(self.ax):
-                extra.add_line_collection(grid, background=True)
+                marks.add_line_collection(grid, background=True)
             for a in axis_lines(self.ax):
-                extra.lines.append(_Line(a.ends, a.rgba, a.width, None, True, a.cap))
-        extra.lines += data.lines
-        extra.points, extra.texts = data.points, data.texts
-        fc = np.concatenate(fcs) if fcs else np.zeros((0, 4))
-        ec = np.concatenate(ecs) if ecs else np.zeros((0, 4))
-        lw = np.concatenate(lws) if lws else np.zeros(0)
-        # Polygons of 3 and 4 corners as they are; longer ones as fans (matplotlib's
-        # polygons are convex in practice: quads of surfaces, bars, voxels).
-        verts, tris, quads = [], [], []
-        owner_t, owner_q = [], []
-        base = 0
-        for k, p in enumerate(polys):
-            if len(p) < 3:
-                continue
-            verts.append(p)
-            idx = base + np.arange(len(p))
-            base += len(p)
-            if len(p) == 4:
-                quads.append(idx)
-                owner_q.append(k)
-            else:
-                for j in range(1, len(p) - 1):
-                    tris.append([idx[0], idx[j], idx[j + 1]])
-                    owner_t.append(k)
-        if not verts and not extra.lines and not extra.points and not extra.texts:
+                marks.lines.append(Line(a.ends, a.rgba, a.width, None, True, a.cap))
+        marks.lines += data.lines
+        marks.points, marks.texts = data.points, data.texts
+        return polys, marks
+
+    def _paint(self, renderer: Any) -> List[_Item]:
+        """The scene of the axes ordered by limn: its painted polygons and visible marks as
+        items in paint order."""
+        p2p = float(renderer.points_to_pixels(1.0))
+        M = np.asarray(self.ax.M, dtype=float)
+        polys, extra = self._content(p2p, M)
+        fc, ec, lw = polys.styles()
+        v, tris, owner_t, quads, owner_q = polys.mesh()
+        if not len(v) and not extra.lines and not extra.points and not extra.texts:
             return []
-        v = np.concatenate(verts) if verts else np.zeros((0, 3))
         m, W, H = _camera(self.ax, renderer, np.concatenate([v] + extra.vertices()))
         wl, hl = max(1, int(round(W))), max(1, int(round(H)))
         scene = Scene()
-        owner = []
+        owner: List[int] = []
         for faces, own in ((tris, owner_t), (quads, owner_q)):
             if faces:
-                own = np.asarray(own)
-                scene.add_mesh(v, np.asarray(faces), colors=np.clip(fc[own], 0, 1))
+                scene.add_mesh(v, np.asarray(faces), colors=np.clip(fc[np.asarray(own)], 0, 1))
                 owner += list(own)
         for ln in extra.lines:
             scene.add_line(ln.points, color=np.clip(ln.rgba, 0, 1))
@@ -482,85 +273,44 @@ class _Limn3D:
                             _segments(disp),
                             0.75 * ln.width * p2p,  # projecting caps included
                             ln.background,
-                            partial(self._draw_line, line=ln, disp=disp, mk=mk, p2p=p2p),
+                            partial(draw_line, line=ln, disp=disp, mk=mk, p2p=p2p),
                         )
                     )
                 elif mk["kind"] == "marker" and mk["index"] is not None:
                     x, y = mk["at"]
                     pt = extra.points[mk["index"]]
                     xy = (x * sx, H - y * sy)
-                    reach = _marker_reach(pt.path) * pt.scale + pt.edge_width * p2p
+                    reach = marker_reach(pt.path) * pt.scale + pt.edge_width * p2p
                     items.append(
-                        _Item(
-                            [np.array([xy])],
-                            reach,
-                            False,
-                            partial(self._draw_marker, point=pt, xy=xy),
-                        )
+                        _Item([np.array([xy])], reach, False, partial(draw_marker, point=pt, xy=xy))
                     )
                 elif mk["kind"] == "label" and mk["index"] is not None:
                     text = extra.texts[mk["index"]]
-                    items.append(_Item(None, 0.0, False, partial(_draw_text, text=text)))
+                    items.append(_Item(None, 0.0, False, partial(draw_text, text=text)))
 
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
             k = owner[face]
             disp = disp_of(pts)
             edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
-            pad = 0.5 * lw[k] * p2p if edged else 0.0
             items.append(
                 _Item(
                     [disp],
-                    pad,
-                    bool(background[k]) if k < len(background) else False,
+                    0.5 * lw[k] * p2p if edged else 0.0,
+                    polys.background[k],
                     partial(
-                        _draw_polygon,
+                        draw_polygon,
                         disp=disp,
                         fill=tuple(fill),
                         edges=orig if edged else None,
                         edge=tuple(ec[k]),
                         width=float(lw[k]),
-                        clip=clips[k],
+                        clip=polys.clip[k],
                     ),
                 )
             )
         add_marks(len(polygons))
         return items
-
-    @staticmethod
-    def _draw_line(renderer: Any, line: _Line, disp: np.ndarray, mk: dict, p2p: float) -> None:
-        """One visible piece of a line in its matplotlib style (width and dashes in
-        points; the dash pattern continues from where the piece starts on the line)."""
-        from matplotlib.path import Path
-        from matplotlib.transforms import IdentityTransform
-
-        gc = renderer.new_gc()
-        gc.set_clip_rectangle(line.clip)
-        gc.set_foreground(tuple(line.rgba), isRGBA=True)
-        gc.set_linewidth(line.width)
-        gc.set_capstyle(line.cap)
-        gc.set_joinstyle("round")
-        if line.dash is not None and line.dash[1]:
-            off = (line.dash[0] or 0.0) + mk["dash_offset"] / p2p
-            gc.set_dashes(off, list(line.dash[1]))
-        renderer.draw_path(gc, Path(disp), IdentityTransform())
-        gc.restore()
-
-    @staticmethod
-    def _draw_marker(renderer: Any, point: _Point, xy: Tuple[float, float]) -> None:
-        """One visible scatter point or line marker: matplotlib's marker path, size and
-        colours at its projected anchor."""
-        from matplotlib.transforms import Affine2D
-
-        path = _marker_path(point.path)
-        gc = renderer.new_gc()
-        gc.set_clip_rectangle(point.clip)
-        gc.set_foreground(tuple(point.edge), isRGBA=True)
-        gc.set_linewidth(point.edge_width if point.edge[3] > 0 else 0)
-        t = Affine2D().scale(point.scale).translate(*xy)
-        face = point.face
-        renderer.draw_path(gc, path, t, tuple(face) if face[3] > 0 else None)
-        gc.restore()
 
 
 def _depths(M: np.ndarray, xyz: np.ndarray) -> np.ndarray:
@@ -579,56 +329,6 @@ def _paint_key(mk: dict, depth: np.ndarray, first_text: int) -> Tuple[int, float
     if kind == "label" and index is not None:
         return (2, -float(depth[first_text + index]))
     return (0, 0.0)
-
-
-def _marker_path(path: Any) -> Any:
-    from matplotlib.markers import MarkerStyle
-
-    return MarkerStyle("o").get_path() if path is None else path
-
-
-def _marker_reach(path: Any) -> float:
-    """How far a marker's path reaches from its anchor, in units of its scale."""
-    vs = np.asarray(_marker_path(path).vertices, dtype=float)
-    return float(np.abs(vs).max()) if vs.size else 0.0
-
-
-def _draw_polygon(
-    renderer: Any, disp: np.ndarray, fill: tuple, edges: Any, edge: tuple, width: float, clip: Any
-) -> None:
-    """A painted polygon: its fill, then its original edges in the face's edge colour
-    and width (points)."""
-    from matplotlib.path import Path
-    from matplotlib.transforms import IdentityTransform
-
-    gc = renderer.new_gc()
-    gc.set_clip_rectangle(clip)
-    gc.set_linewidth(0)
-    gc.set_foreground((0, 0, 0, 0), isRGBA=True)
-    path = Path(np.vstack([disp, disp[:1]]), closed=True)
-    renderer.draw_path(gc, path, IdentityTransform(), fill)
-    gc.restore()
-    if edges is not None:
-        n = len(disp)
-        segs = [(disp[i], disp[(i + 1) % n]) for i in range(n) if edges[i]]
-        codes = [Path.MOVETO, Path.LINETO] * len(segs)
-        gc = renderer.new_gc()
-        gc.set_clip_rectangle(clip)
-        gc.set_foreground(edge, isRGBA=True)
-        gc.set_linewidth(renderer.points_to_pixels(width))
-        gc.set_capstyle("round")
-        renderer.draw_path(gc, Path(np.array([q for s in segs for q in s]), codes), IdentityTransform())
-        gc.restore()
-
-
-def _draw_text(renderer: Any, text: Any) -> None:
-    """A visible ``Text3D`` drawn by matplotlib itself (its font, size, colour,
-    alignment and direction)."""
-    text.set_visible(True)
-    try:
-        type(text).draw(text, renderer)
-    finally:
-        text.set_visible(False)
 
 
 def savefig(

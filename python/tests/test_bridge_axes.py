@@ -10,7 +10,7 @@ mpl.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 import limn.matplotlib as lm  # noqa: E402
-from probes import colour_at, count_colour, near, pixel_of, raster  # noqa: E402
+from probes import colour_at, count_colour, near, raster  # noqa: E402
 
 RED = (0.85, 0.25, 0.2)
 BLUE = (0.2, 0.4, 0.85)
@@ -121,7 +121,9 @@ def test_depth_shaded_scatter_and_the_axes_register_with_matplotlibs_own_export(
     plain, _, _, _ = scatter_in_a_box(depthshade=False)
     lm.savefig(plain, tmp_path / "plain.svg")
     flat = raster((tmp_path / "plain.svg").read_bytes(), 3.0)
-    faded = sum(not near(colour_at(fig, ax, flat, p), colour_at(fig, ax, mine, p), 0.05) for p in pts)
+    faded = sum(
+        not near(colour_at(fig, ax, flat, p), colour_at(fig, ax, mine, p), 0.05) for p in pts
+    )
     assert faded > 10, faded
     plt.close(fig)
     plt.close(plain)
