@@ -231,8 +231,9 @@ def test_savefig_orders_intersecting_surfaces_where_matplotlib_does_not(tmp_path
     plt.close(fig)
 
 
+@pytest.mark.parametrize("box", ["auto", "limn"])
 @pytest.mark.parametrize("ext", ["svg", "pdf"])
-def test_output_is_one_vector_file(tmp_path, ext):
+def test_output_is_one_vector_file(tmp_path, ext, box):
     fig, ax, _ = crossing_surfaces()
     ax.set_title("two surfaces")
     x, y = np.meshgrid(np.linspace(-1, 1, 8), np.linspace(-1, 1, 8))
@@ -240,7 +241,7 @@ def test_output_is_one_vector_file(tmp_path, ext):
     fig.colorbar(s, ax=ax)  # matplotlib rasterises a colorbar's solids on its own
     ax.scatter([0.0, 0.5], [0.0, -0.5], [0.8, 0.2], c=[0.1, 0.9], cmap="plasma")
     ax.text(0.0, 0.0, 0.9, "peak")
-    lm.savefig(fig, tmp_path / f"f.{ext}")
+    lm.savefig(fig, tmp_path / f"f.{ext}", box=box)  # the axes' box by matplotlib or limn
     data = (tmp_path / f"f.{ext}").read_bytes()
     if ext == "svg":
         assert b"<image" not in data and b"<path" in data
