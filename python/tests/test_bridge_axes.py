@@ -48,8 +48,10 @@ def floor_through_the_back(ax):
     ax.plot_surface(x, y, 0 * x, color=RED, shade=False, linewidth=0)
 
 
-def test_a_surface_crossing_a_pane_is_cut_by_it(tmp_path):
+@pytest.mark.parametrize("proj", ["persp", "ortho"])
+def test_a_surface_crossing_a_pane_is_cut_by_it(tmp_path, proj):
     fig, ax = box_axes()
+    ax.set_proj_type(proj)
     ax.grid(False)
     ax.yaxis.set_pane_color(PANE, alpha=1.0)
     floor_through_the_back(ax)
