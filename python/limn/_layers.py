@@ -66,53 +66,60 @@ def _axes(verts: np.ndarray) -> np.ndarray:
 
 
 def _separated(a: np.ndarray, b: np.ndarray, axes: np.ndarray, gap: np.ndarray) -> np.ndarray:
-    """Whether some axis separates part ``a`` (K, 2) from each part of ``b`` (N, K, 2)
-    by ``gap`` (N,) or more; ``axes`` (N, M, 2). Parts that only touch (gap 0) are
-    separated."""
-    pa = np.einsum("kd,nmd->nmk", a, axes)
-    pb = np.einsum("nkd,nmd->nmk", b, axes)
+    """Whether some axis separates each part of ``a`` (N, K, 2) from the part of ``b``
+    (N, K, 2) in the same row by ``gap`` (N,) or more; ``axes`` (N, M, 2). Parts that
+    only touch (gap 0) are separated."""
+    ax, ay = axes[:, :, None, 0], axes[:, :, None, 1]
+    pa = a[:, None, :, 0] * ax + a[:, None, :, 1] * ay  # (N, M, K)
+    pb = b[:, None, :, 0] * ax + b[:, None, :, 1] * ay
     g = gap[:, None]
-    return ((pb.min(axis=2) - pa.max(axis=2) >= g) | (pa.min(axis=2) - pb.max(axis=2) >= g)).any(
-        axis=1
-    )
+    apart = (pb.min(axis=2) - pa.max(axis=2) >= g) | (pa.min(axis=2) - pb.max(axis=2) >= g)
+    return apart.any(axis=1)
 
 
 def under_axes(parts: List[Parts], pads: np.ndarray, background: np.ndarray) -> np.ndarray:
     """The items to paint before matplotlib's ticks and labels: every ``background`` item
-    and, closed under this rule, every item painted before one of them that overlaps it.
+    and every item painted before one of those items that overlaps it, and so on.
 
     parts: per item in paint order, its convex parts (or ``None``: everywhere); pads: (N,)
     display units each part is widened by; background: (N,) bool. Painting the returned
     items in their order, then the others in theirs, gives the same picture as the paint
     order: no two overlapping items change places.
+
+    Computed in rounds: the parts of the items chosen last are tested against every
+    earlier part not chosen yet whose box meets theirs, all pairs at once.
     """
     under = np.array(background, dtype=bool).copy()
     if not under.any():
         return under
     owner, verts, pad, box = _table(parts, np.asarray(pads, dtype=float))
     own_axes = _axes(verts)
-    first = np.searchsorted(owner, np.arange(len(parts) + 1))
-    queue = list(np.nonzero(under)[0])
-    while queue:
-        k = queue.pop()
-        for j in range(first[k], first[k + 1]):
-            x0, y0, x1, y1 = box[j]
-            c = np.nonzero(
-                (owner < k)
-                & ~under[owner]
-                & (box[:, 0] <= x1)
-                & (box[:, 2] >= x0)
-                & (box[:, 1] <= y1)
-                & (box[:, 3] >= y0)
-            )[0]
-            if len(c) == 0:
+    frontier = np.nonzero(under[owner])[0]
+    while len(frontier):
+        found = []
+        for chunk in np.array_split(frontier, max(1, len(frontier) // 256)):
+            f = box[chunk]
+            meets = (
+                (owner[:, None] < owner[chunk][None, :])
+                & ~under[owner][:, None]
+                & (box[:, 0:1] <= f[None, :, 2])
+                & (box[:, 2:3] >= f[None, :, 0])
+                & (box[:, 1:2] <= f[None, :, 3])
+                & (box[:, 3:4] >= f[None, :, 1])
+            )
+            p, q = np.nonzero(meets)
+            if len(p) == 0:
                 continue
-            gap = pad[c] + pad[j]
-            mine = np.broadcast_to(own_axes[j], (len(c),) + own_axes[j].shape)
-            axes = np.concatenate([mine, own_axes[c]], axis=1)
-            meets = ~_separated(verts[j], verts[c], axes, gap)
-            new = np.unique(owner[c[meets]])
-            new = new[~under[new]]
-            under[new] = True
-            queue.extend(new)
+            q = chunk[q]
+            # The chosen part's own axes first (a line's normal separates most pairs),
+            # then the other part's axes for the pairs left.
+            gap = pad[p] + pad[q]
+            keep = ~_separated(verts[p], verts[q], own_axes[q], gap)
+            p, q, gap = p[keep], q[keep], gap[keep]
+            keep = ~_separated(verts[p], verts[q], own_axes[p], gap)
+            found.append(owner[p[keep]])
+        new = np.unique(np.concatenate(found)) if found else np.zeros(0, int)
+        new = new[~under[new]]
+        under[new] = True
+        frontier = np.nonzero(np.isin(owner, new))[0]
     return under
