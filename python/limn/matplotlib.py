@@ -143,6 +143,14 @@ class _Limn3D:
         import time
 
         t0 = time.perf_counter()
+        if _measuring(renderer):
+            # matplotlib's measuring pass (``bbox_inches="tight"``) draws nothing: the
+            # axes update their state as mplot3d's own drawing would, limn is not run.
+            self.later = []
+            if self.draws_axes:
+                for axis in self.ax._axis_map.values():
+                    type(axis).draw(axis, renderer)
+            return
         items = self._paint(renderer)
         if self.draws_axes and not self.box_in_limn:
             # mplot3d's own order: panes, grid, then axis lines, ticks and labels.
@@ -311,6 +319,14 @@ class _Limn3D:
             )
         add_marks(len(polygons))
         return items
+
+
+def _measuring(renderer: Any) -> bool:
+    """Whether ``renderer`` is in matplotlib's measuring pass (``_draw_disabled``: its
+    drawing methods replaced by no-ops on the instance, or on the vector renderer inside
+    a mixed-mode renderer)."""
+    inner = getattr(renderer, "_renderer", None)
+    return any("draw_path" in getattr(r, "__dict__", {}) for r in (renderer, inner))
 
 
 def _depths(M: np.ndarray, xyz: np.ndarray) -> np.ndarray:

@@ -290,3 +290,24 @@ def test_bad_input_raises_and_leaves_no_file(tmp_path):
         lm.savefig(fig, tmp_path / "missing" / "f.svg")
     assert list(tmp_path.iterdir()) == []
     plt.close(fig)
+
+
+def test_a_tight_bounding_box_is_matplotlibs_and_limn_orders_once(tmp_path, monkeypatch):
+    import re
+
+    import limn
+
+    calls = []
+    paint = limn.Scene.paint_with_marks
+    monkeypatch.setattr(
+        limn.Scene, "paint_with_marks", lambda s, **k: calls.append(1) or paint(s, **k)
+    )
+    fig, ax = box_axes()
+    floor_through_the_back(ax)
+    fig.savefig(tmp_path / "mpl.svg", bbox_inches="tight")
+    lm.savefig(fig, tmp_path / "limn.svg", bbox_inches="tight")
+    # matplotlib's measuring pass draws nothing: limn orders the scene once.
+    assert len(calls) == 1
+    size = lambda f: re.search(rb'width="[^"]+" height="[^"]+"', f.read_bytes()).group(0)  # noqa
+    assert size(tmp_path / "limn.svg") == size(tmp_path / "mpl.svg")
+    plt.close(fig)
