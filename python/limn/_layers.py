@@ -12,8 +12,8 @@ overlaps are judged conservatively.
 
 Overlap is judged on convex parts (a polygon, one segment of a line piece, a marker's
 anchor) widened by a pad (half a stroke, a marker's reach): two parts overlap unless an
-axis separates them (an edge's normal or direction of either part), which never misses
-a real overlap. Parts that only touch do not overlap: the fills of two faces sharing an
+axis separates them (an edge's normal of either part, or a segment's direction), which
+never misses a real overlap. Parts that only touch do not overlap: the fills of two faces sharing an
 edge may change places, which changes no boundary of the picture, only the blending
 order of the antialiased pixels along that edge (otherwise the rule would pull every
 face of a surface under the ticks, one neighbour after another).
@@ -56,11 +56,12 @@ def _table(parts: List[Parts], pads: np.ndarray):
 
 
 def _axes(verts: np.ndarray) -> np.ndarray:
-    """Unit normals and directions of the edges of each part: (..., 2K, 2); zero for
-    edges of zero length."""
+    """Unit normals of the edges of each part, (P, K, 2); where an edge has zero length
+    (the padding of short parts), the direction of the part's first edge instead, which
+    gives a segment both its normal and its direction. Zero for a single point."""
     d = np.roll(verts, -1, axis=-2) - verts
     n = np.stack([-d[..., 1], d[..., 0]], axis=-1)
-    a = np.concatenate([n, d], axis=-2)
+    a = np.where((n == 0).all(axis=-1, keepdims=True), d[..., :1, :], n)
     length = np.linalg.norm(a, axis=-1, keepdims=True)
     return np.divide(a, length, out=np.zeros_like(a), where=length > 0)
 
@@ -74,7 +75,8 @@ def _separated(a: np.ndarray, b: np.ndarray, axes: np.ndarray, gap: np.ndarray) 
     pb = b[:, None, :, 0] * ax + b[:, None, :, 1] * ay
     g = gap[:, None]
     apart = (pb.min(axis=2) - pa.max(axis=2) >= g) | (pa.min(axis=2) - pb.max(axis=2) >= g)
-    return apart.any(axis=1)
+    real = (axes != 0).any(axis=2)  # a zero axis separates nothing
+    return (apart & real).any(axis=1)
 
 
 def under_axes(parts: List[Parts], pads: np.ndarray, background: np.ndarray) -> np.ndarray:
