@@ -92,7 +92,7 @@ class _Item(NamedTuple):
     display units (``None``: anywhere)."""
     pad: float
     background: bool
-    """A pane, a grid line or a pane's outline."""
+    """Part of the axes' box: a pane, its outline, a grid line or an axis line."""
     draw: Callable[[Any], None]
 
 
@@ -137,12 +137,8 @@ class _Limn3D:
         self.front.set_zorder(max(axis.get_zorder() for axis in ax._axis_map.values()) + 1)
         self.later: List[_Item] = []
         self.box_in_limn = False
-        self.seconds = 0.0
 
     def draw_back(self, renderer: Any) -> None:
-        import time
-
-        t0 = time.perf_counter()
         if _measuring(renderer):
             # matplotlib's measuring pass (``bbox_inches="tight"``) draws nothing: the
             # axes update their state as mplot3d's own drawing would, limn is not run.
@@ -162,7 +158,6 @@ class _Limn3D:
             for axis in axes:
                 type(axis).draw(axis, renderer)
             self.later = items
-            self.seconds += time.perf_counter() - t0
             return
         under = under_axes(
             [it.parts for it in items],
@@ -182,7 +177,6 @@ class _Limn3D:
                 finally:
                     axis.line.set_visible(shown)
         self.later = [it for it, u in zip(items, under) if not u]
-        self.seconds += time.perf_counter() - t0
 
     def draw_front(self, renderer: Any) -> None:
         for it in self.later:
