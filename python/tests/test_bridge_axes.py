@@ -41,7 +41,7 @@ def box_axes(**rc):
     return fig, ax
 
 
-def floor_through_the_back(ax):
+def sheet_through_the_back_wall(ax):
     """A flat red sheet at z = 0 reaching from inside the box out through the back wall
     y = 1 to y = 1.6, in cells 0.3 by 0.2 (probes sit at cell centres, off the seams)."""
     x, y = np.meshgrid(np.linspace(-0.6, 0.6, 5), np.linspace(-0.6, 1.6, 12))
@@ -54,7 +54,7 @@ def test_a_surface_crossing_a_pane_is_cut_by_it(tmp_path, proj):
     ax.set_proj_type(proj)
     ax.grid(False)
     ax.yaxis.set_pane_color(PANE, alpha=1.0)
-    floor_through_the_back(ax)
+    sheet_through_the_back_wall(ax)
     mine, theirs = both(fig, tmp_path)
     # In front of the wall the sheet shows; the part behind the opaque wall does not,
     # the wall does. matplotlib draws the panes first, so its export shows the sheet
@@ -75,7 +75,7 @@ def test_grid_lines_are_hidden_behind_a_surface_and_drawn_over_what_lies_behind_
     tmp_path,
 ):
     fig, ax = box_axes(**{"grid.color": GREEN, "grid.linewidth": 2.0})
-    floor_through_the_back(ax)
+    sheet_through_the_back_wall(ax)
     mine, theirs = both(fig, tmp_path)
     # The grid line x = 0 on the back wall y = 1. Below the sheet (z < 0) the sheet in
     # front of the wall hides it; just above the sheet it runs in front of the part of
@@ -152,7 +152,7 @@ def test_depth_shaded_alphas_are_mplot3ds(alpha):
 def test_a_text_behind_a_surface_is_hidden(tmp_path):
     fig, ax = box_axes()
     ax.grid(False)
-    floor_through_the_back(ax)
+    sheet_through_the_back_wall(ax)
     ax.text(0.0, 0.2, -0.4, "under", color=BLUE, fontsize=14, ha="center")
     ax.text(0.0, 0.2, 0.3, "over", color=GREEN, fontsize=14, ha="center")
     mine, theirs = both(fig, tmp_path)
@@ -240,7 +240,7 @@ def test_the_axes_own_settings_are_respected(tmp_path, variant, point):
 def test_quiver_arrows_are_hidden_where_they_pass_under_a_surface(tmp_path):
     fig, ax = box_axes()
     ax.grid(False)
-    floor_through_the_back(ax)
+    sheet_through_the_back_wall(ax)
     # One arrow up through the sheet: its shaft and head are a Line3DCollection.
     ax.quiver(0.15, 0.3, -0.6, 0, 0, 1.2, color=GREEN, linewidth=3, arrow_length_ratio=0.2)
     mine, theirs = both(fig, tmp_path)
@@ -268,7 +268,7 @@ def test_the_box_drawn_by_limn_is_the_box_matplotlib_draws(tmp_path):
     fig2, ax2 = box_axes()
     ax2.grid(False)
     ax2.yaxis.set_pane_color(PANE, alpha=1.0)
-    floor_through_the_back(ax2)
+    sheet_through_the_back_wall(ax2)
     lm.savefig(fig2, tmp_path / "mpl_box.svg", box="matplotlib")
     img = raster((tmp_path / "mpl_box.svg").read_bytes(), 3.0)
     assert near(colour_at(fig2, ax2, img, (0.15, 1.3, 0.0)), RED)
@@ -303,7 +303,7 @@ def test_a_tight_bounding_box_is_matplotlibs_and_limn_orders_once(tmp_path, monk
         limn.Scene, "paint_with_marks", lambda s, **k: calls.append(1) or paint(s, **k)
     )
     fig, ax = box_axes()
-    floor_through_the_back(ax)
+    sheet_through_the_back_wall(ax)
     fig.savefig(tmp_path / "mpl.svg", bbox_inches="tight")
     lm.savefig(fig, tmp_path / "limn.svg", bbox_inches="tight")
     # matplotlib's measuring pass draws nothing: limn orders the scene once.
