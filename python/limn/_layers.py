@@ -99,20 +99,29 @@ def under_axes(parts: List[Parts], pads: np.ndarray, background: np.ndarray) -> 
     frontier = np.nonzero(under[owner])[0]
     while len(frontier):
         found = []
-        for chunk in np.array_split(frontier, max(1, len(frontier) // 256)):
+        # Chunks of nearby parts (sorted by left edge), each against the parts in the
+        # slab of x it spans.
+        frontier = frontier[np.argsort(box[frontier, 0], kind="stable")]
+        for chunk in np.array_split(frontier, max(1, len(frontier) // 64)):
             f = box[chunk]
+            slab = np.nonzero(
+                (box[:, 0] <= f[:, 2].max())
+                & (box[:, 2] >= f[:, 0].min())
+                & (owner < owner[chunk].max())
+                & ~under[owner]
+            )[0]
+            b = box[slab]
             meets = (
-                (owner[:, None] < owner[chunk][None, :])
-                & ~under[owner][:, None]
-                & (box[:, 0:1] <= f[None, :, 2])
-                & (box[:, 2:3] >= f[None, :, 0])
-                & (box[:, 1:2] <= f[None, :, 3])
-                & (box[:, 3:4] >= f[None, :, 1])
+                (owner[slab][:, None] < owner[chunk][None, :])
+                & (b[:, 0:1] <= f[None, :, 2])
+                & (b[:, 2:3] >= f[None, :, 0])
+                & (b[:, 1:2] <= f[None, :, 3])
+                & (b[:, 3:4] >= f[None, :, 1])
             )
             p, q = np.nonzero(meets)
             if len(p) == 0:
                 continue
-            q = chunk[q]
+            p, q = slab[p], chunk[q]
             # The chosen part's own axes first (a line's normal separates most pairs),
             # then the other part's axes for the pairs left.
             gap = pad[p] + pad[q]
