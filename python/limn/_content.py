@@ -167,18 +167,8 @@ class Marks:
         ec = ec.reshape(-1, 4)
         shaded, min_alpha, alpha = scatter_depth_shading(coll)
         if shaded and n:
-            fc = depth_shaded(
-                np.broadcast_to(fc, (n, 4)) if len(fc) else fc, pts, M, min_alpha, alpha
-            )
-            ec = (
-                fc
-                if face_edges
-                else (
-                    depth_shaded(np.broadcast_to(ec, (n, 4)), pts, M, min_alpha, alpha)
-                    if len(ec)
-                    else ec
-                )
-            )
+            fc = depth_shaded(fc, pts, M, min_alpha, alpha)
+            ec = fc if face_edges else depth_shaded(ec, pts, M, min_alpha, alpha)
         lw = np.asarray(getattr(coll, "_linewidths3d", coll.get_linewidths()), dtype=float)
         lw = lw.reshape(-1)
         sizes = np.asarray(coll._sizes3d, dtype=float).reshape(-1)

@@ -16,8 +16,9 @@ import numpy as np
 def depth_shaded(
     rgba: np.ndarray, xyz: np.ndarray, M: np.ndarray, min_alpha: float, alpha: Optional[float]
 ) -> np.ndarray:
-    """``rgba`` (N, 4), one colour per point of ``xyz`` (N, 3), with the alpha mplot3d
-    gives it when the axes project through ``M``.
+    """``rgba`` (N, 4) or one colour (1, 4) for the points ``xyz`` (N, 3), with the alpha
+    mplot3d gives each point when the axes project through ``M``: (N, 4), or (0, 4) when
+    ``rgba`` is empty.
 
     Mirrors matplotlib 3.11's ``mpl_toolkits.mplot3d.art3d._zalpha`` with the scale of
     ``art3d._get_data_scale`` and the alpha handling of
@@ -38,8 +39,9 @@ def depth_shaded(
     rgba = np.array(rgba, dtype=float).reshape(-1, 4)
     xyz = np.asarray(xyz, dtype=float).reshape(-1, 3)
     ok = np.isfinite(xyz).all(axis=1)
-    if not ok.any():
-        return rgba
+    if len(rgba) == 0 or not ok.any():
+        return rgba  # no colours ("none"): nothing to shade
+    rgba = np.array(np.broadcast_to(rgba, (len(xyz), 4)))
     hom = np.c_[xyz[ok], np.ones(int(ok.sum()))] @ np.asarray(M, dtype=float).T
     proj = hom[:, :3] / hom[:, 3:4]
     scale = float(np.sqrt((np.ptp(proj, axis=0) ** 2).sum()))

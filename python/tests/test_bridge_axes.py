@@ -311,3 +311,24 @@ def test_a_tight_bounding_box_is_matplotlibs_and_limn_orders_once(tmp_path, monk
     size = lambda f: re.search(rb'width="[^"]+" height="[^"]+"', f.read_bytes()).group(0)  # noqa
     assert size(tmp_path / "limn.svg") == size(tmp_path / "mpl.svg")
     plt.close(fig)
+
+
+@pytest.mark.parametrize(
+    "style",
+    [
+        dict(facecolors="none", edgecolors="r"),
+        dict(c="b", edgecolors="k", linewidths=2),
+        dict(c=np.linspace(0, 1, 20), alpha=0.5),
+        dict(s=np.linspace(5, 80, 20), marker="^"),
+        dict(c="g", depthshade=False),
+    ],
+    ids=["hollow", "edged", "alpha", "sizes", "flat"],
+)
+def test_scatter_styles_are_drawn_as_matplotlib_draws_them(tmp_path, style):
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")
+    ax.scatter(*np.random.default_rng(0).uniform(-1, 1, (3, 20)), **style)
+    mine, theirs = both(fig, tmp_path, zoom=2.0)
+    diff = np.abs(mine[:, :, :3] - theirs[:, :, :3]).max(axis=2)
+    assert (diff > 0.1).sum() < 0.0005 * diff.size, (diff > 0.1).sum()
+    plt.close(fig)
