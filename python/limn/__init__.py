@@ -7,7 +7,8 @@
 ``render_mesh`` draws one mesh; ``Scene`` holds several meshes, lines, point markers,
 labels, lights and a camera
 (perspective, orthographic, or a 4x4 view-projection matrix); ``limn.matplotlib.savefig``
-writes a matplotlib figure whose 3D axes are ordered exactly by limn.
+writes a matplotlib figure whose 3D axes are ordered exactly by limn (surfaces, bars,
+lines, scatter points, 3D texts and, when data leave it, the axes' box).
 """
 
 from __future__ import annotations

@@ -12,53 +12,53 @@ would take, so the file is one vector file of the format the extension names (SV
 ...), with no raster embedded (colorbars, which rasterise their solids of 50 colours or
 more, are kept as vectors too).
 
-Lines (``Line3D`` from ``plot``, ``Line3DCollection`` from ``plot_wireframe``) and
-scatter points (``Path3DCollection``) go into the same limn scene as the polygons, so
-they are hidden exactly by the surfaces in front of them (a line on a surface's own
-polygon is drawn over it); their visible pieces and markers are drawn by matplotlib's
-renderer in matplotlib's own style (colour, width, dashes, marker path, size), at their
-place in limn's paint order. Scatter points are drawn in their colours without
-matplotlib's depth shading (limn decides what is in front).
+Lines (``Line3D`` from ``plot``, ``Line3DCollection`` from ``plot_wireframe`` and
+``quiver``) and scatter points (``Path3DCollection``) go into the same limn scene as the
+polygons, so they are hidden exactly by the surfaces in front of them (a line on a
+surface's own polygon is drawn over it); their visible pieces and markers are drawn by
+matplotlib's renderer in matplotlib's own style (colour, width, dashes, marker path,
+size), at their place in limn's paint order, markers far to near as mplot3d paints them.
+Scatter points keep mplot3d's depth shading (``depthshade``; see ``_depth_shading``).
+3D texts (``Text3D`` from ``ax.text``) are limn labels: shown only where their anchor
+is visible, drawn by matplotlib itself.
 
-The axes' panes and grid lines stay matplotlib's own, drawn first (behind the data) as
-matplotlib draws them. Scales must be linear.
+When data leave the axes' box, the box is scene content as well (``_axes_box``): the
+panes with their colours and outlines, the grid lines on them and the axis lines along
+the box's edges, so that data poking out of the box are seen through or behind the panes
+and grid or axis lines behind data are hidden. mplot3d draws the box before the data,
+then the ticks and labels; the bridge keeps that layering where the picture allows
+(``_layers``): panes, grid, axis lines and every item that must be painted before one
+of them come first, then matplotlib's ticks, tick labels and axis labels, then the rest
+of the data. While every vertex, point and text anchor lies inside the box, the box is
+behind all of them and mplot3d's own drawing of it is the exact picture, so the bridge
+leaves it to mplot3d (``box="auto"``). ``ax.grid(False)``, ``ax.set_axis_off()``, pane
+colours and ``pane.fill`` are respected. Each drawing is clipped as matplotlib clips the
+artist it comes from, and the file is written whole or not at all. Scales must be
+linear; the private mplot3d attributes read are those of matplotlib 3.11.
 """
 
 from __future__ import annotations
 
-from typing import Any, List, Tuple
+import contextlib
+import io
+import os
+import secrets
+from functools import partial
+from typing import Any, Callable, List, NamedTuple, Optional, Tuple
 
 import numpy as np
 
 from . import Scene
+from ._axes_box import axis_lines, grid_lines, inside_box, panes
+from ._content import Line, Marks, Polygons
+from ._drawing import draw_line, draw_marker, draw_polygon, draw_text, marker_reach
+from ._layers import under_axes
 
 __all__ = ["savefig"]
 
 
 def _is_3d(ax: Any) -> bool:
     return getattr(ax, "name", "") == "3d"
-
-
-def _polys(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.ndarray, np.ndarray]:
-    """The collection's polygons in data coordinates, with face colours (colormapped),
-    edge colours and line widths per polygon."""
-    coll.do_3d_projection()  # also maps the colours
-    faces = np.asarray(coll._faces)
-    invalid = np.asarray(coll._invalid_vertices)
-    n = len(faces)
-    polys = []
-    for i in range(n):
-        keep = ~invalid[i] if invalid.ndim == 2 else np.ones(faces.shape[1], bool)
-        polys.append(np.asarray(faces[i][keep], dtype=float))
-    rep = lambda c: (  # noqa: E731
-        np.zeros((n, 4)) if len(c) == 0 else (np.repeat(c, n, axis=0) if len(c) != n else c)
-    )
-    fc = rep(np.asarray(coll._facecolor3d, dtype=float).reshape(-1, 4))
-    ec = np.asarray(coll._edgecolor3d, dtype=float).reshape(-1, 4)
-    ec = fc if len(ec) == 0 else rep(ec)
-    lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
-    lw = np.zeros(n) if len(lw) == 0 else (np.repeat(lw, n) if len(lw) != n else lw)
-    return polys, fc, ec, lw
 
 
 def _camera(ax: Any, renderer: Any, points: np.ndarray) -> Tuple[np.ndarray, float, float]:
@@ -84,280 +84,300 @@ def _camera(ax: Any, renderer: Any, points: np.ndarray) -> Tuple[np.ndarray, flo
     return m, W, H
 
 
-def _lines(artist: Any) -> List[np.ndarray]:
-    """A ``Line3D``'s runs of finite points (matplotlib breaks lines at NaN)."""
-    xyz = (np.asarray(np.ma.filled(c, np.nan), dtype=float) for c in artist.get_data_3d())
-    return _runs(np.c_[tuple(a.ravel() for a in np.broadcast_arrays(*xyz))])
+class _Item(NamedTuple):
+    """One thing limn painted, ready for matplotlib to draw."""
+
+    parts: Optional[List[np.ndarray]]
+    """Convex parts covering where its drawing may put ink once widened by ``pad``, in
+    display units (``None``: anywhere)."""
+    pad: float
+    background: bool
+    """Part of the axes' box: a pane, its outline, a grid line or an axis line."""
+    draw: Callable[[Any], None]
 
 
-def _runs(pts: np.ndarray) -> List[np.ndarray]:
-    """The runs of consecutive finite rows of ``pts``."""
-    ok = np.isfinite(pts).all(axis=1)
-    runs, start = [], None
-    for i, good in enumerate(list(ok) + [False]):
-        if good and start is None:
-            start = i
-        elif not good and start is not None:
-            runs.append(pts[start:i])
-            start = None
-    return runs
-
-
-class _Lines:
-    """The bridge's lines and points: what limn gets, and how matplotlib draws each."""
-
-    def __init__(self) -> None:
-        # Per limn line: (points, rgba, width in points, dash (offset, seq) in points).
-        self.lines: List[Tuple[np.ndarray, np.ndarray, float, Any]] = []
-        # Per limn point: (position, face rgba, edge rgba, edge width, path, scale).
-        self.points: List[Tuple[np.ndarray, Any, Any, float, Any, float]] = []
-
-    def add_line3d(self, line: Any, p2p: float) -> None:
-        from matplotlib.colors import to_rgba
-        from matplotlib.markers import MarkerStyle
-
-        rgba = np.array(to_rgba(line.get_color(), line.get_alpha()))
-        dash = line._dash_pattern if line.get_linestyle() not in ("-", "solid") else None
-        runs = _lines(line)
-        if line.get_linestyle() not in ("None", "none", " ", ""):
-            for r in runs:
-                if len(r) >= 2:
-                    self.lines.append((r, rgba, float(line.get_linewidth()), dash))
-        ms = MarkerStyle(line.get_marker())
-        if ms.get_marker() not in ("None", "none", " ", "", None):
-            path = ms.get_path().transformed(ms.get_transform())
-            scale = float(line.get_markersize()) * p2p
-            fc = to_rgba(line.get_markerfacecolor(), line.get_alpha())
-            ec = to_rgba(line.get_markeredgecolor(), line.get_alpha())
-            for r in runs:
-                for q in r:
-                    self.points.append((q, fc, ec, float(line.get_markeredgewidth()), path, scale))
-
-    def add_line_collection(self, coll: Any) -> None:
-        segs = coll._segments3d
-        col = np.asarray(coll.get_colors(), dtype=float).reshape(-1, 4)
-        lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
-        ls = coll.get_linestyles()
-        for i, seg in enumerate(segs):
-            c = col[i % len(col)] if len(col) else np.array([0, 0, 0, 1.0])
-            w = float(lw[i % len(lw)]) if len(lw) else 1.0
-            off, seq = ls[i % len(ls)] if ls else (0, None)
-            dash = (off, seq) if seq else None
-            for r in _runs(np.asarray(seg, dtype=float).reshape(-1, 3)):
-                if len(r) >= 2:
-                    self.lines.append((r, c, w, dash))
-
-    def add_scatter(self, coll: Any, p2p: float) -> None:
-        from matplotlib.collections import PathCollection
-
-        coll.update_scalarmappable()
-        xs, ys, zs = (np.asarray(np.ma.filled(c, np.nan), dtype=float).ravel() for c in coll._offsets3d)
-        pts = np.c_[xs, ys, zs]
-        n = len(pts)
-        fc = np.asarray(PathCollection.get_facecolor(coll), dtype=float).reshape(-1, 4)
-        # In input order: mplot3d's own getters return colours and widths sorted by
-        # depth (and "face" edges through them).
-        if isinstance(coll._edgecolors, str) and coll._edgecolors == "face":
-            ec = fc
-        else:
-            ec = np.asarray(PathCollection.get_edgecolor(coll), dtype=float).reshape(-1, 4)
-        lw = np.asarray(getattr(coll, "_linewidths3d", coll.get_linewidths()), dtype=float)
-        lw = lw.reshape(-1)
-        sizes = np.asarray(coll._sizes3d, dtype=float).reshape(-1)
-        paths = coll.get_paths()
-        pick = lambda a, i, d: a[i % len(a)] if len(a) else d  # noqa: E731
-        for i in range(n):
-            if not np.isfinite(pts[i]).all():
-                continue
-            s = float(pick(sizes, i, 36.0))
-            self.points.append(
-                (
-                    pts[i],
-                    tuple(pick(fc, i, (0, 0, 0, 0))),
-                    tuple(pick(ec, i, (0, 0, 0, 0))),
-                    float(pick(lw, i, 0.0)),
-                    pick(paths, i, None),
-                    np.sqrt(max(s, 0.0)) * p2p,
-                )
-            )
-
-    def vertices(self) -> List[np.ndarray]:
-        return [r for r, *_ in self.lines] + [np.asarray([q[0] for q in self.points]).reshape(-1, 3)]
+def _segments(disp: np.ndarray) -> List[np.ndarray]:
+    """A polyline's segments as convex parts."""
+    return [disp[i : i + 2] for i in range(len(disp) - 1)]
 
 
 class _Limn3D:
-    """Draws one 3D axes' polygon collections, lines and scatter points through limn, in
-    the collections' place."""
+    """Draws one 3D axes' content through limn in two artists: one under everything else
+    in the axes (the panes, the grid, what lies behind them, then matplotlib's axis lines,
+    ticks and labels when the bridge draws them) and one in the place of the
+    collections (the rest of the data)."""
 
     def __init__(
-        self, ax: Any, colls: List[Any], marks: List[Any], sort: str, arith: str
+        self,
+        ax: Any,
+        colls: List[Any],
+        marks: List[Any],
+        texts: List[Any],
+        sort: str,
+        arith: str,
+        draws_axes: bool,
+        box: str,
     ) -> None:
         from matplotlib.artist import Artist
 
         class _Art(Artist):
+            def __init__(inner, draw: Callable[[Any], None]) -> None:  # noqa: N805
+                super().__init__()
+                inner._draw = draw
+
             def draw(inner, renderer):  # noqa: N805
-                self.draw(renderer)
+                inner._draw(renderer)
 
-        self.ax, self.colls, self.sort, self.arith = ax, colls, sort, arith
-        self.marks = marks
-        self.artist = _Art()
-        zorder = max(axis.get_zorder() for axis in ax._axis_map.values()) + 1
-        self.artist.set_zorder(zorder)
-        self.seconds = 0.0
+        self.ax, self.colls, self.marks, self.texts = ax, colls, marks, texts
+        self.sort, self.arith, self.draws_axes, self.box = sort, arith, draws_axes, box
+        self.back = _Art(self.draw_back)
+        self.front = _Art(self.draw_front)
+        lowest = min([a.get_zorder() for a in ax.get_children()] + [0.0])
+        self.back.set_zorder(lowest - 1)
+        self.front.set_zorder(max(axis.get_zorder() for axis in ax._axis_map.values()) + 1)
+        self.later: List[_Item] = []
+        self.box_in_limn = False
 
-    def draw(self, renderer: Any) -> None:
-        import time
+    def draw_back(self, renderer: Any) -> None:
+        if _measuring(renderer):
+            # matplotlib's measuring pass (``bbox_inches="tight"``) draws nothing: the
+            # axes update their state as mplot3d's own drawing would, limn is not run.
+            self.later = []
+            if self.draws_axes:
+                for axis in self.ax._axis_map.values():
+                    type(axis).draw(axis, renderer)
+            return
+        items = self._paint(renderer)
+        if self.draws_axes and not self.box_in_limn:
+            # mplot3d's own order: panes, grid, then axis lines, ticks and labels.
+            axes = list(self.ax._axis_map.values())
+            for axis in axes:
+                type(axis).draw_pane(axis, renderer)
+            for axis in axes:
+                type(axis).draw_grid(axis, renderer)
+            for axis in axes:
+                type(axis).draw(axis, renderer)
+            self.later = items
+            return
+        under = under_axes(
+            [it.parts for it in items],
+            np.array([it.pad for it in items], dtype=float),
+            np.array([it.background for it in items], dtype=bool),
+        )
+        for it, u in zip(items, under):
+            if u:
+                it.draw(renderer)
+        if self.draws_axes:
+            # Ticks, tick labels and axis labels; the axis lines are limn's.
+            for axis in self.ax._axis_map.values():
+                shown = axis.line.get_visible()
+                axis.line.set_visible(False)
+                try:
+                    type(axis).draw(axis, renderer)
+                finally:
+                    axis.line.set_visible(shown)
+        self.later = [it for it, u in zip(items, under) if not u]
 
-        from matplotlib.path import Path
-        from matplotlib.transforms import IdentityTransform
+    def draw_front(self, renderer: Any) -> None:
+        for it in self.later:
+            it.draw(renderer)
+        self.later = []
 
-        t0 = time.perf_counter()
+    def _content(self, p2p: float, M: np.ndarray) -> Tuple[Polygons, Marks]:
+        """The axes' polygons and marks, with its box when that goes into the scene
+        (first, in matplotlib's order: panes, their outlines, grid lines, axis lines)."""
         from mpl_toolkits.mplot3d.art3d import Line3DCollection, Path3DCollection
 
-        p2p = float(renderer.points_to_pixels(1.0))
-        polys, fcs, ecs, lws = [], [], [], []
+        polys = Polygons()
         for coll in self.colls:
-            p, fc, ec, lw = _polys(coll)
-            polys += p
-            fcs.append(fc)
-            ecs.append(ec)
-            lws.append(lw)
-        extra = _Lines()
+            polys.add_collection(coll)
+        data = Marks()
         for art in self.marks:
             if isinstance(art, Path3DCollection):
-                extra.add_scatter(art, p2p)
+                data.add_scatter(art, p2p, M)
             elif isinstance(art, Line3DCollection):
-                extra.add_line_collection(art)
+                data.add_line_collection(art)
             else:
-                extra.add_line3d(art, p2p)
-        fc = np.concatenate(fcs) if fcs else np.zeros((0, 4))
-        ec = np.concatenate(ecs) if ecs else np.zeros((0, 4))
-        lw = np.concatenate(lws) if lws else np.zeros(0)
-        # Polygons of 3 and 4 corners as they are; longer ones as fans (matplotlib's
-        # polygons are convex in practice: quads of surfaces, bars, voxels).
-        verts, tris, quads = [], [], []
-        owner_t, owner_q = [], []
-        base = 0
-        for k, p in enumerate(polys):
-            if len(p) < 3:
-                continue
-            verts.append(p)
-            idx = base + np.arange(len(p))
-            base += len(p)
-            if len(p) == 4:
-                quads.append(idx)
-                owner_q.append(k)
-            else:
-                for j in range(1, len(p) - 1):
-                    tris.append([idx[0], idx[j], idx[j + 1]])
-                    owner_t.append(k)
-        if not verts and not extra.lines and not extra.points:
-            return
-        v = np.concatenate(verts) if verts else np.zeros((0, 3))
+                data.add_line3d(art, p2p)
+        for text in self.texts:
+            data.add_text(text)
+        # With every vertex, point and anchor inside the axes' box, the panes, the grid
+        # and the axis lines lie behind all of them (or in their plane): mplot3d's own
+        # drawing of the box, before the data, is then the exact picture, and the box
+        # stays out of the scene.
+        everything = np.concatenate([np.zeros((0, 3))] + polys.corners + data.vertices())
+        self.box_in_limn = self.draws_axes and (
+            self.box == "limn" or self.box == "auto" and not inside_box(self.ax, everything)
+        )
+        marks = Marks()
+        if self.box_in_limn:
+            walls = panes(self.ax)
+            for w in walls:
+                if w.fill is not None:
+                    polys.add_pane(w)
+            for w in walls:
+                marks.add_pane_outline(w)
+            for grid in grid_lines(self.ax):
+                marks.add_line_collection(grid, background=True)
+            for a in axis_lines(self.ax):
+                marks.lines.append(Line(a.ends, a.rgba, a.width, None, True, a.cap))
+        marks.lines += data.lines
+        marks.points, marks.texts = data.points, data.texts
+        return polys, marks
+
+    def _paint(self, renderer: Any) -> List[_Item]:
+        """The scene of the axes ordered by limn: its painted polygons and visible marks as
+        items in paint order."""
+        p2p = float(renderer.points_to_pixels(1.0))
+        M = np.asarray(self.ax.M, dtype=float)
+        polys, extra = self._content(p2p, M)
+        fc, ec, lw = polys.styles()
+        v, tris, owner_t, quads, owner_q = polys.mesh()
+        if not len(v) and not extra.lines and not extra.points and not extra.texts:
+            return []
         m, W, H = _camera(self.ax, renderer, np.concatenate([v] + extra.vertices()))
         wl, hl = max(1, int(round(W))), max(1, int(round(H)))
         scene = Scene()
-        owner = []
+        owner: List[int] = []
         for faces, own in ((tris, owner_t), (quads, owner_q)):
             if faces:
-                own = np.asarray(own)
-                scene.add_mesh(v, np.asarray(faces), colors=np.clip(fc[own], 0, 1))
+                scene.add_mesh(v, np.asarray(faces), colors=np.clip(fc[np.asarray(own)], 0, 1))
                 owner += list(own)
-        for pts, rgba, _, _ in extra.lines:
-            scene.add_line(pts, color=np.clip(rgba, 0, 1))
+        for ln in extra.lines:
+            scene.add_line(ln.points, color=np.clip(ln.rgba, 0, 1))
         if extra.points:
-            scene.add_points(np.asarray([q[0] for q in extra.points]), size=1.0)
+            scene.add_points(np.asarray([q.at for q in extra.points]), size=1.0)
+        for text in extra.texts:
+            scene.add_label(tuple(float(c) for c in text.get_position_3d()), "x")
         scene.set_camera(matrix=m, size=(wl, hl))
         sx, sy = W / wl, H / hl
         polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith)
         disp_of = lambda pts: np.c_[pts[:, 0] * sx, H - pts[:, 1] * sy]  # noqa: E731
+        # Markers and texts between the same two polygons are painted far to near, as
+        # mplot3d paints a scatter (limn's picture keeps them in input order).
+        anchors = [q.at for q in extra.points] + [t.get_position_3d() for t in extra.texts]
+        depth = _depths(M, np.asarray(anchors, dtype=float).reshape(-1, 3))
+        first_text = len(extra.points)
         by_place: dict = {}
         for mk in marks:
             by_place.setdefault(mk["before"], []).append(mk)
+        for run in by_place.values():
+            run.sort(key=partial(_paint_key, depth=depth, first_text=first_text))
+        items: List[_Item] = []
 
-        def draw_marks(place: int) -> None:
+        def add_marks(place: int) -> None:
             for mk in by_place.get(place, ()):
                 if mk["kind"] == "line":
-                    self._draw_line(renderer, extra.lines[mk["index"]], disp_of(mk["points"]), mk, p2p)
+                    ln = extra.lines[mk["index"]]
+                    disp = disp_of(mk["points"])
+                    items.append(
+                        _Item(
+                            _segments(disp),
+                            0.75 * ln.width * p2p,  # projecting caps included
+                            ln.background,
+                            partial(draw_line, line=ln, disp=disp, mk=mk, p2p=p2p),
+                        )
+                    )
                 elif mk["kind"] == "marker" and mk["index"] is not None:
                     x, y = mk["at"]
-                    self._draw_marker(renderer, extra.points[mk["index"]], (x * sx, H - y * sy), p2p)
+                    pt = extra.points[mk["index"]]
+                    xy = (x * sx, H - y * sy)
+                    reach = marker_reach(pt.path) * pt.scale + pt.edge_width * p2p
+                    items.append(
+                        _Item([np.array([xy])], reach, False, partial(draw_marker, point=pt, xy=xy))
+                    )
+                elif mk["kind"] == "label" and mk["index"] is not None:
+                    text = extra.texts[mk["index"]]
+                    items.append(_Item(None, 0.0, False, partial(draw_text, text=text)))
 
         for i, (face, pts, fill, orig) in enumerate(polygons):
-            draw_marks(i)
+            add_marks(i)
             k = owner[face]
             disp = disp_of(pts)
-            gc = renderer.new_gc()
-            gc.set_linewidth(0)
-            gc.set_foreground((0, 0, 0, 0), isRGBA=True)
-            path = Path(np.vstack([disp, disp[:1]]), closed=True)
-            renderer.draw_path(gc, path, IdentityTransform(), tuple(fill))
-            gc.restore()
-            if lw[k] > 0 and ec[k][3] > 0 and any(orig):
-                segs = [(disp[i], disp[(i + 1) % len(disp)]) for i in range(len(disp)) if orig[i]]
-                codes = [Path.MOVETO, Path.LINETO] * len(segs)
-                gc = renderer.new_gc()
-                gc.set_foreground(tuple(ec[k]), isRGBA=True)
-                gc.set_linewidth(renderer.points_to_pixels(lw[k]))
-                gc.set_capstyle("round")
-                renderer.draw_path(
-                    gc, Path(np.array([q for s in segs for q in s]), codes), IdentityTransform()
+            edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
+            items.append(
+                _Item(
+                    [disp],
+                    0.5 * lw[k] * p2p if edged else 0.0,
+                    polys.background[k],
+                    partial(
+                        draw_polygon,
+                        disp=disp,
+                        fill=tuple(fill),
+                        edges=orig if edged else None,
+                        edge=tuple(ec[k]),
+                        width=float(lw[k]),
+                        clip=polys.clip[k],
+                    ),
                 )
-                gc.restore()
-        draw_marks(len(polygons))
-        self.seconds += time.perf_counter() - t0
-
-    @staticmethod
-    def _draw_line(renderer: Any, line: Any, disp: np.ndarray, mk: dict, p2p: float) -> None:
-        """One visible piece of a line in its matplotlib style (width and dashes in
-        points; the dash pattern continues from where the piece starts on the line)."""
-        from matplotlib.path import Path
-        from matplotlib.transforms import IdentityTransform
-
-        _, rgba, width, dash = line
-        gc = renderer.new_gc()
-        gc.set_foreground(tuple(rgba), isRGBA=True)
-        gc.set_linewidth(width)
-        gc.set_capstyle("butt")
-        gc.set_joinstyle("round")
-        if dash is not None and dash[1]:
-            off = (dash[0] or 0.0) + mk["dash_offset"] / p2p
-            gc.set_dashes(off, list(dash[1]))
-        renderer.draw_path(gc, Path(disp), IdentityTransform())
-        gc.restore()
-
-    @staticmethod
-    def _draw_marker(renderer: Any, point: Any, xy: Tuple[float, float], p2p: float) -> None:
-        """One visible scatter point or line marker: matplotlib's marker path, size and
-        colours at its projected anchor."""
-        from matplotlib.markers import MarkerStyle
-        from matplotlib.transforms import Affine2D
-
-        _, face, edge, ew, path, scale = point
-        if path is None:
-            path = MarkerStyle("o").get_path()
-        gc = renderer.new_gc()
-        gc.set_foreground(tuple(edge), isRGBA=True)
-        gc.set_linewidth(ew if edge[3] > 0 else 0)
-        t = Affine2D().scale(scale).translate(*xy)
-        renderer.draw_path(gc, path, t, tuple(face) if face[3] > 0 else None)
-        gc.restore()
+            )
+        add_marks(len(polygons))
+        return items
 
 
-def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact", **kwargs: Any) -> None:
-    """Save ``fig`` like ``fig.savefig(path, **kwargs)``, with the polygons of every 3D
-    axes ordered exactly by limn (see the module docs). Figures without 3D axes are saved
-    unchanged. ``sort`` and ``arith`` choose limn's ordering (adaptive and exact by
-    default). Raises what ``fig.savefig`` raises, and ValueError for geometry limn
-    refuses (such as NaN vertices)."""
+def _measuring(renderer: Any) -> bool:
+    """Whether ``renderer`` is in matplotlib's measuring pass (``_draw_disabled``: its
+    drawing methods replaced by no-ops on the instance, or on the vector renderer inside
+    a mixed-mode renderer)."""
+    inner = getattr(renderer, "_renderer", None)
+    return any("draw_path" in getattr(r, "__dict__", {}) for r in (renderer, inner))
+
+
+def _depths(M: np.ndarray, xyz: np.ndarray) -> np.ndarray:
+    """mplot3d's depth of each point (the third projected coordinate; larger is
+    farther)."""
+    hom = np.c_[xyz, np.ones(len(xyz))] @ M.T
+    return hom[:, 2] / hom[:, 3]
+
+
+def _paint_key(mk: dict, depth: np.ndarray, first_text: int) -> Tuple[int, float]:
+    """Order of the marks painted between the same two polygons: line pieces and heads
+    first (in limn's order), then markers far to near, then texts far to near."""
+    kind, index = mk["kind"], mk["index"]
+    if kind == "marker" and index is not None:
+        return (1, -float(depth[index]))
+    if kind == "label" and index is not None:
+        return (2, -float(depth[first_text + index]))
+    return (0, 0.0)
+
+
+def savefig(
+    fig: Any,
+    path: Any,
+    *,
+    sort: str = "adaptive",
+    arith: str = "exact",
+    box: str = "auto",
+    **kwargs: Any,
+) -> None:
+    """Save ``fig`` like ``fig.savefig(path, **kwargs)``, with the content of every 3D
+    axes ordered exactly by limn (see the module docs): its polygon collections, lines,
+    scatter points, 3D texts, panes, grid lines and axis lines. Figures without 3D axes
+    are saved unchanged. ``sort`` and ``arith`` choose limn's ordering (adaptive and
+    exact by default).
+
+    ``box`` says who draws an axes' panes, grid lines and axis lines: ``"auto"`` (the
+    default, exact) leaves them to matplotlib when every vertex, point and text anchor
+    lies inside the axes' box (they are then behind all the data, and matplotlib's
+    drawing is the exact picture) and makes them limn scene content when something
+    leaves the box; ``"limn"`` always makes them scene content; ``"matplotlib"`` always
+    leaves them to matplotlib, which is faster but wrong where data leave the box (a
+    surface behind a pane is drawn over it).
+
+    Raises what ``fig.savefig`` raises, and ValueError for geometry limn refuses (such
+    as NaN vertices) or an unknown ``box``; nothing is written then."""
     from mpl_toolkits.mplot3d.art3d import (
         Line3D,
         Line3DCollection,
         Path3DCollection,
         Poly3DCollection,
+        Text3D,
     )
 
+    if box not in ("auto", "limn", "matplotlib"):
+        raise ValueError(f"box must be 'auto', 'limn' or 'matplotlib', not {box!r}")
     swaps = []
+    taken = []  # axes whose panes, grid and axis drawing the bridge does
     # Colorbars rasterise their colour solids on their own (50 colours or more); here
     # they stay vectors, so that the file holds no raster.
     rasterized = [
@@ -381,18 +401,71 @@ def savefig(fig: Any, path: Any, *, sort: str = "adaptive", arith: str = "exact"
                 for c in ax.collections
                 if isinstance(c, (Line3DCollection, Path3DCollection)) and c.get_visible()
             ] + [ln for ln in ax.lines if isinstance(ln, Line3D) and ln.get_visible()]
-            if not colls and not marks:
+            texts = [t for t in ax.texts if isinstance(t, Text3D) and t.get_visible()]
+            if not colls and not marks and not texts:
                 continue
-            for c in colls + marks:
+            draws_axes = bool(getattr(ax, "_axis3don", False)) and box != "matplotlib"
+            for c in colls + marks + texts:
                 c.set_visible(False)
-            bridge = _Limn3D(ax, colls, marks, sort, arith)
-            ax.add_artist(bridge.artist)
-            swaps.append((colls + marks, bridge))
-        fig.savefig(path, **kwargs)
+            if draws_axes:
+                # mplot3d draws panes, grid and axes before the axes' children; the
+                # bridge's first artist draws them instead, in limn's order.
+                for axis in ax._axis_map.values():
+                    for name in ("draw_pane", "draw_grid", "draw"):
+                        setattr(axis, name, _draw_nothing)
+                taken.append(ax)
+            bridge = _Limn3D(ax, colls, marks, texts, sort, arith, draws_axes, box)
+            ax.add_artist(bridge.back)
+            ax.add_artist(bridge.front)
+            swaps.append((colls + marks + texts, bridge))
+        _save_whole(fig, path, kwargs)
     finally:
         for solids in rasterized:
             solids.set_rasterized(True)
+        for ax in taken:
+            for axis in ax._axis_map.values():
+                for name in ("draw_pane", "draw_grid", "draw"):
+                    vars(axis).pop(name, None)
         for colls, bridge in swaps:
-            bridge.artist.remove()
+            bridge.back.remove()
+            bridge.front.remove()
             for c in colls:
                 c.set_visible(True)
+
+
+def _save_whole(fig: Any, path: Any, kwargs: dict) -> None:
+    """``fig.savefig(path, **kwargs)``, with a file name written whole or not at all: the
+    figure is saved into memory first (a drawing that fails leaves no partial file), then
+    written to a new file in the target's folder and renamed over the target. The format
+    comes from ``format`` or the extension, as ``fig.savefig`` takes it (the canvas's
+    default format, appended to a name without extension). File objects are passed to
+    ``fig.savefig`` as they are."""
+    if not isinstance(path, (str, os.PathLike)):
+        fig.savefig(path, **kwargs)
+        return
+    target = os.fspath(path)
+    kwargs = dict(kwargs)
+    fmt = kwargs.pop("format", None)
+    if fmt is None:
+        fmt = os.path.splitext(target)[1][1:]
+        if not fmt:
+            fmt = fig.canvas.get_default_filetype()
+            target = target.rstrip(".") + "." + fmt
+    folder, name = os.path.split(os.path.abspath(target))
+    if not os.path.isdir(folder):
+        raise FileNotFoundError(f"cannot write {target}: no folder {folder}")
+    buf = io.BytesIO()
+    fig.savefig(buf, format=fmt, **kwargs)
+    tmp = os.path.join(folder, f".{name}.{secrets.token_hex(6)}.part")
+    try:
+        with open(tmp, "xb") as f:
+            f.write(buf.getvalue())
+        os.replace(tmp, target)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
+def _draw_nothing(*_: Any, **__: Any) -> None:
+    """Stands in for an axis' own drawing while the bridge draws it."""

@@ -1,7 +1,6 @@
 """limn from Python: the numpy API against the command, bad input, and the matplotlib
 bridge against matplotlib's own export."""
 
-import io
 import os
 import shutil
 import subprocess
@@ -183,6 +182,7 @@ mpl = pytest.importorskip("matplotlib")
 mpl.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import limn.matplotlib as lm  # noqa: E402
+from probes import colour_at, count_colour, near, raster  # noqa: E402
 
 HEIGHT_COLOUR = (0.85, 0.25, 0.2)
 PLANE_COLOUR = (0.2, 0.4, 0.85)
@@ -201,29 +201,6 @@ def crossing_surfaces(size=(4, 3)):
     return fig, ax, lambda px, py: (0.6 * np.exp(-2 * (px**2 + py**2)), 0.35 * px + 0.1)
 
 
-def raster(svg: bytes, zoom: float):
-    import resvg_py
-
-    # dpi 72: one pt of the SVG is one pixel before the zoom.
-    png = resvg_py.svg_to_bytes(svg_string=svg.decode(), dpi=72, zoom=zoom, background="#ffffff")
-    from matplotlib.image import imread
-
-    return imread(io.BytesIO(bytes(png)), format="png")
-
-
-def colour_at(fig, ax, img, p):
-    """The colour of the rasterised figure where the 3D point p projects."""
-    from mpl_toolkits.mplot3d import proj3d
-
-    fig.canvas.draw()
-    xp, yp, _ = proj3d.proj_transform(*p, ax.get_proj())
-    X, Y = ax.transData.transform((xp, yp))
-    h, w = img.shape[:2]
-    W, H = fig.canvas.get_width_height()
-    i, j = int(Y * 0 + (H - Y) * h / H), int(X * w / W)
-    return img[i, j, :3]
-
-
 def probe_points(surf):
     """Points on the visible surface at the centres of grid cells (away from the quads'
     edges and from the silhouette), where the height field and the plane lie at clearly
@@ -236,10 +213,6 @@ def probe_points(surf):
         assert abs(z1 - z2) > 0.05
         pts.append(((px, py, max(z1, z2)), HEIGHT_COLOUR if z1 > z2 else PLANE_COLOUR))
     return pts
-
-
-def near(c, want):
-    return np.abs(np.asarray(c) - np.asarray(want)).max() < 0.08
 
 
 def test_savefig_orders_intersecting_surfaces_where_matplotlib_does_not(tmp_path):
@@ -258,14 +231,17 @@ def test_savefig_orders_intersecting_surfaces_where_matplotlib_does_not(tmp_path
     plt.close(fig)
 
 
+@pytest.mark.parametrize("box", ["auto", "limn"])
 @pytest.mark.parametrize("ext", ["svg", "pdf"])
-def test_output_is_one_vector_file(tmp_path, ext):
+def test_output_is_one_vector_file(tmp_path, ext, box):
     fig, ax, _ = crossing_surfaces()
     ax.set_title("two surfaces")
     x, y = np.meshgrid(np.linspace(-1, 1, 8), np.linspace(-1, 1, 8))
     s = ax.plot_surface(x, y, x * y - 0.5, cmap="viridis", linewidth=0.3, edgecolor="k")
     fig.colorbar(s, ax=ax)  # matplotlib rasterises a colorbar's solids on its own
-    lm.savefig(fig, tmp_path / f"f.{ext}")
+    ax.scatter([0.0, 0.5], [0.0, -0.5], [0.8, 0.2], c=[0.1, 0.9], cmap="plasma")
+    ax.text(0.0, 0.0, 0.9, "peak")
+    lm.savefig(fig, tmp_path / f"f.{ext}", box=box)  # the axes' box by matplotlib or limn
     data = (tmp_path / f"f.{ext}").read_bytes()
     if ext == "svg":
         assert b"<image" not in data and b"<path" in data
@@ -416,10 +392,6 @@ def scatter_around_a_plane(size=(4, 3)):
     ax.set_zlim(-0.5, 0.5)
     ax.view_init(elev=40, azim=-60)
     return fig, ax, below, above
-
-
-def count_colour(img, want):
-    return int((np.abs(img[:, :, :3] - np.asarray(want)).max(axis=2) < 0.08).sum())
 
 
 def test_scatter_points_behind_a_surface_are_hidden(tmp_path):

@@ -1,0 +1,260 @@
+"""What the bridge reads from a 3D axes' artists: polygons with their colours, lines,
+scatter points and texts, in data coordinates, with what matplotlib needs to draw each
+visible piece in the artist's own style.
+
+The private mplot3d attributes read here (``_faces``, ``_invalid_vertices``,
+``_facecolor3d``, ``_edgecolor3d``, ``_segments3d``, ``_offsets3d``, ``_sizes3d``) are
+those of matplotlib 3.11.
+"""
+
+from __future__ import annotations
+
+from typing import Any, List, NamedTuple, Tuple
+
+import numpy as np
+
+from ._axes_box import Pane
+from ._depth_shading import depth_shaded, scatter_depth_shading
+
+
+def collection_polygons(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.ndarray, np.ndarray]:
+    """The collection's polygons in data coordinates, with face colours (colormapped),
+    edge colours and line widths per polygon."""
+    coll.do_3d_projection()  # also maps the colours
+    faces = np.asarray(coll._faces)
+    invalid = np.asarray(coll._invalid_vertices)
+    n = len(faces)
+    polys = []
+    for i in range(n):
+        keep = ~invalid[i] if invalid.ndim == 2 else np.ones(faces.shape[1], bool)
+        polys.append(np.asarray(faces[i][keep], dtype=float))
+    rep = lambda c: (  # noqa: E731
+        np.zeros((n, 4)) if len(c) == 0 else (np.repeat(c, n, axis=0) if len(c) != n else c)
+    )
+    fc = rep(np.asarray(coll._facecolor3d, dtype=float).reshape(-1, 4))
+    ec = np.asarray(coll._edgecolor3d, dtype=float).reshape(-1, 4)
+    ec = fc if len(ec) == 0 else rep(ec)
+    lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
+    lw = np.zeros(n) if len(lw) == 0 else (np.repeat(lw, n) if len(lw) != n else lw)
+    return polys, fc, ec, lw
+
+
+def _lines(artist: Any) -> List[np.ndarray]:
+    """A ``Line3D``'s runs of finite points (matplotlib breaks lines at NaN)."""
+    xyz = (np.asarray(np.ma.filled(c, np.nan), dtype=float) for c in artist.get_data_3d())
+    return _runs(np.c_[tuple(a.ravel() for a in np.broadcast_arrays(*xyz))])
+
+
+def _runs(pts: np.ndarray) -> List[np.ndarray]:
+    """The runs of consecutive finite rows of ``pts``."""
+    ok = np.isfinite(pts).all(axis=1)
+    runs, start = [], None
+    for i, good in enumerate(list(ok) + [False]):
+        if good and start is None:
+            start = i
+        elif not good and start is not None:
+            runs.append(pts[start:i])
+            start = None
+    return runs
+
+
+class Line(NamedTuple):
+    """One limn line of the bridge and how matplotlib draws its visible pieces."""
+
+    points: np.ndarray
+    rgba: np.ndarray
+    width: float
+    """Width in points."""
+    dash: Any
+    """``(offset, sequence)`` in points, or ``None`` for solid."""
+    background: bool = False
+    """A grid line or a pane's outline (painted under the axes' lines)."""
+    cap: str = "butt"
+    clip: Any = None
+    """The clip box of the artist it comes from (``None``: not clipped)."""
+
+
+class Point(NamedTuple):
+    """One limn point of the bridge (a scatter point or a line's marker) and how
+    matplotlib draws it."""
+
+    at: np.ndarray
+    face: Tuple[float, ...]
+    edge: Tuple[float, ...]
+    edge_width: float
+    """In points."""
+    path: Any
+    """The marker's path (``None``: a circle)."""
+    scale: float
+    """Display units per unit of the path."""
+    clip: Any = None
+
+
+def clip_of(artist: Any) -> Any:
+    """The clip box matplotlib gives ``artist``'s drawing (``None`` when it is not
+    clipped)."""
+    return artist.get_clip_box() if artist.get_clip_on() else None
+
+
+class Marks:
+    """An axes' lines, points and texts: what limn gets (in the order of limn's line,
+    point and label indices), and how matplotlib draws each."""
+
+    def __init__(self) -> None:
+        self.lines: List[Line] = []
+        self.points: List[Point] = []
+        # Per limn label: the Text3D it shows.
+        self.texts: List[Any] = []
+
+    def add_line3d(self, line: Any, p2p: float) -> None:
+        from matplotlib.colors import to_rgba
+        from matplotlib.markers import MarkerStyle
+
+        rgba = np.array(to_rgba(line.get_color(), line.get_alpha()))
+        dash = line._dash_pattern if line.get_linestyle() not in ("-", "solid") else None
+        runs = _lines(line)
+        if line.get_linestyle() not in ("None", "none", " ", ""):
+            for r in runs:
+                if len(r) >= 2:
+                    w = float(line.get_linewidth())
+                    self.lines.append(Line(r, rgba, w, dash, clip=clip_of(line)))
+        ms = MarkerStyle(line.get_marker())
+        if ms.get_marker() not in ("None", "none", " ", "", None):
+            path = ms.get_path().transformed(ms.get_transform())
+            scale = float(line.get_markersize()) * p2p
+            fc = to_rgba(line.get_markerfacecolor(), line.get_alpha())
+            ec = to_rgba(line.get_markeredgecolor(), line.get_alpha())
+            for r in runs:
+                for q in r:
+                    ew = float(line.get_markeredgewidth())
+                    self.points.append(Point(q, fc, ec, ew, path, scale, clip_of(line)))
+
+    def add_line_collection(self, coll: Any, background: bool = False) -> None:
+        """A ``Line3DCollection`` (``plot_wireframe``, ``quiver``, the axes' grid)."""
+        segs = coll._segments3d
+        col = np.asarray(coll.get_colors(), dtype=float).reshape(-1, 4)
+        lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
+        ls = coll.get_linestyles()
+        for i, seg in enumerate(segs):
+            c = col[i % len(col)] if len(col) else np.array([0, 0, 0, 1.0])
+            w = float(lw[i % len(lw)]) if len(lw) else 1.0
+            off, seq = ls[i % len(ls)] if ls else (0, None)
+            dash = (off, seq) if seq else None
+            for r in _runs(np.asarray(seg, dtype=float).reshape(-1, 3)):
+                if len(r) >= 2 and c[3] > 0 and w > 0:
+                    clip = None if background else clip_of(coll)
+                    self.lines.append(Line(r, c, w, dash, background, clip=clip))
+
+    def add_pane_outline(self, pane: Pane) -> None:
+        if pane.width > 0:
+            loop = np.vstack([pane.corners, pane.corners[:1]])
+            self.lines.append(Line(loop, pane.edge, pane.width, None, True, "projecting"))
+
+    def add_scatter(self, coll: Any, p2p: float, M: np.ndarray) -> None:
+        from matplotlib.collections import PathCollection
+
+        coll.update_scalarmappable()
+        xs, ys, zs = (
+            np.asarray(np.ma.filled(c, np.nan), dtype=float).ravel() for c in coll._offsets3d
+        )
+        pts = np.c_[xs, ys, zs]
+        n = len(pts)
+        # In input order: mplot3d's own getters return colours and widths sorted by
+        # depth (and "face" edges through them).
+        fc = np.asarray(PathCollection.get_facecolor(coll), dtype=float).reshape(-1, 4)
+        face_edges = isinstance(coll._edgecolors, str) and coll._edgecolors == "face"
+        ec = fc if face_edges else np.asarray(PathCollection.get_edgecolor(coll), dtype=float)
+        ec = ec.reshape(-1, 4)
+        shaded, min_alpha, alpha = scatter_depth_shading(coll)
+        if shaded and n:
+            fc = depth_shaded(fc, pts, M, min_alpha, alpha)
+            ec = fc if face_edges else depth_shaded(ec, pts, M, min_alpha, alpha)
+        lw = np.asarray(getattr(coll, "_linewidths3d", coll.get_linewidths()), dtype=float)
+        lw = lw.reshape(-1)
+        sizes = np.asarray(coll._sizes3d, dtype=float).reshape(-1)
+        paths = coll.get_paths()
+        pick = lambda a, i, d: a[i % len(a)] if len(a) else d  # noqa: E731
+        for i in range(n):
+            if not np.isfinite(pts[i]).all():
+                continue
+            s = float(pick(sizes, i, 36.0))
+            self.points.append(
+                Point(
+                    pts[i],
+                    tuple(pick(fc, i, (0, 0, 0, 0))),
+                    tuple(pick(ec, i, (0, 0, 0, 0))),
+                    float(pick(lw, i, 0.0)),
+                    pick(paths, i, None),
+                    np.sqrt(max(s, 0.0)) * p2p,
+                    clip_of(coll),
+                )
+            )
+
+    def add_text(self, text: Any) -> None:
+        """A ``Text3D`` (``ax.text``): shown where its anchor is visible."""
+        if text.get_text() and np.isfinite(np.asarray(text.get_position_3d(), float)).all():
+            self.texts.append(text)
+
+    def vertices(self) -> List[np.ndarray]:
+        anchors = [q.at for q in self.points] + [t.get_position_3d() for t in self.texts]
+        return [ln.points for ln in self.lines] + [np.asarray(anchors, dtype=float).reshape(-1, 3)]
+
+
+class Polygons:
+    """An axes' polygons in data coordinates with their styles, in the order limn gets
+    them (``owner`` indices of the painted fragments refer to this order)."""
+
+    def __init__(self) -> None:
+        self.corners: List[np.ndarray] = []
+        self._fill: List[np.ndarray] = []
+        self._edge: List[np.ndarray] = []
+        self._width: List[np.ndarray] = []
+        self.clip: List[Any] = []
+        self.background: List[bool] = []
+
+    def add_collection(self, coll: Any) -> None:
+        """A ``Poly3DCollection``'s polygons with their colours and edge widths."""
+        p, fc, ec, lw = collection_polygons(coll)
+        self.corners += p
+        self._fill.append(fc)
+        self._edge.append(ec)
+        self._width.append(lw)
+        self.clip += [clip_of(coll)] * len(p)
+        self.background += [False] * len(p)
+
+    def add_pane(self, pane: Pane) -> None:
+        """A filled pane (its outline is a line of its own)."""
+        self.corners.append(pane.corners)
+        self._fill.append(np.asarray(pane.fill, dtype=float).reshape(1, 4))
+        self._edge.append(np.zeros((1, 4)))
+        self._width.append(np.zeros(1))
+        self.clip.append(None)
+        self.background.append(True)
+
+    def styles(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Fill colours (N, 4), edge colours (N, 4) and edge widths (N,) in points."""
+        cat = lambda parts, shape: np.concatenate(parts) if parts else np.zeros(shape)  # noqa: E731
+        return cat(self._fill, (0, 4)), cat(self._edge, (0, 4)), cat(self._width, (0,))
+
+    def mesh(self) -> Tuple[np.ndarray, List[Any], List[int], List[Any], List[int]]:
+        """Vertices, triangles and quads for limn, with the polygon each face comes from.
+        Polygons of 3 and 4 corners are kept as they are; longer ones become fans
+        (matplotlib's polygons are convex in practice: quads of surfaces, bars, voxels)."""
+        verts, tris, quads = [], [], []
+        owner_t, owner_q = [], []
+        base = 0
+        for k, p in enumerate(self.corners):
+            if len(p) < 3:
+                continue
+            verts.append(p)
+            idx = base + np.arange(len(p))
+            base += len(p)
+            if len(p) == 4:
+                quads.append(idx)
+                owner_q.append(k)
+            else:
+                for j in range(1, len(p) - 1):
+                    tris.append([idx[0], idx[j], idx[j + 1]])
+                    owner_t.append(k)
+        v = np.concatenate(verts) if verts else np.zeros((0, 3))
+        return v, tris, owner_t, quads, owner_q

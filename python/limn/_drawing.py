@@ -1,0 +1,97 @@
+"""Drawing what limn painted through matplotlib's renderer: polygons, line pieces,
+markers and texts in the style of the artists they come from, in display units."""
+
+from __future__ import annotations
+
+from typing import Any, Tuple
+
+import numpy as np
+
+from ._content import Line, Point
+
+
+def draw_line(renderer: Any, line: Line, disp: np.ndarray, mk: dict, p2p: float) -> None:
+    """One visible piece of a line in its matplotlib style (width and dashes in
+    points; the dash pattern continues from where the piece starts on the line)."""
+    from matplotlib.path import Path
+    from matplotlib.transforms import IdentityTransform
+
+    gc = renderer.new_gc()
+    gc.set_clip_rectangle(line.clip)
+    gc.set_foreground(tuple(line.rgba), isRGBA=True)
+    gc.set_linewidth(line.width)
+    gc.set_capstyle(line.cap)
+    gc.set_joinstyle("round")
+    if line.dash is not None and line.dash[1]:
+        off = (line.dash[0] or 0.0) + mk["dash_offset"] / p2p
+        gc.set_dashes(off, list(line.dash[1]))
+    renderer.draw_path(gc, Path(disp), IdentityTransform())
+    gc.restore()
+
+
+def draw_marker(renderer: Any, point: Point, xy: Tuple[float, float]) -> None:
+    """One visible scatter point or line marker: matplotlib's marker path, size and
+    colours at its projected anchor."""
+    from matplotlib.transforms import Affine2D
+
+    path = marker_path(point.path)
+    gc = renderer.new_gc()
+    gc.set_clip_rectangle(point.clip)
+    gc.set_foreground(tuple(point.edge), isRGBA=True)
+    gc.set_linewidth(point.edge_width if point.edge[3] > 0 else 0)
+    t = Affine2D().scale(point.scale).translate(*xy)
+    face = point.face
+    renderer.draw_path(gc, path, t, tuple(face) if face[3] > 0 else None)
+    gc.restore()
+
+
+def marker_path(path: Any) -> Any:
+    from matplotlib.markers import MarkerStyle
+
+    return MarkerStyle("o").get_path() if path is None else path
+
+
+def marker_reach(path: Any) -> float:
+    """How far a marker's path reaches from its anchor, in units of its scale."""
+    vs = np.asarray(marker_path(path).vertices, dtype=float)
+    return float(np.abs(vs).max()) if vs.size else 0.0
+
+
+def draw_polygon(
+    renderer: Any, disp: np.ndarray, fill: tuple, edges: Any, edge: tuple, width: float, clip: Any
+) -> None:
+    """A painted polygon: its fill, then its original edges in the face's edge colour
+    and width (points)."""
+    from matplotlib.path import Path
+    from matplotlib.transforms import IdentityTransform
+
+    gc = renderer.new_gc()
+    gc.set_clip_rectangle(clip)
+    gc.set_linewidth(0)
+    gc.set_foreground((0, 0, 0, 0), isRGBA=True)
+    path = Path(np.vstack([disp, disp[:1]]), closed=True)
+    renderer.draw_path(gc, path, IdentityTransform(), fill)
+    gc.restore()
+    if edges is not None:
+        n = len(disp)
+        segs = [(disp[i], disp[(i + 1) % n]) for i in range(n) if edges[i]]
+        codes = [Path.MOVETO, Path.LINETO] * len(segs)
+        gc = renderer.new_gc()
+        gc.set_clip_rectangle(clip)
+        gc.set_foreground(edge, isRGBA=True)
+        gc.set_linewidth(renderer.points_to_pixels(width))
+        gc.set_capstyle("round")
+        renderer.draw_path(
+            gc, Path(np.array([q for s in segs for q in s]), codes), IdentityTransform()
+        )
+        gc.restore()
+
+
+def draw_text(renderer: Any, text: Any) -> None:
+    """A visible ``Text3D`` drawn by matplotlib itself (its font, size, colour,
+    alignment and direction)."""
+    text.set_visible(True)
+    try:
+        type(text).draw(text, renderer)
+    finally:
+        text.set_visible(False)
