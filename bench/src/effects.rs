@@ -11,8 +11,8 @@ use anyhow::Result;
 use glam::DVec3;
 use limn_depthsort::{order, OrderOptions, Ordered};
 use limn_paint::{
-    covers, picture, seam_flaps, PaintFragment, Painter, PdfPainter, Picture, Style, SvgOptions,
-    SvgPainter,
+    covers, picture, seam_flaps, EpsPainter, PaintFragment, Painter, PdfPainter, Picture, Style,
+    SvgOptions, SvgPainter,
 };
 use limn_scene::{
     shade_face, shapes, Camera, Fog, FogFalloff, Light, LightKind, Material, Scene, Shading,
@@ -205,10 +205,11 @@ pub fn run(quick: bool, runs: usize) -> Result<String> {
         t.elapsed().as_secs_f64() * 1e3,
         ordered.fragments.len()
     )?;
-    out += "| effects | picture ms | fragments | SVG ms | SVG bytes | PDF ms | PDF bytes | z-buffer ms | ray cast ms |\n";
-    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    out += "| effects | picture ms | fragments | SVG ms | SVG bytes | PDF ms | PDF bytes | EPS ms | EPS bytes | z-buffer ms | ray cast ms |\n";
+    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     let svg = SvgPainter::default();
     let pdf = PdfPainter::default();
+    let eps = EpsPainter::default();
     let ropts = RenderOptions::default();
     for (name, change) in configs() {
         eprintln!("limn-bench effects: {name}");
@@ -218,13 +219,14 @@ pub fn run(quick: bool, runs: usize) -> Result<String> {
         let (pic_ms, pic) = time(runs, || picture(&scene, &ordered, &style));
         let (svg_ms, svg_bytes) = time(runs, || write(&svg, &pic));
         let (pdf_ms, pdf_bytes) = time(runs, || write(&pdf, &pic));
+        let (eps_ms, eps_bytes) = time(runs, || write(&eps, &pic));
         let (z_ms, _) = time(runs, || render(&scene, &cam, Method::ZBuffer, &ropts));
         let (r_ms, _) = time(runs.min(3), || {
             render(&scene, &cam, Method::RayCast, &ropts)
         });
         writeln!(
             out,
-            "| {name} | {pic_ms:.1} | {} | {svg_ms:.1} | {svg_bytes} | {pdf_ms:.1} | {pdf_bytes} | {z_ms:.1} | {r_ms:.0} |",
+            "| {name} | {pic_ms:.1} | {} | {svg_ms:.1} | {svg_bytes} | {pdf_ms:.1} | {pdf_bytes} | {eps_ms:.1} | {eps_bytes} | {z_ms:.1} | {r_ms:.0} |",
             pic.fragments.len()
         )?;
     }

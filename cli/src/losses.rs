@@ -55,11 +55,10 @@ pub fn losses(
     }
     if ps.textures_flattened > 0 {
         out.push(format!(
-            "{} textured fragments: {} draws no texture images here, so each is filled with \
-             its colour times the texture's mean colour",
+            "{} textured fragments: {} draws no texture images, so each is filled with \
+             its colour times the texture's mean colour (SVG, PDF and EPS draw the images)",
             ps.textures_flattened,
             match format {
-                Format::Eps => "EPS",
                 Format::Tikz => "TikZ",
                 _ => "this format",
             }

@@ -1,5 +1,5 @@
 //! Textures end to end: a textured OBJ in every format (one embedded image in SVG and
-//! PDF, the mean colour with a warning in EPS and TikZ, `texture` in `--stats`), and
+//! PDF and EPS, the mean colour with a warning in TikZ, `texture` in `--stats`), and
 //! texture errors reported with file and line, leaving no output.
 
 mod common;
@@ -91,7 +91,15 @@ fn a_textured_obj_in_every_format() {
                 assert_eq!(&rgb[3 * 6..3 * 7], &[250, 240, 200]);
                 assert!(!flattened);
             }
-            "eps" | "tikz" => {
+            "eps" => {
+                // The rows once (a 4 × 2 texture padded to 6 × 4), drawn per piece.
+                assert_eq!(text.matches("/td0 [").count(), 1);
+                assert_eq!(text.matches("/Width 6 /Height 4").count(), 1);
+                assert!(text.contains("] T0\n"));
+                assert!(text.contains("%%BoundingBox: 0 0 "));
+                assert!(!flattened, "{}", run.stderr);
+            }
+            "tikz" => {
                 assert!(flattened, "{ext}: {}", run.stderr);
                 assert!(!text.contains("image"), "{ext}");
             }

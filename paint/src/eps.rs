@@ -32,6 +32,14 @@
 //! interpreters. Long runs are filled in pieces of at most 1000 points (the LanguageLevel 2
 //! path limit is 1500).
 //!
+//! **Textured** fragments are drawn as in PDF (affine pieces within
+//! [`crate::MAX_PERSPECTIVE_ERROR`] pixels, each clipped, the image once per texture
+//! repetition, under a cover of the whole run), with the `image` operator of
+//! LanguageLevel 2; the images are defined once in the prolog and the fill multiplies
+//! them through `/Decode` (see `eps_texture.rs`). A translucent textured fragment is
+//! flattened like a flat fill (and counted); a piece reaching more than 1024
+//! repetitions is filled with the fill times the texture's mean colour (counted).
+//!
 //! **Marks** are each painted inside `gsave … grestore`: line pieces with butt caps, round
 //! joins and `setdash`; markers as stroked or filled paths (circles with `arc`); labels
 //! with the standard font Helvetica (`findfont scalefont setfont … show`, not embedded),
@@ -45,7 +53,8 @@ use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
 use super::pdf::push_ps_string;
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{Label, PaintError, PaintStats, Painter, Picture};
+use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
+use super::{eps_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`EpsPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -93,6 +102,8 @@ enum Style {
     Flat(Option<[u32; 3]>),
     /// Opacity in thousandths.
     Gouraud(u16),
+    /// Texture index, fill and opacity in thousandths.
+    Textured(u32, [u32; 3], u16),
 }
 
 struct Writer {
@@ -178,6 +189,84 @@ impl Writer {
         b.extend_from_slice(b"] g\n");
     }
 
+    /// A run of textured fragments with texture `k` (see `eps_texture.rs`): the image
+    /// decoded between `lo` and `hi` (the fill, flattened when translucent), first the
+    /// whole run under one affine map, then each affine piece. Pieces reaching too many
+    /// repetitions are filled with `mean` (already fill × mean texture colour,
+    /// flattened). Returns how many fragments were filled so.
+    fn textured_run(
+        &mut self,
+        b: &mut Vec<u8>,
+        run: &[Frag<'_>],
+        k: u32,
+        decode: ([u32; 3], [u32; 3]),
+        mean: [u32; 3],
+    ) -> usize {
+        b.extend_from_slice(b"/D [");
+        for i in 0..3 {
+            push_fixed(b, decode.0[i], self.cd);
+            b.push(b' ');
+            push_fixed(b, decode.1[i], self.cd);
+            b.extend_from_slice(if i < 2 { b" " } else { b"] def\n" });
+        }
+        let polys: Vec<Vec<[f64; 2]>> = run
+            .iter()
+            .zip(reversals(run))
+            .map(|(f, reverse)| f.oriented(reverse).collect())
+            .collect();
+        let mean_fill = |w: &mut Writer, b: &mut Vec<u8>, polys: &[Vec<[f64; 2]>]| {
+            w.set_color(b, mean);
+            for poly in polys {
+                for (i, &p) in poly.iter().enumerate() {
+                    w.point(b, p);
+                    b.extend_from_slice(if i == 0 { b" m " } else { b" l " });
+                }
+                b.extend_from_slice(b"h ");
+            }
+            b.extend_from_slice(b"f\n");
+        };
+        // Under the pieces, the whole run (fragments and seam flaps) under one affine
+        // map, the first fan triangle's: the edges between pieces then show nearly the
+        // same texels. In clips of at most MAX_POINTS_PER_FILL points.
+        let whole = run.iter().find_map(|f| f.src.texture).and_then(|map| {
+            affine_pieces(&run[0].points, &map, f64::INFINITY)
+                .first()
+                .copied()
+        });
+        if let Some(whole) = whole {
+            let mut start = 0;
+            while start < polys.len() {
+                let mut end = start;
+                let mut points = 0;
+                while end < polys.len()
+                    && (end == start || points + polys[end].len() <= MAX_POINTS_PER_FILL)
+                {
+                    points += polys[end].len();
+                    end += 1;
+                }
+                let chunk = &polys[start..end];
+                if !eps_texture::write_clipped(b, chunk, &whole, k, self.height, self.d) {
+                    mean_fill(self, b, chunk);
+                }
+                start = end;
+            }
+        }
+        let mut approximated = 0;
+        for f in run {
+            let Some(map) = &f.src.texture else { continue };
+            let mut flat = false;
+            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
+                let tri = [p.points.to_vec()];
+                if !eps_texture::write_clipped(b, &tri, &p, k, self.height, self.d) {
+                    flat = true;
+                    mean_fill(self, b, &tri);
+                }
+            }
+            approximated += usize::from(flat);
+        }
+        approximated
+    }
+
     fn outline(&self, b: &mut Vec<u8>, run: &[Frag<'_>]) {
         for f in run {
             let n = f.points.len();
@@ -198,9 +287,6 @@ impl Writer {
 
 impl Painter for EpsPainter {
     fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
-        // Textures are drawn as their mean colour here (counted in the stats).
-        let (picture, flattened) = picture.untextured();
-        let picture: &Picture = &picture;
         let checked = check(picture)?;
         let o = &self.options;
         let paper = o.paper.map(|v| {
@@ -233,7 +319,10 @@ impl Painter for EpsPainter {
         push_uint(b, picture.height.into());
         b.extend_from_slice(b"\n%%Creator: limn\n%%LanguageLevel: ");
         b.extend_from_slice(if gouraud { b"3" } else { b"2" });
-        b.extend_from_slice(b"\n%%EndComments\n12 dict begin\n");
+        b.extend_from_slice(b"\n%%EndComments\n");
+        // The short names, and per texture its rows, procedure and the decode array.
+        push_uint(b, 12 + 2 * picture.textures.len() as u64 + 2);
+        b.extend_from_slice(b" dict begin\n");
         b.extend_from_slice(
             b"/m/moveto load def /l/lineto load def /h/closepath load def /f/fill load def\n\
               /s/stroke load def /c/setrgbcolor load def\n",
@@ -242,6 +331,10 @@ impl Painter for EpsPainter {
             b.extend_from_slice(
                 b"/g{<< exch /DataSource exch /ShadingType 4 /ColorSpace /DeviceRGB >> shfill}def\n",
             );
+        }
+        for (k, t) in picture.textures.iter().enumerate() {
+            let (rgb, tw, th) = texture_images::rgb_rows(t);
+            eps_texture::write_definition(b, k as u32, &rgb, tw, th);
         }
         if w.seams {
             // Fill, then stroke the same path in the fill colour (closing seams).
@@ -278,6 +371,9 @@ impl Painter for EpsPainter {
         let cd = o.color_decimals;
         let key = move |f: &Frag<'_>| {
             let a = alpha_milli(f.alpha());
+            if let Some(t) = &f.src.texture {
+                return Style::Textured(t.texture, f.flat_rgb().map(|v| channel_fixed(v, cd)), a);
+            }
             match f.colors {
                 Some(_) => Style::Gouraud(a),
                 None if a == 0 => Style::Flat(None),
@@ -286,6 +382,7 @@ impl Painter for EpsPainter {
                 )),
             }
         };
+        let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
         let state = RefCell::new((sink, w, stats));
         let on_run = |run: &[Frag<'_>], &style: &Style| {
             let mut st = state.borrow_mut();
@@ -295,6 +392,18 @@ impl Painter for EpsPainter {
                 Style::Flat(Some(q)) => w.flat_run(b, run, q),
                 Style::Flat(None) => {}
                 Style::Gouraud(a) => w.gouraud_run(b, run, f64::from(a) / 1000.0),
+                Style::Textured(k, _, a) => {
+                    // Fill × texture, flattened onto the backdrop: a·fill·t + (1 − a)·B.
+                    let a = f64::from(a) / 1000.0;
+                    let fill = run[0].flat_rgb();
+                    let lo = [0, 1, 2].map(|i| (1.0 - a) * backdrop[i]);
+                    let hi = [0, 1, 2].map(|i| lo[i] + a * fill[i].clamp(0.0, 1.0));
+                    let m = means[k as usize];
+                    let mean = flatten([0, 1, 2].map(|i| fill[i] * m[i]), a, backdrop);
+                    let decode = (w.quantise(lo), w.quantise(hi));
+                    let mean = w.quantise(mean);
+                    stats.approximated += w.textured_run(b, run, k, decode, mean);
+                }
             }
             stats.paths += usize::from(style != Style::Flat(None));
             stats.approximated += run
@@ -331,7 +440,6 @@ impl Painter for EpsPainter {
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;
         stats.bytes = sink.finish()?;
-        stats.textures_flattened = flattened;
         Ok(stats)
     }
 }

@@ -80,6 +80,7 @@ mod annotate;
 mod compose;
 mod covers;
 mod eps;
+mod eps_texture;
 mod error;
 mod format;
 mod hidden_line;
