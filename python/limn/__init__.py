@@ -244,12 +244,15 @@ class Scene:
         kind: str,
         vector: Optional[Sequence[float]] = None,
         color: Sequence[float] = (1.0, 1.0, 1.0),
+        shadows: bool = False,
     ) -> None:
         """Add a light: ``"ambient"``, ``"headlight"``, ``"directional"`` (``vector``
         points towards the light) or ``"point"`` (``vector`` is its position). Lights
-        shade faces added without colours."""
+        shade faces added without colours. ``shadows=True`` makes a directional or point
+        light cast shadows, exact in vector output (faces split along the shadows'
+        edges); ambient lights and headlights cannot (``ValueError``)."""
         vec = None if vector is None else tuple(float(x) for x in vector)
-        self._s.add_light(kind, vec, tuple(float(x) for x in color))
+        self._s.add_light(kind, vec, tuple(float(x) for x in color), bool(shadows))
 
     def set_camera(
         self,

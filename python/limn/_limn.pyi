@@ -67,6 +67,7 @@ class Scene:
         kind: str,
         vector: Optional[Tuple[float, float, float]] = ...,
         color: Tuple[float, float, float] = ...,
+        shadows: bool = ...,
     ) -> None: ...
     def set_camera(
         self,

@@ -126,7 +126,7 @@ pub(crate) fn stats_dict<'py>(
     if s.faces_culled > 0 {
         effects.push("backface-culling");
     }
-    let counts: [(&str, usize); 16] = [
+    let counts: [(&str, usize); 17] = [
         ("faces_in", s.faces_in),
         ("faces_culled", s.faces_culled),
         ("faces_degenerate", s.faces_degenerate),
@@ -143,6 +143,7 @@ pub(crate) fn stats_dict<'py>(
         ("fragments_out", s.fragments_out),
         ("fragments_made", s.fragments_made),
         ("fragment_limit", s.fragment_limit),
+        ("fragments_in_shadow", s.fragments_in_shadow),
     ];
     for (k, v) in counts {
         d.set_item(k, v)?;

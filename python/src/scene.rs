@@ -192,13 +192,15 @@ impl PyScene {
     }
 
     /// Adds a light: `"ambient"`, `"directional"` (`vector` points towards the light),
-    /// `"point"` (`vector` is its position) or `"headlight"`.
-    #[pyo3(signature = (kind, vector=None, color=(1.0, 1.0, 1.0)))]
+    /// `"point"` (`vector` is its position) or `"headlight"`; `shadows` makes a
+    /// directional or point light cast exact shadows.
+    #[pyo3(signature = (kind, vector=None, color=(1.0, 1.0, 1.0), shadows=false))]
     fn add_light(
         &mut self,
         kind: &str,
         vector: Option<(f64, f64, f64)>,
         color: (f64, f64, f64),
+        shadows: bool,
     ) -> PyResult<()> {
         let v = vec3("light vector", vector)?;
         let need = || value_error(format!("a {kind} light needs a vector"));
@@ -218,10 +220,15 @@ impl PyScene {
                 return Err(value_error("a directional light needs a non-zero vector"));
             }
         }
+        if shadows && matches!(kind, LightKind::Ambient | LightKind::Headlight) {
+            return Err(value_error(
+                "only directional and point lights cast shadows (shadows=True)",
+            ));
+        }
         self.scene.lights.push(Light {
             kind,
             color: rgb("light color", color)?,
-            shadows: false,
+            shadows,
         });
         Ok(())
     }

@@ -2,6 +2,7 @@
 bridge against matplotlib's own export."""
 
 import os
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -451,3 +452,35 @@ def test_a_wireframe_on_its_surface_shows_and_lines_behind_it_do_not(tmp_path):
     lm.savefig(fig, tmp_path / "bare.svg")
     assert count_colour(raster((tmp_path / "bare.svg").read_bytes(), 3.0), ABOVE) > 100
     plt.close(fig)
+
+
+def floor_and_cube():
+    """A 6 x 6 floor at y = 0 and a unit cube floating above it (no colours: lit)."""
+    v = [[-3, 0, -3], [3, 0, -3], [3, 0, 3], [-3, 0, 3]]
+    v += [[x, y, z] for z in (-0.5, 0.5) for y in (1.0, 2.0) for x in (-0.5, 0.5)]
+    f = [[0, 3, 2, 1]]
+    for q in ([0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]):
+        f.append([4 + j for j in q])
+    return np.array(v, float), np.array(f)
+
+
+def test_lights_cast_exact_shadows_only_when_asked(tmp_path):
+    v, f = floor_and_cube()
+    fills = {}
+    for shadows in (False, True):
+        s = limn.Scene()
+        s.add_mesh(v, f)
+        s.add_light("ambient", color=(0.2, 0.2, 0.2))
+        s.add_light("directional", (0.3, 1.0, 0.2), shadows=shadows)
+        s.set_camera(eye=(4.0, 6.0, 9.0), target=(0.0, 0.5, 0.0), size=(320, 240))
+        out = tmp_path / f"shadows-{shadows}.svg"
+        st = s.render(out)
+        assert ("shadows" in st["effects"]) == shadows, st["effects"]
+        assert (st["fragments_in_shadow"] > 0) == shadows, st
+        fills[shadows] = set(re.findall(r'fill="(#[0-9a-fA-F]{6})"', out.read_text()))
+    # The floor's shadowed part is painted in a colour of its own.
+    assert fills[True] - fills[False], fills
+    s = limn.Scene()
+    for kind in ("ambient", "headlight"):
+        with pytest.raises(ValueError, match="cast shadows"):
+            s.add_light(kind, shadows=True)
