@@ -29,7 +29,7 @@
 
 use super::number::{push_num, push_uint};
 use super::texture_images::PAD;
-use super::texture_pieces::AffinePiece;
+use super::texture_pieces::{push_flipped_outline, AffinePiece};
 
 /// Writes the prolog's definitions for texture `k`: its padded RGB rows `rgb` (`w` ×
 /// `h`, rows top to bottom) as `/tdK` and the drawing procedure `/TK` (see the module
@@ -96,37 +96,15 @@ pub(crate) fn write_clipped(
     height: f64,
     d: u8,
 ) -> bool {
-    let [a, b, c, dd, e, f] = piece.st_to_page;
     let Some(tiles) = piece.repetitions() else {
         return false;
     };
-    let point = |buf: &mut Vec<u8>, p: [f64; 2]| {
-        push_num(buf, p[0], d);
-        buf.push(b' ');
-        push_num(buf, height - p[1], d);
-    };
     buf.extend_from_slice(b"gsave ");
-    for poly in polys {
-        for (i, &p) in poly.iter().enumerate() {
-            point(buf, p);
-            buf.extend_from_slice(if i == 0 { b" m " } else { b" l " });
-        }
-        buf.extend_from_slice(b"h ");
-    }
+    push_flipped_outline(buf, polys, height, d);
     buf.extend_from_slice(b"clip newpath\n");
-    for (i, j) in tiles {
-        // The image fills the unit square, its first row at the top: unit point (u, v)
-        // is texture point (i + u, j + 1 − v); then y flips for PostScript.
-        let ex = a * i + c * (j + 1.0) + e;
-        let fy = b * i + dd * (j + 1.0) + f;
+    for tile in tiles {
         buf.push(b'[');
-        for v in [a, -b, -c, dd] {
-            push_num(buf, v, d + 4);
-            buf.push(b' ');
-        }
-        push_num(buf, ex, d + 2);
-        buf.push(b' ');
-        push_num(buf, height - fy, d + 2);
+        AffinePiece::push_tile_matrix(buf, piece.flipped_tile_matrix(tile, height), d);
         buf.extend_from_slice(b"] T");
         push_uint(buf, k.into());
         buf.push(b'\n');

@@ -10,6 +10,7 @@
 //! points, edge midpoints and three inner points). A triangle above the bound is split
 //! into four at its page edge midpoints, down to [`MAX_DEPTH`] levels.
 
+use crate::number::push_num;
 use crate::TextureMap;
 
 /// The largest perspective error accepted, in pixels.
@@ -47,6 +48,28 @@ pub struct AffinePiece {
 pub(crate) const MAX_TILES_PER_PIECE: u64 = 1024;
 
 impl AffinePiece {
+    /// The matrix `[a b c d e f]` that draws the unit square of texture repetition
+    /// `(i, j)` (the image's first row at the top) on a page whose y axis points up and
+    /// which is `height` high: PDF's `cm` and PostScript's matrices alike.
+    pub(crate) fn flipped_tile_matrix(&self, (i, j): (f64, f64), height: f64) -> [f64; 6] {
+        let [a, b, c, d, e, f] = self.st_to_page;
+        // Unit point (u, v) is texture point (i + u, j + 1 − v); then y flips.
+        let ex = a * i + c * (j + 1.0) + e;
+        let fy = b * i + d * (j + 1.0) + f;
+        [a, -b, -c, d, ex, height - fy]
+    }
+
+    /// Writes a tile matrix: the linear part with `d + 4` decimals, the offset with
+    /// `d + 2`, separated by spaces, without brackets.
+    pub(crate) fn push_tile_matrix(buf: &mut Vec<u8>, m: [f64; 6], d: u8) {
+        for v in &m[..4] {
+            push_num(buf, *v, d + 4);
+            buf.push(b' ');
+        }
+        push_num(buf, m[4], d + 2);
+        buf.push(b' ');
+        push_num(buf, m[5], d + 2);
+    }
     /// The repetitions of the texture (unit squares of texture space, `[i, i + 1] ×
     /// [j, j + 1]`) the piece reaches, as `(i, j)` pairs; `None` when there are more
     /// than [`MAX_TILES_PER_PIECE`] of them, or the map is degenerate.
@@ -90,6 +113,21 @@ impl AffinePiece {
             j += 1.0;
         }
         Some(out)
+    }
+}
+
+/// Writes polygons in page coordinates (y down) as one path on a page whose y axis
+/// points up and which is `height` high, with PDF's and PostScript's abbreviations
+/// `x y m`, `x y l`, `h` (the EPS prolog defines them), ready to be a clip.
+pub(crate) fn push_flipped_outline(buf: &mut Vec<u8>, polys: &[Vec<[f64; 2]>], height: f64, d: u8) {
+    for poly in polys {
+        for (i, &p) in poly.iter().enumerate() {
+            push_num(buf, p[0], d);
+            buf.push(b' ');
+            push_num(buf, height - p[1], d);
+            buf.extend_from_slice(if i == 0 { b" m " } else { b" l " });
+        }
+        buf.extend_from_slice(b"h ");
     }
 }
 
