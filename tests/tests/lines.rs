@@ -7,14 +7,14 @@
 
 use glam::{DQuat, DVec3};
 use limn_depthsort::{order_with_marks, OrderOptions, VisibleMarks};
-use limn_scene::{Camera, Material, Polyline, Scene};
+use limn_scene::{Camera, Scene};
 
 #[path = "support/line_referee.rs"]
 mod common;
 #[path = "support/mark_scenes.rs"]
 mod scenes;
 use common::referee;
-use scenes::strips_with_lines;
+use scenes::{strips_with_lines, surface_with_wireframe};
 
 /// The helix scene at the resolution of these tests.
 fn helix_around_sphere() -> (Scene, Camera) {
@@ -75,36 +75,6 @@ fn the_same_under_rotation_translation_and_permutation() {
             assert_eq!(idx(&base), idx(&other));
         }
     }
-}
-
-/// A wavy height field in triangles with its own grid lines drawn on it, and a second
-/// fold in front hiding part of it.
-fn surface_with_wireframe(n: usize) -> (Scene, Camera) {
-    let mut s = Scene::default();
-    let m = s.add_material(Material::unlit("surface", [0.8, 0.8, 0.7]));
-    let o = s.add_object("surface");
-    let z = |i: usize, j: usize| {
-        let (x, y) = (
-            i as f64 / n as f64 * 4.0 - 2.0,
-            j as f64 / n as f64 * 4.0 - 2.0,
-        );
-        DVec3::new(x, y, 0.6 * (1.3 * x).sin() * (0.9 * y).cos())
-    };
-    for i in 0..n {
-        for j in 0..n {
-            let (a, b, c, d) = (z(i, j), z(i + 1, j), z(i + 1, j + 1), z(i, j + 1));
-            s.add_polygon(&[a, b, c], m, o).unwrap();
-            s.add_polygon(&[a, c, d], m, o).unwrap();
-        }
-    }
-    for i in 0..=n {
-        s.lines
-            .push(Polyline::new((0..=n).map(|j| z(i, j)).collect()));
-        s.lines
-            .push(Polyline::new((0..=n).map(|j| z(j, i)).collect()));
-    }
-    let cam = Camera::new(DVec3::new(1.0, -5.5, 1.1), DVec3::ZERO, 240, 180);
-    (s, cam)
 }
 
 #[test]

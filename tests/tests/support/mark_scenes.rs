@@ -1,5 +1,6 @@
 //! Scenes of the line tests (a module of `lines.rs` and `lines_projections.rs`): lines
-//! and points around the cyclic strips and a helix around a sphere.
+//! and points around the cyclic strips, a helix around a sphere, and a surface with its
+//! own grid lines.
 
 use glam::DVec3;
 use limn_scene::shapes::uv_sphere;
@@ -61,5 +62,35 @@ pub fn helix_around_sphere(
         )));
     }
     let cam = Camera::new(DVec3::new(0.8, 1.1, eye_z), DVec3::ZERO, 200, 160);
+    (s, cam)
+}
+
+/// A wavy height field of `n` × `n` cells in triangles with its own grid lines drawn
+/// on it; its folds hide parts of it.
+pub fn surface_with_wireframe(n: usize) -> (Scene, Camera) {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::unlit("surface", [0.8, 0.8, 0.7]));
+    let o = s.add_object("surface");
+    let z = |i: usize, j: usize| {
+        let (x, y) = (
+            i as f64 / n as f64 * 4.0 - 2.0,
+            j as f64 / n as f64 * 4.0 - 2.0,
+        );
+        DVec3::new(x, y, 0.6 * (1.3 * x).sin() * (0.9 * y).cos())
+    };
+    for i in 0..n {
+        for j in 0..n {
+            let (a, b, c, d) = (z(i, j), z(i + 1, j), z(i + 1, j + 1), z(i, j + 1));
+            s.add_polygon(&[a, b, c], m, o).unwrap();
+            s.add_polygon(&[a, c, d], m, o).unwrap();
+        }
+    }
+    for i in 0..=n {
+        s.lines
+            .push(Polyline::new((0..=n).map(|j| z(i, j)).collect()));
+        s.lines
+            .push(Polyline::new((0..=n).map(|j| z(j, i)).collect()));
+    }
+    let cam = Camera::new(DVec3::new(1.0, -5.5, 1.1), DVec3::ZERO, 240, 180);
     (s, cam)
 }
