@@ -28,7 +28,7 @@
 //! clipped to its unit square grown by half a texel, as in PDF.
 
 use super::number::{push_num, push_uint};
-use super::texture_images::PAD;
+use super::texture_images::unit_square_placement;
 use super::texture_pieces::{push_flipped_outline, AffinePiece};
 
 /// Writes the prolog's definitions for texture `k`: its padded RGB rows `rgb` (`w` ×
@@ -52,19 +52,17 @@ pub(crate) fn write_definition(buf: &mut Vec<u8>, k: u32, rgb: &[u8], w: u32, h:
         buf.extend_from_slice(b">\n");
     }
     buf.extend_from_slice(b"] def\n");
-    let (iw, ih) = (f64::from(w - 2 * PAD), f64::from(h - 2 * PAD));
-    let (px, py) = (f64::from(PAD) / iw, f64::from(PAD) / ih);
-    let (hx, hy) = (0.5 / iw, 0.5 / ih);
+    let (clip, place) = unit_square_placement(w, h);
     buf.extend_from_slice(b"/T");
     push_uint(buf, k.into());
     buf.extend_from_slice(b"{gsave concat ");
     // The unit square grown by half a texel, then the padded image around it.
-    for v in [-hx, -hy, 1.0 + 2.0 * hx, 1.0 + 2.0 * hy] {
+    for v in clip {
         push_num(buf, v, 9);
         buf.push(b' ');
     }
     buf.extend_from_slice(b"rectclip [");
-    for v in [1.0 + 2.0 * px, 0.0, 0.0, 1.0 + 2.0 * py, -px, -py] {
+    for v in place {
         push_num(buf, v, 9);
         buf.push(b' ');
     }

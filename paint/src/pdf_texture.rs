@@ -6,7 +6,7 @@
 //! where both interpolate correctly.
 
 use super::number::{push_num, push_uint};
-use super::texture_images::PAD;
+use super::texture_images::unit_square_placement;
 use super::texture_pieces::{push_flipped_outline, AffinePiece};
 
 /// Writes the polygons `polys` (page coordinates y down; the page is `height` high)
@@ -23,9 +23,7 @@ pub(crate) fn write_clipped(
     height: f64,
     d: u8,
 ) -> bool {
-    let (w, h) = (f64::from(padded.0 - 2 * PAD), f64::from(padded.1 - 2 * PAD));
-    let (px, py) = (f64::from(PAD) / w, f64::from(PAD) / h);
-    let (hx, hy) = (0.5 / w, 0.5 / h);
+    let (clip, place) = unit_square_placement(padded.0, padded.1);
     let Some(tiles) = piece.repetitions() else {
         return false;
     };
@@ -37,12 +35,12 @@ pub(crate) fn write_clipped(
         AffinePiece::push_tile_matrix(buf, piece.flipped_tile_matrix(tile, height), d);
         buf.extend_from_slice(b" cm ");
         // The unit square grown by half a texel, then the padded image around it.
-        for v in [-hx, -hy, 1.0 + 2.0 * hx, 1.0 + 2.0 * hy] {
+        for v in clip {
             push_num(buf, v, 9);
             buf.push(b' ');
         }
         buf.extend_from_slice(b"re W n ");
-        for v in [1.0 + 2.0 * px, 0.0, 0.0, 1.0 + 2.0 * py, -px, -py] {
+        for v in place {
             push_num(buf, v, 9);
             buf.push(b' ');
         }

@@ -33,6 +33,21 @@ fn padded(t: &Texture) -> (Vec<u8>, u32, u32) {
     (out, pw, ph)
 }
 
+/// Where an embedded (padded) image of `w` × `h` texels goes in the unit square of one
+/// texture repetition, for PDF and PostScript: the clip rectangle `[x y width height]`
+/// (the unit square grown by half a texel, so neighbouring repetitions meet without a
+/// gap) and the matrix placing the padded image around the unit square (its inner
+/// texels fill it).
+pub(crate) fn unit_square_placement(w: u32, h: u32) -> ([f64; 4], [f64; 6]) {
+    let (iw, ih) = (f64::from(w - 2 * PAD), f64::from(h - 2 * PAD));
+    let (px, py) = (f64::from(PAD) / iw, f64::from(PAD) / ih);
+    let (hx, hy) = (0.5 / iw, 0.5 / ih);
+    (
+        [-hx, -hy, 1.0 + 2.0 * hx, 1.0 + 2.0 * hy],
+        [1.0 + 2.0 * px, 0.0, 0.0, 1.0 + 2.0 * py, -px, -py],
+    )
+}
+
 /// The padded texture as a `data:image/png;base64,…` URI (opaque); `None` if it cannot
 /// be encoded.
 pub(crate) fn png_data_uri(t: &Texture) -> Option<String> {
