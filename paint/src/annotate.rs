@@ -41,7 +41,11 @@ pub fn picture_with_marks(
     let count = ordered.fragments.len();
     let mut at: Vec<usize> = (0..count).collect();
     if style.seams.is_finite() && style.seams > 0.0 {
-        let (frags, idx) = seam_flaps_indexed(std::mem::take(&mut pic.fragments), style.seams);
+        let (frags, idx) = seam_flaps_indexed(
+            std::mem::take(&mut pic.fragments),
+            style.seams,
+            style.flap_join(),
+        );
         pic.fragments = frags;
         at = idx;
     }

@@ -11,7 +11,7 @@ use limn_depthsort::Ordered;
 
 use crate::covers::covers;
 use crate::phong::DEFAULT_TOLERANCE;
-use crate::seams::seam_flaps;
+use crate::seams::{seam_flaps_indexed, FlapJoin};
 use crate::smooth::{FaceLight, View};
 use crate::texturing::{FaceTexture, Projector, TextureTable};
 use crate::{Outline, PaintFragment, Picture};
@@ -52,6 +52,18 @@ impl Default for Style {
             smooth: true,
             tolerance: DEFAULT_TOLERANCE,
             seams: 0.5,
+        }
+    }
+}
+
+impl Style {
+    /// How seam flaps are painted: joined into their fragments' outlines, unless
+    /// outline strokes need every original edge.
+    pub fn flap_join(&self) -> FlapJoin {
+        if self.outline.is_some() {
+            FlapJoin::Separate
+        } else {
+            FlapJoin::Joined
         }
     }
 }
@@ -169,7 +181,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         }
     }
     let fragments = if style.seams.is_finite() && style.seams > 0.0 {
-        seam_flaps(fragments, style.seams)
+        seam_flaps_indexed(fragments, style.seams, style.flap_join()).0
     } else {
         fragments
     };

@@ -117,7 +117,7 @@ pub use model::{
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};
 pub use png::{PngOptions, PngPainter};
-pub use seams::{seam_flaps, seam_flaps_indexed};
+pub use seams::{seam_flaps, seam_flaps_indexed, FlapJoin};
 pub use svg::{SvgOptions, SvgPainter};
 pub use texture_pieces::{affine_pieces, AffinePiece, MAX_PERSPECTIVE_ERROR};
 pub use tikz::{TikzOptions, TikzPainter, MAX_TIKZ_SIDE, MAX_TIKZ_STROKE};

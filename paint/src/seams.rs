@@ -1,10 +1,22 @@
 //! Seam flaps: closing the hairlines viewers leave between adjacent fills without moving
 //! any boundary of the picture.
 
+use rayon::prelude::*;
+
 use crate::PaintFragment;
 
 /// The bits of an edge's end points, smaller end first (an undirected edge key).
 type EdgeKey = ([u64; 2], [u64; 2]);
+
+/// A hash of an edge key (a fixed mixing of its bits: the same on every run).
+fn key_hash(k: &EdgeKey) -> u64 {
+    const M: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut h: u64 = 0;
+    for w in [k.0[0], k.0[1], k.1[0], k.1[1]] {
+        h = (h.rotate_left(5) ^ w).wrapping_mul(M);
+    }
+    h ^ (h >> 29)
+}
 
 fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
     let (ka, kb) = (a.map(f64::to_bits), b.map(f64::to_bits));
@@ -24,66 +36,66 @@ fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
 /// `width` pixels of the shared edge. The later fragment covers its flaps entirely, so
 /// the picture stays exactly the same at every point (the flap only fills the
 /// anti-aliased pixels under the shared edge): silhouettes, edges against faces painted
-/// earlier and translucent faces get no flap.
+/// earlier and translucent faces get no flap. Every flap is a fragment of its own
+/// ([`FlapJoin::Separate`]).
 pub fn seam_flaps(fragments: Vec<PaintFragment>, width: f64) -> Vec<PaintFragment> {
-    seam_flaps_indexed(fragments, width).0
+    seam_flaps_indexed(fragments, width, FlapJoin::Separate).0
 }
 
-/// [`seam_flaps`], also returning where each input fragment went in the output (so that
-/// marks placed among the fragments can follow them).
+/// How the flaps of a flat fragment are painted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FlapJoin {
+    /// Each flap is a fragment of its own, painted right after its fragment; the
+    /// fragment keeps its outline and which of its edges are original.
+    Separate,
+    /// The flaps of a flat, untextured fragment become part of its outline: the shared
+    /// edge is replaced by the flap's far side, so fragment and flaps are one polygon
+    /// (the same points painted, fewer paths, no edge between fragment and flap). The
+    /// edges so replaced are no longer in the outline: for pictures without outline
+    /// strokes. Smooth and textured fragments keep separate flaps.
+    Joined,
+}
+
+/// [`seam_flaps`] with the flaps painted as `join` says, also returning where each input
+/// fragment went in the output (so that marks placed among the fragments can follow
+/// them).
 pub fn seam_flaps_indexed(
     fragments: Vec<PaintFragment>,
     width: f64,
+    join: FlapJoin,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let later = LaterNeighbours::new(&fragments);
-    // The flaps first (they read the later fragments), in the order of the fragments
-    // they follow; then the fragments moved into the output with their flaps after
-    // them: no fragment is copied.
-    let mut flaps: Vec<(usize, PaintFragment)> = Vec::new();
-    for (i, f) in fragments.iter().enumerate() {
-        if !opaque(f) {
-            continue;
-        }
-        let n = f.points.len();
-        for e in 0..n {
-            let (a, b) = (f.points[e], f.points[(e + 1) % n]);
-            // The first fragment of another face painted after this one.
-            let Some(j) = later.of(i, e) else {
-                continue;
-            };
-            if let Some(points) = flap(&fragments[j].points, a, b, width) {
-                // A smooth fragment's flap takes the colour half-way along the edge.
-                let fill = match &f.vertex_colors {
-                    Some(cs) if cs.len() == n => {
-                        let (ca, cb) = (cs[e], cs[(e + 1) % n]);
-                        [0, 1, 2, 3].map(|k| {
-                            if k == 3 {
-                                f.fill[3]
-                            } else {
-                                0.5 * (ca[k] + cb[k])
-                            }
-                        })
+    // The flaps first (they read the later fragments as they are), in the order of the
+    // fragments they follow; then the fragments moved into the output, each with its
+    // joined outline or its flaps after it: no fragment is copied. Blocks of fragments
+    // make their flaps in parallel and the blocks are put together in order, so the
+    // output does not depend on the threads.
+    let (flaps, joined): (Vec<Flap>, Vec<(usize, Outline)>) = fragments
+        .par_chunks(FRAGMENTS_PER_TASK)
+        .enumerate()
+        .map(|(c, block)| {
+            let (mut flaps, mut joined) = (Vec::new(), Vec::new());
+            for (k, f) in block.iter().enumerate() {
+                let i = c * FRAGMENTS_PER_TASK + k;
+                let start = flaps.len();
+                flaps_after(&fragments, i, f, &later, width, &mut flaps);
+                if join == FlapJoin::Joined && flaps.len() > start {
+                    if let Some(outline) = joined_outline(f, &flaps[start..]) {
+                        flaps.truncate(start);
+                        joined.push((i, outline));
                     }
-                    _ => f.fill,
-                };
-                let original_edges = vec![false; points.len()];
-                flaps.push((
-                    i,
-                    PaintFragment {
-                        points,
-                        fill,
-                        vertex_colors: None,
-                        // A textured flap goes on with the fragment's texture, under the
-                        // same map.
-                        texture: f.texture,
-                        face: f.face,
-                        object: f.object,
-                        original_edges,
-                    },
-                ));
+                }
             }
-        }
-    }
+            (flaps, joined)
+        })
+        .reduce(
+            || (Vec::new(), Vec::new()),
+            |mut a, b| {
+                a.0.extend(b.0);
+                a.1.extend(b.1);
+                a
+            },
+        );
     // A smooth fragment's flaps wait until the consecutive smooth fragments of its face
     // are out (Phong pieces): a flap between them would split the painters' run of the
     // face. Every later face is painted after that run, so each flap still comes first.
@@ -91,7 +103,12 @@ pub fn seam_flaps_indexed(
     let mut at = Vec::with_capacity(fragments.len());
     let mut waiting: Vec<PaintFragment> = Vec::new();
     let mut flaps = flaps.into_iter().peekable();
-    for (i, f) in fragments.into_iter().enumerate() {
+    let mut joined = joined.into_iter().peekable();
+    for (i, mut f) in fragments.into_iter().enumerate() {
+        if let Some((_, (points, original_edges))) = joined.next_if(|(k, _)| *k == i) {
+            f.points = points;
+            f.original_edges = original_edges;
+        }
         let smooth_run = out
             .last()
             .is_some_and(|l: &PaintFragment| l.face == f.face && l.vertex_colors.is_some());
@@ -113,6 +130,152 @@ pub fn seam_flaps_indexed(
     (out, at)
 }
 
+/// A flap and the index of the fragment it is painted after.
+type Flap = (usize, PaintFragment);
+
+/// A fragment's new corners and which of its edges are original.
+type Outline = (Vec<[f64; 2]>, Vec<bool>);
+
+/// The outline of flat, untextured fragment `f` with its `flaps` (as [`flaps_after`]
+/// made them, in edge order) joined in: each shared edge `a → b` replaced by the flap's
+/// boundary from `a` round to `b`, turning the way `f` turns. The result is `f` and its
+/// flaps as one polygon (where flaps overlap, the nonzero rule fills them once).
+/// `None` (the flaps stay separate) for a smooth or textured fragment, or when `f` or a
+/// flap has no area or a flap does not hold the shared edge's end points exactly.
+fn joined_outline(f: &PaintFragment, flaps: &[(usize, PaintFragment)]) -> Option<Outline> {
+    if f.vertex_colors.is_some() || f.texture.is_some() {
+        return None;
+    }
+    let turn = area2(&f.points);
+    if turn == 0.0 || !turn.is_finite() {
+        return None;
+    }
+    let n = f.points.len();
+    let extra: usize = flaps.iter().map(|(_, fl)| fl.points.len() - 2).sum();
+    let mut points = Vec::with_capacity(n + extra);
+    let mut original = Vec::with_capacity(n + extra);
+    let mut flaps = flaps.iter().peekable();
+    for e in 0..n {
+        let (a, b) = (f.points[e], f.points[(e + 1) % n]);
+        points.push(a);
+        // Flaps come in edge order; the one of edge `e` starts at `a` and ends at `b`.
+        let Some((_, fl)) = flaps.next_if(|(_, fl)| holds_edge(&fl.points, a, b)) else {
+            original.push(f.original_edges.get(e).copied().unwrap_or(false));
+            continue;
+        };
+        let q = &fl.points;
+        let m = q.len();
+        let forward = area2(q);
+        if forward == 0.0 || !forward.is_finite() {
+            return None;
+        }
+        // Walking the flap the way `f` turns, its side on the shared edge runs b → a;
+        // the rest of its boundary leads from a round to b.
+        let step = |k: usize| {
+            if (forward > 0.0) == (turn > 0.0) {
+                (k + 1) % m
+            } else {
+                (k + m - 1) % m
+            }
+        };
+        let mut k = q.iter().position(|&p| p == a)?;
+        original.push(false);
+        let before = points.len();
+        loop {
+            k = step(k);
+            if q[k] == b {
+                break;
+            }
+            points.push(q[k]);
+            original.push(false);
+        }
+        // A flap on `f`'s own side of the edge (a fold) is not a detour: kept apart.
+        if points.len() == before {
+            return None;
+        }
+    }
+    // Every flap must have found its edge.
+    flaps.next().is_none().then_some((points, original))
+}
+
+/// Whether polygon `q` has `a` and `b` as consecutive corners (either way round).
+fn holds_edge(q: &[[f64; 2]], a: [f64; 2], b: [f64; 2]) -> bool {
+    let m = q.len();
+    (0..m).any(|k| {
+        let (p, r) = (q[k], q[(k + 1) % m]);
+        (p == a && r == b) || (p == b && r == a)
+    })
+}
+
+/// Twice the signed area of a polygon (shoelace).
+fn area2(p: &[[f64; 2]]) -> f64 {
+    let n = p.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (p[i], p[(i + 1) % n]);
+            a[0] * b[1] - b[0] * a[1]
+        })
+        .sum()
+}
+
+/// Fragments per parallel task in [`seam_flaps_indexed`].
+const FRAGMENTS_PER_TASK: usize = 2048;
+
+/// Pushes onto `out` the flaps painted right after fragment `i` (`f`): one per edge it
+/// shares with a later opaque fragment of another face.
+fn flaps_after(
+    fragments: &[PaintFragment],
+    i: usize,
+    f: &PaintFragment,
+    later: &LaterNeighbours,
+    width: f64,
+    out: &mut Vec<(usize, PaintFragment)>,
+) {
+    if !opaque(f) {
+        return;
+    }
+    let n = f.points.len();
+    for e in 0..n {
+        let (a, b) = (f.points[e], f.points[(e + 1) % n]);
+        // The first fragment of another face painted after this one.
+        let Some(j) = later.of(i, e) else {
+            continue;
+        };
+        let Some(points) = flap(&fragments[j].points, a, b, width) else {
+            continue;
+        };
+        // A smooth fragment's flap takes the colour half-way along the edge.
+        let fill = match &f.vertex_colors {
+            Some(cs) if cs.len() == n => {
+                let (ca, cb) = (cs[e], cs[(e + 1) % n]);
+                [0, 1, 2, 3].map(|k| {
+                    if k == 3 {
+                        f.fill[3]
+                    } else {
+                        0.5 * (ca[k] + cb[k])
+                    }
+                })
+            }
+            _ => f.fill,
+        };
+        let original_edges = vec![false; points.len()];
+        out.push((
+            i,
+            PaintFragment {
+                points,
+                fill,
+                vertex_colors: None,
+                // A textured flap goes on with the fragment's texture, under the same
+                // map.
+                texture: f.texture,
+                face: f.face,
+                object: f.object,
+                original_edges,
+            },
+        ));
+    }
+}
+
 fn opaque(f: &PaintFragment) -> bool {
     f.fill[3] >= 1.0
 }
@@ -131,33 +294,40 @@ struct LaterNeighbours {
 
 impl LaterNeighbours {
     fn new(fragments: &[PaintFragment]) -> Self {
+        let key = |j: usize, e: usize| {
+            let p = &fragments[j].points;
+            edge_key(p[e], p[(e + 1) % p.len()])
+        };
         let mut starts = Vec::with_capacity(fragments.len() + 1);
-        let mut edges: Vec<(EdgeKey, usize, usize)> = Vec::new();
-        for (j, f) in fragments.iter().enumerate() {
-            starts.push(edges.len());
-            if !opaque(f) {
-                continue;
-            }
-            let n = f.points.len();
-            for e in 0..n {
-                edges.push((edge_key(f.points[e], f.points[(e + 1) % n]), j, e));
+        let mut count = 0;
+        for f in fragments {
+            starts.push(count);
+            if opaque(f) {
+                count += f.points.len();
             }
         }
-        starts.push(edges.len());
-        // A total order on (key, fragment, edge): the same result from any sort.
-        edges.sort_unstable();
-        let mut first_later = vec![usize::MAX; edges.len()];
+        starts.push(count);
+        // Each edge as (hash of its key, fragment, edge): a third of the bytes of the
+        // key itself to sort. A total order, so the same result from any sort; edges
+        // with equal hashes are told apart by their keys below.
+        let mut edges: Vec<(u64, usize, u32)> = Vec::with_capacity(count);
+        for (j, f) in fragments.iter().enumerate() {
+            if opaque(f) {
+                edges.extend((0..f.points.len()).map(|e| (key_hash(&key(j, e)), j, e as u32)));
+            }
+        }
+        edges.par_sort_unstable();
+        let mut first_later = vec![usize::MAX; count];
         for group in edges.chunk_by(|a, b| a.0 == b.0) {
             if group.len() < 2 {
                 continue;
             }
             for &(_, i, e) in group {
-                let face = fragments[i].face;
-                if let Some(&(_, j, _)) = group
-                    .iter()
-                    .find(|&&(_, j, _)| j > i && fragments[j].face != face)
-                {
-                    first_later[starts[i] + e] = j;
+                let (face, k) = (fragments[i].face, key(i, e as usize));
+                if let Some(&(_, j, _)) = group.iter().find(|&&(_, j, f)| {
+                    j > i && fragments[j].face != face && key(j, f as usize) == k
+                }) {
+                    first_later[starts[i] + e as usize] = j;
                 }
             }
         }
@@ -337,9 +507,79 @@ mod tests {
     fn sorted_edges_give_the_reference_flaps() {
         for seed in 0..20 {
             let frags = grid_fragments(seed);
-            let (out, at) = seam_flaps_indexed(frags.clone(), 0.5);
+            let (out, at) = seam_flaps_indexed(frags.clone(), 0.5, FlapJoin::Separate);
             assert!(out.len() > frags.len(), "seed {seed}: some flaps");
             assert_eq!((out, at), seam_flaps_reference(frags, 0.5), "seed {seed}");
         }
+    }
+
+    /// The picture of `frags` on a transparent page, without anti-aliasing.
+    fn pixels(frags: Vec<PaintFragment>) -> Vec<u8> {
+        use crate::{Picture, PngOptions, PngPainter};
+        let mut pic = Picture::new(100, 70);
+        pic.fragments = frags;
+        let png = PngPainter::new(PngOptions {
+            anti_alias: false,
+            ..PngOptions::default()
+        });
+        let (pixmap, _) = png.render(&pic).expect("render");
+        pixmap.data().to_vec()
+    }
+
+    #[test]
+    fn joined_flaps_paint_the_same_pixels_as_separate_ones() {
+        let mut joined_any = 0;
+        for seed in 0..12 {
+            let mut frags = grid_fragments(seed);
+            // Fragments turning either way, at coordinates off the pixel grid.
+            for (k, f) in frags.iter_mut().enumerate() {
+                for p in &mut f.points {
+                    *p = [p[0] * 0.9 + 0.37, p[1] + 0.21];
+                }
+                if k % 3 == 0 {
+                    f.points.reverse();
+                    if let Some(cs) = &mut f.vertex_colors {
+                        cs.reverse();
+                    }
+                }
+            }
+            let (separate, _) = seam_flaps_indexed(frags.clone(), 2.0, FlapJoin::Separate);
+            let (joined, at) = seam_flaps_indexed(frags.clone(), 2.0, FlapJoin::Joined);
+            assert!(joined.len() < separate.len(), "seed {seed}: flaps joined");
+            // Each input fragment is where `at` says, with its corners kept in order.
+            for (i, f) in frags.iter().enumerate() {
+                let g = &joined[at[i]];
+                assert_eq!((g.face, g.fill), (f.face, f.fill), "seed {seed}");
+                let mut corners = g.points.iter().filter(|p| f.points.contains(p));
+                assert!(
+                    f.points.iter().all(|p| corners.next() == Some(p)),
+                    "seed {seed}"
+                );
+                if g.points.len() > f.points.len() {
+                    joined_any += 1;
+                    assert!(f.vertex_colors.is_none() && f.fill[3] >= 1.0, "seed {seed}");
+                    assert!(g.original_edges.len() == g.points.len());
+                }
+            }
+            assert_eq!(pixels(joined), pixels(separate), "seed {seed}");
+        }
+        assert!(joined_any > 100, "{joined_any} fragments with joined flaps");
+    }
+
+    #[test]
+    fn a_flap_on_the_fragments_own_side_stays_separate() {
+        // b overlaps a from a's side of their shared edge (a fold): no detour to join.
+        let mut a = PaintFragment::new(vec![[0.0, 0.0], [10.0, 0.0], [10.0, 10.0]], [1.0; 4]);
+        a.face = 0;
+        let mut b = PaintFragment::new(vec![[0.0, 0.0], [10.0, 0.0], [9.0, 5.0]], [0.5; 4]);
+        b.fill[3] = 1.0;
+        b.face = 1;
+        let (out, _) = seam_flaps_indexed(vec![a.clone(), b.clone()], 0.5, FlapJoin::Joined);
+        assert_eq!(out.len(), 3, "{out:?}");
+        assert_eq!(out[0].points, a.points);
+        assert_eq!(
+            pixels(out),
+            pixels(seam_flaps_indexed(vec![a, b], 0.5, FlapJoin::Separate).0)
+        );
     }
 }

@@ -30,12 +30,21 @@ const BAND_PX: f64 = 1.0 / 64.0;
 const RASTER_BAND_PX: f64 = 1.0 / 32.0;
 
 /// Pixels outside the band where the default picture disagrees with ray casting, and
-/// the number of seam flaps the picture carries.
+/// the corners seam flaps add to the picture (as fragments of their own or joined into
+/// their fragments' outlines).
 fn wrong_pixels(scene: &Scene, camera: &Camera, sort: SortMode) -> (usize, usize) {
     let (p, reference) = ordered_and_raycast(scene, camera, sort);
     let o = &p.ordered;
     let pic = picture(scene, o, &Style::default());
-    let flaps = pic.fragments.len() - o.fragments.len();
+    let corners = |style: &Style| -> usize {
+        let pic = picture(scene, o, style);
+        pic.fragments.iter().map(|f| f.points.len()).sum()
+    };
+    let no_flaps = Style {
+        seams: 0.0,
+        ..Style::default()
+    };
+    let flaps = corners(&Style::default()) - corners(&no_flaps);
     let (w, h) = (o.camera.width, o.camera.height);
     let painted: Vec<(Vec<[f64; 2]>, u32)> = pic
         .fragments
