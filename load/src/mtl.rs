@@ -43,8 +43,19 @@ impl Library {
     }
 
     /// The material named `name`.
+    #[cfg(test)]
     pub(crate) fn get(&self, name: &str) -> Option<&Material> {
-        self.by_name.get(name).map(|&i| &self.materials[i])
+        self.index(name).map(|i| self.at(i))
+    }
+
+    /// The index of the material named `name` (it keeps its index when redefined).
+    pub(crate) fn index(&self, name: &str) -> Option<usize> {
+        self.by_name.get(name).copied()
+    }
+
+    /// The material at `index` (from [`Library::index`]).
+    pub(crate) fn at(&self, index: usize) -> &Material {
+        &self.materials[index]
     }
 }
 

@@ -31,6 +31,9 @@ use super::{check_u32, refs, stem, LoadError, LoadOptions, Location};
 use limn_scene::{Face, Material, PointMark, Polyline, Scene, Texture};
 
 /// Statements accepted and ignored.
+/// No scene material yet (in `Obj::scene_material`).
+const NO_MATERIAL: u32 = u32::MAX;
+
 const IGNORED: &[&[u8]] = &[
     b"vp",
     b"s",
@@ -75,8 +78,11 @@ struct Obj<'a> {
     objects: HashMap<String, u32>,
     object_name: String,
     object: Option<u32>,
-    /// Material name → index in the scene (added when first used).
-    materials: HashMap<String, u32>,
+    /// Library material index → index in the scene (added when first used; `NO_MATERIAL`
+    /// before).
+    scene_material: Vec<u32>,
+    /// Names no library defines → index in the scene (the default grey, once each).
+    undefined: HashMap<String, u32>,
     material_name: Option<String>,
     /// Line of the last `usemtl`.
     material_line: u64,
@@ -100,7 +106,8 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         objects: HashMap::default(),
         object_name: stem(path),
         object: None,
-        materials: HashMap::default(),
+        scene_material: Vec::new(),
+        undefined: HashMap::default(),
         material_name: None,
         material_line: 0,
         material: None,
@@ -179,7 +186,10 @@ impl Obj<'_> {
                 }
                 // The same name again keeps the material found (no lookup, no copy).
                 if self.material_name.as_deref().map(str::as_bytes) != Some(name) {
-                    self.material_name = Some(lossy(name));
+                    // The name's buffer is reused: no allocation per `usemtl`.
+                    let current = self.material_name.get_or_insert_with(String::new);
+                    current.clear();
+                    current.push_str(&String::from_utf8_lossy(name));
                     self.material = None;
                 }
                 self.material_line = n;
@@ -497,32 +507,36 @@ impl Obj<'_> {
         if let Some(m) = self.material {
             return Ok(m);
         }
+        let name = self.material_name.as_deref().unwrap_or("");
         // The default grey is keyed by the empty name, which no usemtl can give.
-        let known = self
-            .materials
-            .get(self.material_name.as_deref().unwrap_or(""));
-        let m = match known {
-            Some(&m) => m,
-            None => {
-                let name = self.material_name.clone().unwrap_or_default();
-                let mat = match self.library.get(&name) {
-                    Some(m) => m.clone(),
-                    None => {
-                        if !name.is_empty() {
-                            self.scene.warnings.push(format!(
-                                "{}:{}: material {name:?} is not defined; using the default grey",
-                                self.path.display(),
-                                self.material_line
-                            ));
-                        }
-                        Material::default_grey()
-                    }
-                };
-                check_u32(self.scene.materials.len(), "materials", self.path)?;
-                let m = self.scene.add_material(mat);
-                self.materials.insert(name, m);
-                m
+        // A name first used while no library defined it stays the default grey.
+        let m = if let Some(&m) = self.undefined.get(name) {
+            m
+        } else if let Some(i) = self.library.index(name) {
+            if self.scene_material.len() <= i {
+                self.scene_material.resize(i + 1, NO_MATERIAL);
             }
+            match self.scene_material[i] {
+                NO_MATERIAL => {
+                    check_u32(self.scene.materials.len(), "materials", self.path)?;
+                    let m = self.scene.add_material(self.library.at(i).clone());
+                    self.scene_material[i] = m;
+                    m
+                }
+                m => m,
+            }
+        } else {
+            if !name.is_empty() {
+                self.scene.warnings.push(format!(
+                    "{}:{}: material {name:?} is not defined; using the default grey",
+                    self.path.display(),
+                    self.material_line
+                ));
+            }
+            check_u32(self.scene.materials.len(), "materials", self.path)?;
+            let m = self.scene.add_material(Material::default_grey());
+            self.undefined.insert(name.to_owned(), m);
+            m
         };
         self.material = Some(m);
         Ok(m)

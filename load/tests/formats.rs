@@ -124,6 +124,46 @@ fn obj_missing_mtl_warns_and_uses_defaults() {
 }
 
 #[test]
+fn obj_materials_are_added_once_each_in_order_of_first_use() {
+    let d = dir();
+    write(
+        d.path(),
+        "a.mtl",
+        "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 1 0\n",
+    );
+    write(
+        d.path(),
+        "late.mtl",
+        "newmtl late\nKd 0 0 1\nnewmtl a\nKd 1 1 1\n",
+    );
+    let src = "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n\
+               usemtl b\nf 1 2 3\nusemtl a\nf 1 2 3\nusemtl b\nf 1 2 3\n\
+               usemtl late\nf 1 2 3\nmtllib late.mtl\nusemtl late\nf 1 2 3\n\
+               usemtl a\nf 1 2 3\nusemtl nowhere\nf 1 2 3\nusemtl b\nf 1 2 3\n";
+    let p = write(d.path(), "m.obj", src);
+    let s = ok(&p);
+    let used: Vec<u32> = s.faces.iter().map(|f| f.material).collect();
+    // b, a, b again, `late` before its library (grey) and after it (still the grey
+    // it was first given), `a` as first defined, an unknown name, b again.
+    assert_eq!(used, vec![0, 1, 0, 2, 2, 1, 3, 0]);
+    let names: Vec<&str> = s.materials.iter().map(|m| m.name.as_str()).collect();
+    assert_eq!(names.len(), 4, "{names:?}");
+    assert_eq!((names[0], names[1]), ("b", "a"));
+    assert_eq!(s.materials[0].kd, [0.0, 1.0, 0.0]);
+    assert_eq!(s.materials[1].kd, [1.0, 0.0, 0.0]);
+    for grey in [2, 3] {
+        assert_eq!(s.materials[grey].kd, Material::default_grey().kd);
+    }
+    let undefined: Vec<&String> = s
+        .warnings
+        .iter()
+        .filter(|w| w.contains("not defined"))
+        .collect();
+    assert_eq!(undefined.len(), 2, "{:?}", s.warnings);
+    assert!(undefined[0].contains("m.obj:11") && undefined[1].contains("m.obj:18"));
+}
+
+#[test]
 fn obj_mtllib_inside_a_subfolder_is_fine() {
     let d = dir();
     write(d.path(), "mats/a.mtl", "newmtl a\nKd 0 0 1\n");
