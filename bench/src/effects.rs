@@ -11,8 +11,8 @@ use anyhow::Result;
 use glam::DVec3;
 use limn_depthsort::{order, OrderOptions, Ordered};
 use limn_paint::{
-    covers, picture, seam_flaps, EpsPainter, PaintFragment, Painter, PdfPainter, Picture, Style,
-    SvgOptions, SvgPainter,
+    covers, picture, seam_flaps_indexed, EpsPainter, PaintFragment, Painter, PdfPainter, Picture,
+    Style, SvgOptions, SvgPainter,
 };
 use limn_scene::{
     shade_face, shapes, Camera, Fog, FogFalloff, Light, LightKind, Material, Scene, Shading,
@@ -174,7 +174,7 @@ pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style)
         background: style.background,
         objects: scene.objects.iter().map(|o| o.name.clone()).collect(),
         fragments: if style.seams.is_finite() && style.seams > 0.0 {
-            seam_flaps(fragments, style.seams)
+            seam_flaps_indexed(fragments, style.seams, style.flap_join()).0
         } else {
             fragments
         },
