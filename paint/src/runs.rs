@@ -6,6 +6,7 @@ use std::borrow::Cow;
 use super::{Mark, Outline, PaintError, PaintFragment, Picture};
 
 /// A valid fragment, clipped to the guard box.
+#[derive(Clone)]
 pub(crate) struct Frag<'a> {
     /// The fragment as given (face, object, fill).
     pub src: &'a PaintFragment,

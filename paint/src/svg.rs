@@ -57,7 +57,7 @@ use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{svg_smooth, svg_texture, Label, PaintError, PaintStats, Painter, Picture};
+use super::{svg_smooth, svg_texture, Label, Outline, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`SvgPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -199,29 +199,12 @@ impl Painter for SvgPainter {
                 Vec::new()
             };
             let cover = pieces.iter().map(Vec::len).sum::<usize>() > 1;
-            if texture.is_none() && (!smooth || (alpha >= 1000 && cover)) {
-                b.extend_from_slice(b"<path d=\"");
-                for (f, reverse) in run.iter().zip(reversals(run)) {
-                    for (k, p) in f.oriented(reverse).enumerate() {
-                        b.push(match k {
-                            0 => b'M',
-                            1 => b'L',
-                            _ => b' ',
-                        });
-                        push_point(b, p, d);
-                    }
-                    b.push(b'Z');
-                }
-                b.extend_from_slice(b"\" fill=\"");
-                push_hex_color(b, rgb);
-                b.push(b'"');
-                opacity_attr(b, b"fill-opacity", alpha);
-                if seams > 0.0 && alpha >= 1000 {
-                    b.extend_from_slice(b" stroke=\"");
-                    push_hex_color(b, rgb);
-                    b.push(b'"');
-                }
-                b.extend_from_slice(b"/>\n");
+            let fill = texture.is_none() && (!smooth || (alpha >= 1000 && cover));
+            let outlined = checked
+                .outline
+                .filter(|_| run.iter().any(Frag::has_outline));
+            if fill {
+                write_fill(b, run, rgb, alpha, seams > 0.0, d);
                 stats.paths += 1;
             }
             let mut g = gradients.get();
@@ -229,25 +212,9 @@ impl Painter for SvgPainter {
                 stats.paths += write_pieces(b, piece, alpha, d, &mut g);
             }
             gradients.set(g);
-
-            if let Some(o) = checked.outline {
-                if run.iter().any(Frag::has_outline) {
-                    b.extend_from_slice(b"<path d=\"");
-                    for f in run {
-                        push_outline(b, f, d);
-                    }
-                    b.extend_from_slice(b"\" fill=\"none\" stroke=\"");
-                    push_hex_color(b, rgb_u8([o.color[0], o.color[1], o.color[2]]));
-                    b.push(b'"');
-                    if seams > 0.0 {
-                        b.extend_from_slice(b" stroke-width=\"");
-                        push_num(b, o.width, d);
-                        b.push(b'"');
-                        opacity_attr(b, b"stroke-opacity", alpha_milli(o.color[3]));
-                    }
-                    b.extend_from_slice(b"/>\n");
-                    stats.strokes += 1;
-                }
+            if let Some(o) = outlined {
+                write_outline(b, run, o, seams > 0.0, d);
+                stats.strokes += 1;
             }
             sink.maybe_flush()?;
             Ok(())
@@ -276,6 +243,52 @@ impl Painter for SvgPainter {
         stats.bytes = sink.finish()?;
         Ok(stats)
     }
+}
+
+/// Writes the fill of a run as one path (each fragment a subpath, turned the way the
+/// first one turns), stroked in its own colour when seams close it.
+fn write_fill(b: &mut Vec<u8>, run: &[Frag<'_>], rgb: [u8; 3], alpha: u16, seams: bool, d: u8) {
+    b.extend_from_slice(b"<path d=\"");
+    for (f, reverse) in run.iter().zip(reversals(run)) {
+        for (k, p) in f.oriented(reverse).enumerate() {
+            b.push(match k {
+                0 => b'M',
+                1 => b'L',
+                _ => b' ',
+            });
+            push_point(b, p, d);
+        }
+        b.push(b'Z');
+    }
+    b.extend_from_slice(b"\" fill=\"");
+    push_hex_color(b, rgb);
+    b.push(b'"');
+    opacity_attr(b, b"fill-opacity", alpha);
+    if seams && alpha >= 1000 {
+        b.extend_from_slice(b" stroke=\"");
+        push_hex_color(b, rgb);
+        b.push(b'"');
+    }
+    b.extend_from_slice(b"/>\n");
+}
+
+/// Writes the original edges of a run as one stroked path (its own width and opacity
+/// when the root's stroke style is the seams').
+fn write_outline(b: &mut Vec<u8>, run: &[Frag<'_>], o: Outline, seams: bool, d: u8) {
+    b.extend_from_slice(b"<path d=\"");
+    for f in run {
+        push_outline(b, f, d);
+    }
+    b.extend_from_slice(b"\" fill=\"none\" stroke=\"");
+    push_hex_color(b, rgb_u8([o.color[0], o.color[1], o.color[2]]));
+    b.push(b'"');
+    if seams {
+        b.extend_from_slice(b" stroke-width=\"");
+        push_num(b, o.width, d);
+        b.push(b'"');
+        opacity_attr(b, b"stroke-opacity", alpha_milli(o.color[3]));
+    }
+    b.extend_from_slice(b"/>\n");
 }
 
 /// Writes smooth-fill pieces: flat ones grouped by written colour into one path each
