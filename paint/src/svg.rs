@@ -52,6 +52,8 @@
 use std::cell::{Cell, RefCell};
 use std::io::Write;
 
+use rayon::prelude::*;
+
 use super::marks::{paint_mark, MarkSink};
 use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
@@ -106,7 +108,11 @@ fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool, Option<u32>) {
 }
 
 impl Painter for SvgPainter {
-    fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
+    fn paint<'p>(
+        &self,
+        picture: &'p Picture,
+        out: &mut dyn Write,
+    ) -> Result<PaintStats, PaintError> {
         let checked = check(picture)?;
         let d = self.options.decimals;
         let mut sink = Sink::new(out);
@@ -174,10 +180,57 @@ impl Painter for SvgPainter {
                 group.set(Some(object));
             }
         };
-        let on_run = |run: &[Frag<'_>], key: &([u8; 3], u16, bool, Option<u32>)| {
+        // Flat runs (neither smooth nor textured) wait in a batch and are written in
+        // parallel, each task into a buffer of its own; the buffers then go out in order
+        // (with the groups opened between runs), so the bytes do not depend on the
+        // threads. Anything else first sends the batch out.
+        let batch: RefCell<Vec<FlatRun<'p>>> = RefCell::new(Vec::new());
+        let outline = checked.outline;
+        let send = |sink: &mut Sink<'_>, stats: &mut PaintStats| -> Result<(), PaintError> {
+            let mut batch = batch.borrow_mut();
+            let written: Vec<(Vec<u8>, Vec<usize>, usize)> = batch
+                .par_chunks(RUNS_PER_TASK)
+                .map(|chunk| {
+                    let (mut b, mut ends, mut strokes) = (Vec::new(), Vec::new(), 0);
+                    for r in chunk {
+                        strokes += r.write(&mut b, outline, seams > 0.0, d);
+                        ends.push(b.len());
+                    }
+                    (b, ends, strokes)
+                })
+                .collect();
+            for (chunk, (b, ends, strokes)) in batch.chunks(RUNS_PER_TASK).zip(written) {
+                let mut start = 0;
+                for (r, end) in chunk.iter().zip(ends) {
+                    enter(&mut sink.buf, r.frags[0].src.object);
+                    sink.buf.extend_from_slice(&b[start..end]);
+                    start = end;
+                    sink.maybe_flush()?;
+                }
+                stats.paths += chunk.len();
+                stats.strokes += strokes;
+            }
+            batch.clear();
+            Ok(())
+        };
+        let on_run = |run: &[Frag<'p>], key: &([u8; 3], u16, bool, Option<u32>)| {
             let (rgb, alpha, smooth, texture) = *key;
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
+            if !smooth && texture.is_none() {
+                let mut waiting = batch.borrow_mut();
+                waiting.push(FlatRun {
+                    frags: run.to_vec(),
+                    rgb,
+                    alpha,
+                });
+                if waiting.len() >= RUNS_PER_BATCH {
+                    drop(waiting);
+                    send(&mut sink, &mut stats)?;
+                }
+                return Ok(());
+            }
+            send(&mut sink, &mut stats)?;
             let b = &mut sink.buf;
             enter(b, run[0].src.object);
             if let Some(k) = texture {
@@ -221,6 +274,7 @@ impl Painter for SvgPainter {
         };
         let on_mark = |m: &super::Mark| {
             let mut sink = sink.borrow_mut();
+            send(&mut sink, &mut stats.borrow_mut())?;
             enter(&mut sink.buf, m.object);
             let mut w = SvgMarks {
                 b: &mut sink.buf,
@@ -233,6 +287,7 @@ impl Painter for SvgPainter {
         let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
         let mut sink = sink.into_inner();
         let mut stats = stats.into_inner();
+        send(&mut sink, &mut stats)?;
         stats.approximated += textured.into_inner().approximated;
         if group.get().is_some() {
             sink.buf.extend_from_slice(b"</g>\n");
@@ -242,6 +297,33 @@ impl Painter for SvgPainter {
         stats.clipped += counts.clipped;
         stats.bytes = sink.finish()?;
         Ok(stats)
+    }
+}
+
+/// Flat runs waiting to be written, at most.
+const RUNS_PER_BATCH: usize = 16384;
+
+/// Flat runs written by one parallel task.
+const RUNS_PER_TASK: usize = 512;
+
+/// A run of flat fragments (neither smooth nor textured) waiting to be written.
+struct FlatRun<'a> {
+    frags: Vec<Frag<'a>>,
+    rgb: [u8; 3],
+    alpha: u16,
+}
+
+impl FlatRun<'_> {
+    /// Writes the run's fill and outline; returns the number of strokes (0 or 1).
+    fn write(&self, b: &mut Vec<u8>, outline: Option<Outline>, seams: bool, d: u8) -> usize {
+        write_fill(b, &self.frags, self.rgb, self.alpha, seams, d);
+        match outline.filter(|_| self.frags.iter().any(Frag::has_outline)) {
+            Some(o) => {
+                write_outline(b, &self.frags, o, seams, d);
+                1
+            }
+            None => 0,
+        }
     }
 }
 
