@@ -39,6 +39,7 @@ mod feature_edges;
 mod geom;
 mod marks;
 mod merge;
+mod neighbours;
 mod newell;
 mod occlusion;
 mod options;

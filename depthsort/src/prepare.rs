@@ -8,6 +8,7 @@ use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
+use crate::neighbours::{mesh_edge, MeshEdge, MeshNeighbours};
 use crate::options::{CullMode, OrderError};
 use crate::pieces::{Ctx, Piece, NONE};
 use crate::view::{view_planes, ViewPlanes};
@@ -80,7 +81,11 @@ pub(crate) fn prepare<K: Kernel>(
     // Faces are converted, culled, clipped and projected independently, in parallel, a
     // block at a time (so that the pieces waiting to be added stay few); their pieces are
     // then added in face order, so ids do not depend on the threads.
-    let mut items = Vec::new();
+    let mut items = Vec::with_capacity(scene.faces.len());
+    let mut mesh_edges: Vec<MeshEdge> = Vec::with_capacity(3 * scene.faces.len());
+    // Room for a piece per face and as many again (quads as two triangles, splits): the
+    // pieces are large, and growing the vector copies them all.
+    ctx.pieces.reserve(2 * scene.faces.len());
     ctx.quad_halves = vec![false; scene.faces.len()];
     for block in (0..scene.faces.len()).step_by(FACES_PER_BLOCK) {
         let end = (block + FACES_PER_BLOCK).min(scene.faces.len());
@@ -93,7 +98,7 @@ pub(crate) fn prepare<K: Kernel>(
                     return Ok(None);
                 }
                 let cull_back = closed[scene.faces[fi].object as usize];
-                prepare_face(shared, scene, fi, cull_back, &planes, scratch).map(Some)
+                prepare_face(shared, scene, &canon, fi, cull_back, &planes, scratch).map(Some)
             })
             .collect();
         for (fi, out) in (block..end).zip(outs) {
@@ -109,11 +114,16 @@ pub(crate) fn prepare<K: Kernel>(
             ctx.stats.splits += out.splits;
             ctx.quad_halves[fi] = out.quad_halves;
             let mut kept_any = false;
-            for (piece, in_picture) in out.pieces {
+            let mut ids = out.corner_ids.as_slice();
+            for (piece, in_picture, corners) in out.pieces {
                 let id = ctx.push(piece);
+                let (these, rest) = ids.split_at(corners);
+                ids = rest;
                 if in_picture {
                     kept_any = true;
                     items.push(id);
+                    let m = these.len();
+                    mesh_edges.extend((0..m).map(|i| mesh_edge(these[i], these[(i + 1) % m], id)));
                 }
             }
             whole[fi] = out.intact && kept_any;
@@ -126,6 +136,7 @@ pub(crate) fn prepare<K: Kernel>(
         }
     }
     ctx.stats.polygons = items.len();
+    ctx.neighbours = MeshNeighbours::new(mesh_edges, ctx.pieces.len());
     Ok((items, whole))
 }
 
@@ -149,14 +160,54 @@ struct FaceOut<K: Kernel> {
     splits: usize,
     /// The face is a quad converted into two polygons (sharing a diagonal).
     quad_halves: bool,
-    /// The pieces, each with whether it can be painted inside the picture.
-    pieces: Vec<(Piece<K>, bool)>,
+    /// The pieces, each with whether it can be painted inside the picture and how many
+    /// of `corner_ids` are its corners (0 when not known).
+    pieces: Vec<(Piece<K>, bool, usize)>,
+    /// The canonical vertex ids of the corners of the pieces that were not clipped, one
+    /// piece after another.
+    corner_ids: Vec<u32>,
+}
+
+/// Appends to `ids` the canonical vertex ids of the corners of `poly`, a polygon of face
+/// `fi` as converted (its corners are the face's points, bit for bit); returns how many
+/// it appended, 0 when some corner is not exactly one of the face's points (points equal
+/// in value with different canonical ids, such as `0.0` and `-0.0`, only cost the table
+/// a neighbour).
+fn corner_ids<K: Kernel>(
+    ctx: &Ctx<'_, K>,
+    scene: &Scene,
+    canon: &[u32],
+    fi: usize,
+    poly: &K::Polygon,
+    ids: &mut Vec<u32>,
+) -> usize {
+    let face = &scene.faces[fi];
+    let exact = |v: u32| {
+        let p = ctx.k.point(scene.vertices[v as usize]).ok()?;
+        Some(ctx.k.point_exact(&p))
+    };
+    let start = ids.len();
+    for i in 0..ctx.k.vertex_count(poly) {
+        let found = ctx
+            .k
+            .vertex_exact(poly, i)
+            .and_then(|c| face.vertices.iter().find(|&&v| exact(v) == Some(c)));
+        match found {
+            Some(&v) => ids.push(canon[v as usize]),
+            None => {
+                ids.truncate(start);
+                return 0;
+            }
+        }
+    }
+    ids.len() - start
 }
 
 /// Converts, culls, clips and projects face `fi` (reading the context only).
 fn prepare_face<K: Kernel>(
     ctx: &Ctx<'_, K>,
     scene: &Scene,
+    canon: &[u32],
     fi: usize,
     cull_back: bool,
     planes: &ViewPlanes<K::Plane>,
@@ -173,7 +224,8 @@ fn prepare_face<K: Kernel>(
         intact: true,
         lost_to_near: false,
         splits: 0,
-        pieces: Vec::new(),
+        pieces: Vec::with_capacity(polys.len()),
+        corner_ids: Vec::new(),
     };
     let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
     let mut facing = None;
@@ -198,8 +250,12 @@ fn prepare_face<K: Kernel>(
         let lost = |poly: &K::Polygon| {
             lost_in_view(ctx, poly, &planes.near, planes.eye.as_ref(), &planes.sides)
         };
+        let mut whole = false;
         let poly = match ctx.k.classify(&poly, &planes.near) {
-            PolygonSide::Front => poly,
+            PolygonSide::Front => {
+                whole = true;
+                poly
+            }
             PolygonSide::Spanning => {
                 out.intact = false;
                 out.lost_to_near |= lost(&poly);
@@ -223,7 +279,12 @@ fn prepare_face<K: Kernel>(
             || b.max_y < -1.0
             || b.min_y > h + 1.0
             || !b.min_x.is_finite();
-        out.pieces.push((piece, !outside));
+        let corners = if whole {
+            corner_ids(ctx, scene, canon, fi, &piece.poly, &mut out.corner_ids)
+        } else {
+            0
+        };
+        out.pieces.push((piece, !outside, corners));
     }
     Ok(out)
 }
