@@ -122,17 +122,23 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         fragments
     } else {
         // Each fragment on its own, in parallel chunks joined in order.
-        ordered
+        let chunks: Vec<Vec<PaintFragment>> = ordered
             .fragments
-            .par_iter()
-            .zip(&cover)
-            .with_min_len(FRAGMENTS_PER_TASK)
-            .fold(Vec::new, |mut out, (f, cover)| {
-                compose(scene, style, &view, f, cover.as_ref(), fill_of(f), &mut out);
+            .par_chunks(FRAGMENTS_PER_TASK)
+            .zip(cover.par_chunks(FRAGMENTS_PER_TASK))
+            .map(|(frags, covers)| {
+                let mut out = Vec::with_capacity(frags.len());
+                for (f, cover) in frags.iter().zip(covers) {
+                    compose(scene, style, &view, f, cover.as_ref(), fill_of(f), &mut out);
+                }
                 out
             })
-            .flatten_iter()
-            .collect()
+            .collect();
+        let mut fragments = Vec::with_capacity(chunks.iter().map(Vec::len).sum());
+        for chunk in chunks {
+            fragments.extend(chunk);
+        }
+        fragments
     };
     let fragments = if style.seams.is_finite() && style.seams > 0.0 {
         seam_flaps_indexed(fragments, style.seams, style.flap_join()).0
