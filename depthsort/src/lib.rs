@@ -210,10 +210,6 @@ fn ordered<K: Kernel>(
         None => fragments(&ctx, &order, with_polygons),
         Some(parts) => shadowed_fragments(&mut ctx, &order, parts),
     };
-    // The pieces are many small allocations: they are freed on the pool while the caller
-    // goes on with the fragments.
-    let pieces = std::mem::take(&mut ctx.pieces);
-    rayon::spawn(move || drop(pieces));
     let t3 = Instant::now();
     let mut stats = ctx.stats;
     stats.fragments_out = fragments.len();

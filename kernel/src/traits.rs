@@ -15,11 +15,11 @@ use crate::side::{PolygonSide, Side};
 /// Conventions: a polygon's vertices are counter-clockwise seen from the front of its
 /// supporting plane; edge `i` runs from vertex `i` to vertex `i + 1` (mod n); every edge
 /// knows whether it lies on an edge of the input face ("original") or on a cut.
-pub trait Kernel: Sync + 'static {
-    /// An oriented plane (owning its data, so that it can be dropped on another thread).
-    type Plane: Clone + Send + Sync + std::fmt::Debug + 'static;
-    /// A convex polygon with at least three vertices and non-zero area (owning its data).
-    type Polygon: Clone + Send + Sync + std::fmt::Debug + 'static;
+pub trait Kernel: Sync {
+    /// An oriented plane.
+    type Plane: Clone + Send + Sync + std::fmt::Debug;
+    /// A convex polygon with at least three vertices and non-zero area.
+    type Polygon: Clone + Send + Sync + std::fmt::Debug;
     /// A point, such as the eye (it may lie outside the scene's box).
     type Point: Copy + Send + Sync + std::fmt::Debug;
     /// A point known exactly (an input point or the eye), for [`Kernel::orientation`].
