@@ -39,7 +39,6 @@ mod feature_edges;
 mod geom;
 mod marks;
 mod merge;
-mod neighbours;
 mod newell;
 mod occlusion;
 mod options;

@@ -126,19 +126,14 @@ impl<K: Kernel> Ctx<'_, K> {
         pair
     }
 
-    /// Whether `p` and `q` face the eye alike and are pieces of the two halves of one
-    /// quad (triangles sharing a diagonal) or of two prepared polygons sharing an input
-    /// edge in opposite directions ([`crate::neighbours`]): each one's projection then lies
-    /// on its own side of the projected shared edge, so their projections only touch and
-    /// neither can hide the other. Exact: facing is decided exactly, and nothing else is
-    /// computed.
+    /// Whether `p` and `q` are pieces of the two halves of one quad (triangles sharing a
+    /// diagonal) that face the eye alike: each half's projection then lies on its own side
+    /// of the projected diagonal (both turn the same way, and they run along the diagonal
+    /// in opposite directions), so their projections only touch and neither can hide the
+    /// other. Exact: facing is decided exactly, and nothing else is computed.
     pub fn apart_by_construction(&self, p: u32, q: u32) -> bool {
         let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
-        if pp.eye_front != qq.eye_front {
-            return false;
-        }
-        (pp.face == qq.face && self.quad_halves[pp.face as usize])
-            || self.neighbours.contains(self.root_of(p), self.root_of(q))
+        pp.face == qq.face && pp.eye_front == qq.eye_front && self.quad_halves[pp.face as usize]
     }
 
     /// Whether some corner of `p` projects to exactly the same screen point as a corner

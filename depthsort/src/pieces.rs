@@ -7,7 +7,6 @@ use limn_kernel::{Kernel, PolygonSide, Side};
 use limn_scene::Camera;
 
 use crate::geom::{bbox, Box2};
-use crate::neighbours::MeshNeighbours;
 use crate::options::Stats;
 use crate::rng::SplitMix;
 use crate::view::Eye;
@@ -23,9 +22,6 @@ pub(crate) struct Piece<K: Kernel> {
     pub plane: K::Plane,
     pub face: u32,
     pub parent: u32,
-    /// The prepared polygon this piece was split from ([`NONE`] for a prepared polygon
-    /// itself; see [`Ctx::root_of`]).
-    pub root: u32,
     pub kids: [u32; 2],
     /// The eye lies strictly in front of the supporting plane.
     pub eye_front: bool,
@@ -58,8 +54,6 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     /// Per input face: whether it is a quad given as two triangles that share a diagonal
     /// (a quad not exactly planar as given, or not convex).
     pub quad_halves: Vec<bool>,
-    /// Prepared polygons sharing an input edge in opposite directions.
-    pub neighbours: MeshNeighbours,
     rng: SplitMix,
     scratch: Vec<DVec3>,
 }
@@ -86,19 +80,18 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             limit: usize::MAX,
             exceeded: false,
             quad_halves: Vec::new(),
-            neighbours: MeshNeighbours::default(),
             rng: SplitMix::new(seed),
             scratch: Vec::new(),
         }
     }
 
-    /// The prepared polygon piece `id` was split from (itself for a prepared polygon).
-    #[inline]
-    pub fn root_of(&self, id: u32) -> u32 {
-        match self.pieces[id as usize].root {
-            NONE => id,
-            r => r,
-        }
+    /// A context with the same kernel and view and no pieces: it can make pieces (with
+    /// no parent) while this one is being added to.
+    pub fn reader(&self) -> Self {
+        let mut r = Ctx::new(self.k, self.eye, self.camera, self.vp, 1.0, 0);
+        r.margin = self.margin;
+        r.dmargin = self.dmargin;
+        r
     }
 
     /// A deterministic pseudo-random number.
@@ -155,16 +148,11 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         }
         let dmean = dsum / pts.len().max(1) as f64;
         let bbox = bbox(&pts);
-        let root = match self.pieces.get(parent as usize) {
-            Some(p) if p.root != NONE => p.root,
-            _ => parent,
-        };
         Piece {
             poly,
             plane,
             face,
             parent,
-            root,
             kids: [NONE, NONE],
             eye_front,
             pts,

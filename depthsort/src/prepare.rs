@@ -2,13 +2,14 @@
 //! edge-on (exactly), clip at the near plane (exactly), and drop what lies outside the
 //! picture (conservatively, in floats).
 
+use std::ops::Range;
+
 use glam::DVec3;
 use limn_kernel::Kernel;
 use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
-use crate::neighbours::{mesh_edge, MeshEdge, MeshNeighbours};
 use crate::options::{CullMode, OrderError};
 use crate::pieces::{Ctx, Piece, NONE};
 use crate::view::{view_planes, ViewPlanes};
@@ -82,62 +83,82 @@ pub(crate) fn prepare<K: Kernel>(
     // block at a time (so that the pieces waiting to be added stay few); their pieces are
     // then added in face order, so ids do not depend on the threads.
     let mut items = Vec::with_capacity(scene.faces.len());
-    let mut mesh_edges: Vec<MeshEdge> = Vec::with_capacity(3 * scene.faces.len());
     // Room for a piece per face and as many again (quads as two triangles, splits): the
     // pieces are large, and growing the vector copies them all.
     ctx.pieces.reserve(2 * scene.faces.len());
     ctx.quad_halves = vec![false; scene.faces.len()];
-    for block in (0..scene.faces.len()).step_by(FACES_PER_BLOCK) {
-        let end = (block + FACES_PER_BLOCK).min(scene.faces.len());
-        let shared: &Ctx<'_, K> = ctx;
-        let outs: Vec<Result<Option<FaceOut<K>>, OrderError>> = (block..end)
-            .into_par_iter()
+    // Block k + 1 is prepared on the pool while block k's pieces are added (by a reader
+    // with the same view and no pieces of its own).
+    let reader = ctx.reader();
+    let prepare_block = |r: Range<usize>| -> Vec<Result<Option<FaceOut<K>>, OrderError>> {
+        r.into_par_iter()
             .with_min_len(FACES_PER_TASK)
             .map_init(Vec::new, |scratch, fi| {
                 if hidden[fi] {
                     return Ok(None);
                 }
                 let cull_back = closed[scene.faces[fi].object as usize];
-                prepare_face(shared, scene, &canon, fi, cull_back, &planes, scratch).map(Some)
+                prepare_face(&reader, scene, fi, cull_back, &planes, scratch).map(Some)
             })
-            .collect();
-        for (fi, out) in (block..end).zip(outs) {
-            ctx.stats.faces_in += 1;
-            let Some(out) = out? else {
-                ctx.stats.faces_coincident += 1;
-                continue;
-            };
-            if out.degenerate {
-                ctx.stats.faces_degenerate += 1;
-                continue;
-            }
-            ctx.stats.splits += out.splits;
-            ctx.quad_halves[fi] = out.quad_halves;
-            let mut kept_any = false;
-            let mut ids = out.corner_ids.as_slice();
-            for (piece, in_picture, corners) in out.pieces {
-                let id = ctx.push(piece);
-                let (these, rest) = ids.split_at(corners);
-                ids = rest;
-                if in_picture {
-                    kept_any = true;
-                    items.push(id);
-                    let m = these.len();
-                    mesh_edges.extend((0..m).map(|i| mesh_edge(these[i], these[(i + 1) % m], id)));
-                }
-            }
-            whole[fi] = out.intact && kept_any;
-            ctx.stats.faces_near_clipped += out.lost_to_near as usize;
-            if out.culled_all {
-                ctx.stats.faces_culled += 1;
-            } else if !kept_any {
-                ctx.stats.faces_clipped += 1;
-            }
-        }
+            .collect()
+    };
+    let blocks: Vec<Range<usize>> = (0..scene.faces.len())
+        .step_by(FACES_PER_BLOCK)
+        .map(|b| b..(b + FACES_PER_BLOCK).min(scene.faces.len()))
+        .collect();
+    let mut next = blocks.first().map(|r| prepare_block(r.clone()));
+    for (k, block) in blocks.iter().enumerate() {
+        let outs = next.take().unwrap_or_default();
+        let (added, prepared) = rayon::join(
+            || add_block(ctx, block.clone(), outs, &mut items, &mut whole),
+            || blocks.get(k + 1).map(|r| prepare_block(r.clone())),
+        );
+        added?;
+        next = prepared;
     }
     ctx.stats.polygons = items.len();
-    ctx.neighbours = MeshNeighbours::new(mesh_edges, ctx.pieces.len());
     Ok((items, whole))
+}
+
+/// Adds the pieces of the faces of `block` (`outs`, prepared in parallel) in face order:
+/// their ids, the ids to order, whether each face is whole, and the counts. The first
+/// error in face order is returned.
+fn add_block<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    block: Range<usize>,
+    outs: Vec<Result<Option<FaceOut<K>>, OrderError>>,
+    items: &mut Vec<u32>,
+    whole: &mut [bool],
+) -> Result<(), OrderError> {
+    for (fi, out) in block.zip(outs) {
+        ctx.stats.faces_in += 1;
+        let Some(out) = out? else {
+            ctx.stats.faces_coincident += 1;
+            continue;
+        };
+        if out.degenerate {
+            ctx.stats.faces_degenerate += 1;
+            continue;
+        }
+        ctx.stats.splits += out.splits;
+        ctx.quad_halves[fi] = out.quad_halves;
+        let mut kept_any = false;
+        for (piece, in_picture) in out.pieces {
+            let id = ctx.push(piece);
+            if in_picture {
+                kept_any = true;
+                items.push(id);
+            }
+        }
+        whole[fi] = out.intact && kept_any;
+        ctx.stats.faces_near_clipped += out.lost_to_near as usize;
+        if out.culled_all {
+            ctx.stats.faces_culled += 1;
+        } else if !kept_any {
+            ctx.stats.faces_clipped += 1;
+        }
+    }
+    Ok(())
 }
 
 /// Faces prepared in parallel before their pieces are added, in [`prepare`].
@@ -160,54 +181,14 @@ struct FaceOut<K: Kernel> {
     splits: usize,
     /// The face is a quad converted into two polygons (sharing a diagonal).
     quad_halves: bool,
-    /// The pieces, each with whether it can be painted inside the picture and how many
-    /// of `corner_ids` are its corners (0 when not known).
-    pieces: Vec<(Piece<K>, bool, usize)>,
-    /// The canonical vertex ids of the corners of the pieces that were not clipped, one
-    /// piece after another.
-    corner_ids: Vec<u32>,
-}
-
-/// Appends to `ids` the canonical vertex ids of the corners of `poly`, a polygon of face
-/// `fi` as converted (its corners are the face's points, bit for bit); returns how many
-/// it appended, 0 when some corner is not exactly one of the face's points (points equal
-/// in value with different canonical ids, such as `0.0` and `-0.0`, only cost the table
-/// a neighbour).
-fn corner_ids<K: Kernel>(
-    ctx: &Ctx<'_, K>,
-    scene: &Scene,
-    canon: &[u32],
-    fi: usize,
-    poly: &K::Polygon,
-    ids: &mut Vec<u32>,
-) -> usize {
-    let face = &scene.faces[fi];
-    let exact = |v: u32| {
-        let p = ctx.k.point(scene.vertices[v as usize]).ok()?;
-        Some(ctx.k.point_exact(&p))
-    };
-    let start = ids.len();
-    for i in 0..ctx.k.vertex_count(poly) {
-        let found = ctx
-            .k
-            .vertex_exact(poly, i)
-            .and_then(|c| face.vertices.iter().find(|&&v| exact(v) == Some(c)));
-        match found {
-            Some(&v) => ids.push(canon[v as usize]),
-            None => {
-                ids.truncate(start);
-                return 0;
-            }
-        }
-    }
-    ids.len() - start
+    /// The pieces, each with whether it can be painted inside the picture.
+    pieces: Vec<(Piece<K>, bool)>,
 }
 
 /// Converts, culls, clips and projects face `fi` (reading the context only).
 fn prepare_face<K: Kernel>(
     ctx: &Ctx<'_, K>,
     scene: &Scene,
-    canon: &[u32],
     fi: usize,
     cull_back: bool,
     planes: &ViewPlanes<K::Plane>,
@@ -225,7 +206,6 @@ fn prepare_face<K: Kernel>(
         lost_to_near: false,
         splits: 0,
         pieces: Vec::with_capacity(polys.len()),
-        corner_ids: Vec::new(),
     };
     let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
     let mut facing = None;
@@ -250,12 +230,8 @@ fn prepare_face<K: Kernel>(
         let lost = |poly: &K::Polygon| {
             lost_in_view(ctx, poly, &planes.near, planes.eye.as_ref(), &planes.sides)
         };
-        let mut whole = false;
         let poly = match ctx.k.classify(&poly, &planes.near) {
-            PolygonSide::Front => {
-                whole = true;
-                poly
-            }
+            PolygonSide::Front => poly,
             PolygonSide::Spanning => {
                 out.intact = false;
                 out.lost_to_near |= lost(&poly);
@@ -279,12 +255,7 @@ fn prepare_face<K: Kernel>(
             || b.max_y < -1.0
             || b.min_y > h + 1.0
             || !b.min_x.is_finite();
-        let corners = if whole {
-            corner_ids(ctx, scene, canon, fi, &piece.poly, &mut out.corner_ids)
-        } else {
-            0
-        };
-        out.pieces.push((piece, !outside, corners));
+        out.pieces.push((piece, !outside));
     }
     Ok(out)
 }
