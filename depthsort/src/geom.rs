@@ -80,7 +80,14 @@ pub(crate) fn boxes_meet(a: &Box2, b: &Box2, margin: f64) -> bool {
 /// Whether the convex polygons `a` and `b` are separated by a gap wider than `margin`
 /// along one of their edge normals (the separating axis theorem). `false` means "may
 /// overlap".
+///
+/// Polygons with a common corner (the same `f64` point, as neighbours in a mesh have) are
+/// never separated (the corner lies in both projections on every axis): they are answered
+/// at once, without the axes, which are the dearest case (no axis separates them).
 pub(crate) fn convex_disjoint(a: &[[f64; 2]], b: &[[f64; 2]], margin: f64) -> bool {
+    if a.iter().any(|p| b.contains(p)) {
+        return false;
+    }
     separated_by_edges_of(a, b, margin) || separated_by_edges_of(b, a, margin)
 }
 
@@ -127,6 +134,17 @@ mod tests {
         assert!(!convex_disjoint(&a, &b, 1e-9));
         assert!(convex_disjoint(&a, &c, 1e-9));
         assert!(!convex_disjoint(&a, &c, 1.0));
+    }
+
+    #[test]
+    fn polygons_with_a_common_corner_are_never_disjoint() {
+        let a = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        let b = [[1.0, 0.0], [2.0, 0.0], [2.0, 1.0]];
+        assert!(!convex_disjoint(&a, &b, 1e-9));
+        assert!(!convex_disjoint(&b, &a, 0.0));
+        // The same triangles a hair apart are.
+        let c = [[1.0 + 1e-6, 0.0], [2.0, 0.0], [2.0, 1.0]];
+        assert!(convex_disjoint(&a, &c, 1e-9));
     }
 
     #[test]

@@ -54,6 +54,7 @@ use std::time::Instant;
 use glam::DVec3;
 use limn_kernel::{ExactKernel, FloatKernel, Kernel};
 use limn_scene::{Camera, LightSet, Scene};
+use rayon::prelude::*;
 
 pub use crate::feature_edges::{feature_edges, EdgeKind, FeatureEdge};
 pub use crate::marks::{
@@ -106,8 +107,10 @@ pub fn order(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Orde
         return Ok(empty(scene, camera));
     };
     match opts.arith {
-        Arith::Exact => ordered(&ExactKernel::new(), scene, camera, opts).map(|(o, _)| o),
-        Arith::Float => ordered(&FloatKernel::new(lo, hi)?, scene, camera, opts).map(|(o, _)| o),
+        Arith::Exact => ordered(&ExactKernel::new(), scene, camera, opts, false).map(|(o, _)| o),
+        Arith::Float => {
+            ordered(&FloatKernel::new(lo, hi)?, scene, camera, opts, false).map(|(o, _)| o)
+        }
     }
 }
 
@@ -119,7 +122,8 @@ pub fn order_with<K: Kernel>(
     camera: &Camera,
     opts: &OrderOptions,
 ) -> Result<Ordered, OrderError> {
-    order_polygons(kernel, scene, camera, opts).map(|(o, _)| o)
+    validate(scene, camera)?;
+    ordered(kernel, scene, camera, opts, false).map(|(o, _)| o)
 }
 
 /// Like [`order_with`], and also returns the kernel polygon of every fragment (same
@@ -131,7 +135,7 @@ pub fn order_polygons<K: Kernel>(
     opts: &OrderOptions,
 ) -> Result<(Ordered, Vec<K::Polygon>), OrderError> {
     validate(scene, camera)?;
-    ordered(kernel, scene, camera, opts)
+    ordered(kernel, scene, camera, opts, true)
 }
 
 /// The input checks every entry point makes once.
@@ -154,12 +158,14 @@ fn empty(scene: &Scene, camera: &Camera) -> Ordered {
     }
 }
 
-/// The pipeline on validated input: prepare, order, merge, build the fragments.
+/// The pipeline on validated input: prepare, order, merge, build the fragments (and,
+/// when `with_polygons`, copies of their kernel polygons; otherwise the vector is empty).
 fn ordered<K: Kernel>(
     kernel: &K,
     scene: &Scene,
     camera: &Camera,
     opts: &OrderOptions,
+    with_polygons: bool,
 ) -> Result<(Ordered, Vec<K::Polygon>), OrderError> {
     let t0 = Instant::now();
     let fallbacks0 = kernel.fallbacks();
@@ -200,7 +206,7 @@ fn ordered<K: Kernel>(
         Some(parts)
     };
     let (fragments, polys) = match parts {
-        None => fragments(&ctx, &order),
+        None => fragments(&ctx, &order, with_polygons),
         Some(parts) => shadowed_fragments(&mut ctx, &order, parts),
     };
     let t3 = Instant::now();
@@ -232,28 +238,55 @@ fn sort<K: Kernel>(ctx: &mut Ctx<'_, K>, items: Vec<u32>, opts: &OrderOptions) -
     }
 }
 
-/// The output fragments (and their kernel polygons) of the pieces in `order`.
-fn fragments<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> (Vec<Fragment>, Vec<K::Polygon>) {
-    let mut fragments = Vec::with_capacity(order.len());
-    let mut polys = Vec::with_capacity(order.len());
-    for &id in order {
-        let p = &ctx.pieces[id as usize];
-        let mut world = Vec::with_capacity(p.pts.len());
-        ctx.k.vertices_world(&p.poly, &mut world);
-        let original_edges = (0..world.len())
-            .map(|i| ctx.k.edge_is_original(&p.poly, i))
-            .collect();
-        fragments.push(Fragment {
-            face: p.face,
-            points: p.pts.clone(),
-            world,
-            original_edges,
-            shadowed: LightSet::EMPTY,
-        });
-        polys.push(p.poly.clone());
-    }
+/// The output fragments of the pieces in `order` (built in parallel, in order), and
+/// copies of their kernel polygons when `with_polygons` (else an empty vector).
+fn fragments<K: Kernel>(
+    ctx: &Ctx<'_, K>,
+    order: &[u32],
+    with_polygons: bool,
+) -> (Vec<Fragment>, Vec<K::Polygon>) {
+    let fragments = order
+        .par_iter()
+        .with_min_len(FRAGMENTS_PER_TASK)
+        .map(|&id| {
+            let p = &ctx.pieces[id as usize];
+            let mut world = Vec::with_capacity(p.pts.len());
+            ctx.k.vertices_world(&p.poly, &mut world);
+            // The piece's projected points, computed again as `Ctx::piece` computed
+            // them (the same bits) instead of copied.
+            let points = world
+                .iter()
+                .map(|&w| {
+                    let pr = ctx.camera.project_with(&ctx.vp, w);
+                    [pr.x, pr.y]
+                })
+                .collect();
+            let original_edges = (0..world.len())
+                .map(|i| ctx.k.edge_is_original(&p.poly, i))
+                .collect();
+            Fragment {
+                face: p.face,
+                points,
+                world,
+                original_edges,
+                shadowed: LightSet::EMPTY,
+            }
+        })
+        .collect();
+    let polys = if with_polygons {
+        order
+            .iter()
+            .map(|&id| ctx.pieces[id as usize].poly.clone())
+            .collect()
+    } else {
+        Vec::new()
+    };
     (fragments, polys)
 }
+
+/// Fragments built by one parallel task at least (smaller tasks cost more to hand out
+/// than they save).
+const FRAGMENTS_PER_TASK: usize = 1024;
 
 /// [`fragments`] with each piece of `order` replaced by its shadow parts (in order).
 fn shadowed_fragments<K: Kernel>(

@@ -85,6 +85,15 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         }
     }
 
+    /// A context with the same kernel and view and no pieces: it can make pieces (with
+    /// no parent) while this one is being added to.
+    pub fn reader(&self) -> Self {
+        let mut r = Ctx::new(self.k, self.eye, self.camera, self.vp, 1.0, 0);
+        r.margin = self.margin;
+        r.dmargin = self.dmargin;
+        r
+    }
+
     /// A deterministic pseudo-random number.
     pub fn next_random(&mut self) -> u64 {
         self.rng.next_u64()

@@ -2,6 +2,8 @@
 //! edge-on (exactly), clip at the near plane (exactly), and drop what lies outside the
 //! picture (conservatively, in floats).
 
+use std::ops::Range;
+
 use glam::DVec3;
 use limn_kernel::Kernel;
 use limn_kernel::{PolygonSide, Side};
@@ -80,53 +82,83 @@ pub(crate) fn prepare<K: Kernel>(
     // Faces are converted, culled, clipped and projected independently, in parallel, a
     // block at a time (so that the pieces waiting to be added stay few); their pieces are
     // then added in face order, so ids do not depend on the threads.
-    let mut items = Vec::new();
+    let mut items = Vec::with_capacity(scene.faces.len());
+    // Room for a piece per face and as many again (quads as two triangles, splits): the
+    // pieces are large, and growing the vector copies them all.
+    ctx.pieces.reserve(2 * scene.faces.len());
     ctx.quad_halves = vec![false; scene.faces.len()];
-    for block in (0..scene.faces.len()).step_by(FACES_PER_BLOCK) {
-        let end = (block + FACES_PER_BLOCK).min(scene.faces.len());
-        let shared: &Ctx<'_, K> = ctx;
-        let outs: Vec<Result<Option<FaceOut<K>>, OrderError>> = (block..end)
-            .into_par_iter()
+    // Block k + 1 is prepared on the pool while block k's pieces are added (by a reader
+    // with the same view and no pieces of its own).
+    let reader = ctx.reader();
+    let prepare_block = |r: Range<usize>| -> Vec<Result<Option<FaceOut<K>>, OrderError>> {
+        r.into_par_iter()
             .with_min_len(FACES_PER_TASK)
             .map_init(Vec::new, |scratch, fi| {
                 if hidden[fi] {
                     return Ok(None);
                 }
                 let cull_back = closed[scene.faces[fi].object as usize];
-                prepare_face(shared, scene, fi, cull_back, &planes, scratch).map(Some)
+                prepare_face(&reader, scene, fi, cull_back, &planes, scratch).map(Some)
             })
-            .collect();
-        for (fi, out) in (block..end).zip(outs) {
-            ctx.stats.faces_in += 1;
-            let Some(out) = out? else {
-                ctx.stats.faces_coincident += 1;
-                continue;
-            };
-            if out.degenerate {
-                ctx.stats.faces_degenerate += 1;
-                continue;
-            }
-            ctx.stats.splits += out.splits;
-            ctx.quad_halves[fi] = out.quad_halves;
-            let mut kept_any = false;
-            for (piece, in_picture) in out.pieces {
-                let id = ctx.push(piece);
-                if in_picture {
-                    kept_any = true;
-                    items.push(id);
-                }
-            }
-            whole[fi] = out.intact && kept_any;
-            ctx.stats.faces_near_clipped += out.lost_to_near as usize;
-            if out.culled_all {
-                ctx.stats.faces_culled += 1;
-            } else if !kept_any {
-                ctx.stats.faces_clipped += 1;
-            }
-        }
+            .collect()
+    };
+    let blocks: Vec<Range<usize>> = (0..scene.faces.len())
+        .step_by(FACES_PER_BLOCK)
+        .map(|b| b..(b + FACES_PER_BLOCK).min(scene.faces.len()))
+        .collect();
+    let mut next = blocks.first().map(|r| prepare_block(r.clone()));
+    for (k, block) in blocks.iter().enumerate() {
+        let outs = next.take().unwrap_or_default();
+        let (added, prepared) = rayon::join(
+            || add_block(ctx, block.clone(), outs, &mut items, &mut whole),
+            || blocks.get(k + 1).map(|r| prepare_block(r.clone())),
+        );
+        added?;
+        next = prepared;
     }
     ctx.stats.polygons = items.len();
     Ok((items, whole))
+}
+
+/// Adds the pieces of the faces of `block` (`outs`, prepared in parallel) in face order:
+/// their ids, the ids to order, whether each face is whole, and the counts. The first
+/// error in face order is returned.
+fn add_block<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    block: Range<usize>,
+    outs: Vec<Result<Option<FaceOut<K>>, OrderError>>,
+    items: &mut Vec<u32>,
+    whole: &mut [bool],
+) -> Result<(), OrderError> {
+    for (fi, out) in block.zip(outs) {
+        ctx.stats.faces_in += 1;
+        let Some(out) = out? else {
+            ctx.stats.faces_coincident += 1;
+            continue;
+        };
+        if out.degenerate {
+            ctx.stats.faces_degenerate += 1;
+            continue;
+        }
+        ctx.stats.splits += out.splits;
+        ctx.quad_halves[fi] = out.quad_halves;
+        let mut kept_any = false;
+        for (piece, in_picture) in out.pieces {
+            let id = ctx.push(piece);
+            if in_picture {
+                kept_any = true;
+                items.push(id);
+            }
+        }
+        whole[fi] = out.intact && kept_any;
+        ctx.stats.faces_near_clipped += out.lost_to_near as usize;
+        if out.culled_all {
+            ctx.stats.faces_culled += 1;
+        } else if !kept_any {
+            ctx.stats.faces_clipped += 1;
+        }
+    }
+    Ok(())
 }
 
 /// Faces prepared in parallel before their pieces are added, in [`prepare`].
@@ -173,7 +205,7 @@ fn prepare_face<K: Kernel>(
         intact: true,
         lost_to_near: false,
         splits: 0,
-        pieces: Vec::new(),
+        pieces: Vec::with_capacity(polys.len()),
     };
     let (w, h) = (ctx.camera.width as f64, ctx.camera.height as f64);
     let mut facing = None;

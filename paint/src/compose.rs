@@ -7,7 +7,8 @@ use std::collections::HashMap;
 use glam::DVec3;
 use limn_scene::{shade_face, shade_face_in_shadow, FaceTexcoords, Scene, Shading};
 
-use limn_depthsort::Ordered;
+use limn_depthsort::{Fragment, Ordered};
+use rayon::prelude::*;
 
 use crate::covers::covers;
 use crate::phong::DEFAULT_TOLERANCE;
@@ -77,109 +78,68 @@ impl Style {
 /// lit colour (as OpenGL's modulate: for `illum 0` exactly `Kd` times the texture).
 pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     let cam = &ordered.camera;
-    let mut cache: Vec<Option<[f64; 4]>> = vec![None; scene.faces.len()];
+    let fills = face_fills(scene, ordered);
     let cover = covers(scene, ordered);
-    let mut fragments = Vec::with_capacity(ordered.fragments.len());
-    let mut view: Option<View<'_>> = None;
+    let view = View {
+        camera: cam,
+        vp: cam.view_projection(ordered.near, ordered.far),
+        tolerance: style.tolerance,
+    };
+    let fill_of = |f: &Fragment| match fills[f.face as usize] {
+        Some(fill) if f.shadowed.is_empty() => fill,
+        _ => {
+            let c = shade_face_in_shadow(scene, f.face, cam.eye, f.shadowed);
+            [c[0], c[1], c[2], opacity(scene, f.face)]
+        }
+    };
     // Textures cost nothing unless some material has one.
     let any_texture = scene.materials.iter().any(|m| m.texture.is_some());
     let mut textures = TextureTable::default();
-    let mut face_textures: HashMap<u32, Option<FaceTexture>> = HashMap::new();
-    let projector = any_texture.then(|| Projector {
-        camera: cam,
-        vp: cam.view_projection(ordered.near, ordered.far),
-    });
-    for (f, cover) in ordered.fragments.iter().zip(&cover) {
-        let face = &scene.faces[f.face as usize];
-        let opacity = || {
-            scene.materials[face.material as usize]
-                .opacity
-                .clamp(0.0, 1.0)
+    let fragments = if any_texture {
+        // Texture indices are given in order of first use: one fragment after another.
+        let mut fragments = Vec::with_capacity(ordered.fragments.len());
+        let mut face_textures: HashMap<u32, Option<FaceTexture>> = HashMap::new();
+        let projector = Projector {
+            camera: cam,
+            vp: view.vp,
         };
-        let fill = if f.shadowed.is_empty() {
-            *cache[f.face as usize].get_or_insert_with(|| {
-                let c = shade_face(scene, f.face, cam.eye);
-                [c[0], c[1], c[2], opacity()]
-            })
-        } else {
-            let c = shade_face_in_shadow(scene, f.face, cam.eye, f.shadowed);
-            [c[0], c[1], c[2], opacity()]
-        };
-        // An opaque face's first piece is painted as the whole polygon (see `covers`);
-        // translucent faces must not be painted twice.
-        let use_cover = fill[3] >= 1.0 && style.seamless && cover.is_some();
-        let (points, original_edges) = match cover {
-            Some(c) if use_cover => (c.clone(), vec![true; c.len()]),
-            _ => (f.points.clone(), f.original_edges.clone()),
-        };
-        let m = &scene.materials[face.material as usize];
-        if let Some(projector) = &projector {
+        for (f, cover) in ordered.fragments.iter().zip(&cover) {
+            let fill = fill_of(f);
             let tex = face_textures.entry(f.face).or_insert_with(|| {
                 let ft = FaceTexcoords::new(scene, f.face)?;
                 let index = textures.index_of(ft.texture());
-                Some(FaceTexture::new(&ft, index, projector))
+                Some(FaceTexture::new(&ft, index, &projector))
             });
-            if let Some(tex) = tex {
-                let world: Vec<DVec3> = if use_cover {
-                    face.vertices
-                        .iter()
-                        .map(|&v| scene.vertices[v as usize])
-                        .collect()
-                } else {
-                    f.world.clone()
-                };
-                let frag = PaintFragment {
-                    points,
-                    fill,
-                    vertex_colors: None,
-                    face: f.face,
-                    object: face.object,
-                    original_edges,
-                    texture: None,
-                };
-                tex.apply(frag, &world, projector, &mut fragments);
-                continue;
+            match tex {
+                Some(tex) => {
+                    let (frag, use_cover) = flat_fragment(scene, style, f, cover.as_ref(), fill);
+                    let world = world_of(scene, f, use_cover);
+                    tex.apply(frag, &world, &projector, &mut fragments);
+                }
+                None => compose(scene, style, &view, f, cover.as_ref(), fill, &mut fragments),
             }
         }
-        let shading = if style.smooth {
-            Shading::of_face(scene.shading, face, m)
-        } else {
-            Shading::Flat
-        };
-        let mut frag = PaintFragment {
-            points,
-            fill,
-            vertex_colors: None,
-            face: f.face,
-            object: face.object,
-            original_edges,
-            texture: None,
-        };
-        if shading == Shading::Flat {
-            fragments.push(frag);
-            continue;
+        fragments
+    } else {
+        // Each fragment on its own, in parallel chunks joined in order.
+        let chunks: Vec<Vec<PaintFragment>> = ordered
+            .fragments
+            .par_chunks(FRAGMENTS_PER_TASK)
+            .zip(cover.par_chunks(FRAGMENTS_PER_TASK))
+            .map(|(frags, covers)| {
+                let mut out = Vec::with_capacity(frags.len());
+                for (f, cover) in frags.iter().zip(covers) {
+                    compose(scene, style, &view, f, cover.as_ref(), fill_of(f), &mut out);
+                }
+                out
+            })
+            .collect();
+        let mut fragments = Vec::with_capacity(chunks.iter().map(Vec::len).sum());
+        for chunk in chunks {
+            fragments.extend(chunk);
         }
-        let world: Vec<DVec3> = if use_cover {
-            face.vertices
-                .iter()
-                .map(|&v| scene.vertices[v as usize])
-                .collect()
-        } else {
-            f.world.clone()
-        };
-        let light = FaceLight::new(scene, f.face).in_shadow_of(f.shadowed);
-        if shading == Shading::Phong && world.len() == frag.points.len() {
-            let view = view.get_or_insert_with(|| View {
-                camera: cam,
-                vp: cam.view_projection(ordered.near, ordered.far),
-                tolerance: style.tolerance,
-            });
-            light.phong(&frag, &world, view, &mut fragments);
-        } else {
-            frag.vertex_colors = Some(light.vertex_colors(&world, cam.eye, fill[3]));
-            fragments.push(frag);
-        }
-    }
+        fragments
+    };
     let fragments = if style.seams.is_finite() && style.seams > 0.0 {
         seam_flaps_indexed(fragments, style.seams, style.flap_join()).0
     } else {
@@ -195,5 +155,162 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         seams: 0.0,
         marks: Vec::new(),
         textures: textures.list,
+    }
+}
+
+/// Fragments composed by one parallel task at least.
+const FRAGMENTS_PER_TASK: usize = 1024;
+
+/// A face's opacity, clamped to [0, 1].
+fn opacity(scene: &Scene, face: u32) -> f64 {
+    let face = &scene.faces[face as usize];
+    scene.materials[face.material as usize]
+        .opacity
+        .clamp(0.0, 1.0)
+}
+
+/// Per face: its flat colour and opacity, shaded once (in parallel) for the faces that
+/// have a fragment in no shadow; `None` for the others.
+fn face_fills(scene: &Scene, ordered: &Ordered) -> Vec<Option<[f64; 4]>> {
+    let mut wanted = vec![false; scene.faces.len()];
+    for f in &ordered.fragments {
+        if f.shadowed.is_empty() {
+            wanted[f.face as usize] = true;
+        }
+    }
+    let eye = ordered.camera.eye;
+    wanted
+        .par_iter()
+        .enumerate()
+        .with_min_len(FRAGMENTS_PER_TASK)
+        .map(|(face, &wanted)| {
+            wanted.then(|| {
+                let c = shade_face(scene, face as u32, eye);
+                [c[0], c[1], c[2], opacity(scene, face as u32)]
+            })
+        })
+        .collect()
+}
+
+/// The flat paint fragment of `f` with `fill` (its whole face when it is an opaque
+/// face's cover), and whether the cover was used.
+fn flat_fragment(
+    scene: &Scene,
+    style: &Style,
+    f: &Fragment,
+    cover: Option<&Vec<[f64; 2]>>,
+    fill: [f64; 4],
+) -> (PaintFragment, bool) {
+    let face = &scene.faces[f.face as usize];
+    // An opaque face's first piece is painted as the whole polygon (see `covers`);
+    // translucent faces must not be painted twice.
+    let use_cover = fill[3] >= 1.0 && style.seamless && cover.is_some();
+    let (points, original_edges) = match cover {
+        Some(c) if use_cover => (c.clone(), vec![true; c.len()]),
+        _ => (f.points.clone(), f.original_edges.clone()),
+    };
+    let frag = PaintFragment {
+        points,
+        fill,
+        vertex_colors: None,
+        face: f.face,
+        object: face.object,
+        original_edges,
+        texture: None,
+    };
+    (frag, use_cover)
+}
+
+/// The world points of `f`'s paint fragment: its face's corners when painted as the
+/// cover, else its own.
+fn world_of(scene: &Scene, f: &Fragment, use_cover: bool) -> Vec<DVec3> {
+    if use_cover {
+        scene.faces[f.face as usize]
+            .vertices
+            .iter()
+            .map(|&v| scene.vertices[v as usize])
+            .collect()
+    } else {
+        f.world.clone()
+    }
+}
+
+/// Pushes the paint fragments of `f` (not textured) onto `out`: one flat or Gouraud
+/// fragment, or Phong's triangles.
+fn compose(
+    scene: &Scene,
+    style: &Style,
+    view: &View<'_>,
+    f: &Fragment,
+    cover: Option<&Vec<[f64; 2]>>,
+    fill: [f64; 4],
+    out: &mut Vec<PaintFragment>,
+) {
+    let face = &scene.faces[f.face as usize];
+    let m = &scene.materials[face.material as usize];
+    let shading = if style.smooth {
+        Shading::of_face(scene.shading, face, m)
+    } else {
+        Shading::Flat
+    };
+    let (mut frag, use_cover) = flat_fragment(scene, style, f, cover, fill);
+    if shading == Shading::Flat {
+        out.push(frag);
+        return;
+    }
+    let world = world_of(scene, f, use_cover);
+    let light = FaceLight::new(scene, f.face).in_shadow_of(f.shadowed);
+    if shading == Shading::Phong && world.len() == frag.points.len() {
+        light.phong(&frag, &world, view, out);
+    } else {
+        frag.vertex_colors = Some(light.vertex_colors(&world, view.camera.eye, fill[3]));
+        out.push(frag);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+    use limn_depthsort::{order, OrderOptions};
+    use limn_scene::{shapes, Camera, Material, Scene, Shading};
+
+    use super::*;
+
+    /// An icosphere of 5,120 Gouraud-normalled triangles (a few translucent) beside a flat
+    /// one, under `shading`.
+    fn spheres(shading: Shading) -> Scene {
+        let mut s = Scene::default();
+        let m = s.add_material(Material::diffuse("lit", [0.7, 0.6, 0.5]));
+        let mut glass = Material::diffuse("glass", [0.9, 0.9, 0.9]);
+        glass.opacity = 0.5;
+        let g = s.add_material(glass);
+        let o = s.add_object("spheres");
+        shapes::icosphere(&mut s, DVec3::ZERO, 1.0, 4, m, o).unwrap();
+        shapes::icosphere(&mut s, DVec3::new(1.5, 0.2, 0.3), 0.6, 2, g, o).unwrap();
+        for f in s.faces.iter_mut().step_by(3) {
+            f.normals = None;
+        }
+        s.shading = Some(shading);
+        s
+    }
+
+    #[test]
+    fn the_picture_does_not_depend_on_the_number_of_threads() {
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            let scene = spheres(shading);
+            let camera = Camera::framing(&scene, 320, 240).unwrap();
+            let ordered = order(&scene, &camera, &OrderOptions::default()).unwrap();
+            assert!(ordered.fragments.len() > 4 * FRAGMENTS_PER_TASK);
+            let on = |threads: usize| {
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(threads)
+                    .build()
+                    .unwrap()
+                    .install(|| picture(&scene, &ordered, &Style::default()))
+            };
+            let one = on(1);
+            assert!(one.fragments.len() >= ordered.fragments.len());
+            assert_eq!(one, on(4), "{shading:?}");
+        }
     }
 }
