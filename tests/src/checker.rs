@@ -109,7 +109,8 @@ fn clip_convex(subject: &[P2], clip: &[P2]) -> Vec<P2> {
 
 /// The exact painter's checker for one view.
 pub struct Checker {
-    eye: P3,
+    /// The eye; `None` for an eye at infinity (a parallel projection along `v`).
+    eye: Option<P3>,
     u: P3,
     w: P3,
     v: P3,
@@ -122,6 +123,18 @@ impl Checker {
     pub fn new(eye: P3, forward: [f64; 3]) -> Checker {
         let scale = forward.iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let v: P3 = forward.map(|c| qi((c / scale * (1u64 << 20) as f64).round() as i64));
+        Self::with_axes(Some(eye), v, forward)
+    }
+
+    /// A checker for a parallel projection: the eye at infinity in direction `toward`
+    /// (from the scene towards the viewer), taken exactly as given; rays run along
+    /// `−toward`.
+    pub fn toward(toward: [f64; 3]) -> Checker {
+        let v: P3 = toward.map(|c| -q(c));
+        Self::with_axes(None, v, toward)
+    }
+
+    fn with_axes(eye: Option<P3>, v: P3, forward: [f64; 3]) -> Checker {
         let axis: P3 =
             if forward[0].abs() <= forward[1].abs() && forward[0].abs() <= forward[2].abs() {
                 [qi(1), qi(0), qi(0)]
@@ -146,7 +159,10 @@ impl Checker {
     }
 
     fn project(&self, p: &P3) -> P2 {
-        let d = sub(p, &self.eye);
+        let Some(eye) = &self.eye else {
+            return [dot(p, &self.u), dot(p, &self.w)];
+        };
+        let d = sub(p, eye);
         let den = dot(&d, &self.v);
         assert!(
             den.is_positive(),
@@ -155,8 +171,12 @@ impl Checker {
         [dot(&d, &self.u) / &den, dot(&d, &self.w) / &den]
     }
 
+    /// The direction of the ray from the eye through screen point `s`; for an eye at
+    /// infinity, the point of the ray on the plane through the origin across `v` (every
+    /// ray runs along `v`).
     fn ray(&self, s: &P2) -> P3 {
-        let x = [s[0].clone(), s[1].clone(), qi(1)];
+        let last = if self.eye.is_some() { qi(1) } else { qi(0) };
+        let x = [s[0].clone(), s[1].clone(), last];
         [
             dot(&self.inv[0], &x),
             dot(&self.inv[1], &x),
@@ -164,13 +184,18 @@ impl Checker {
         ]
     }
 
-    /// Ray parameter where the ray `r` from the eye meets the plane of `verts`.
+    /// Ray parameter where the ray `r` (see [`Checker::ray`]) meets the plane of
+    /// `verts`: smaller is nearer the eye.
     fn hit(&self, verts: &[P3], n: &P3, r: &P3) -> Option<Q> {
-        let den = dot(n, r);
+        let (origin, dir) = match &self.eye {
+            Some(eye) => (eye, r),
+            None => (r, &self.v),
+        };
+        let den = dot(n, dir);
         if den.is_zero() {
             return None;
         }
-        let num = dot(n, &sub(&verts[0], &self.eye));
+        let num = dot(n, &sub(&verts[0], origin));
         Some(num / den)
     }
 
@@ -356,5 +381,26 @@ mod tests {
         };
         assert!(!c.violations(&[a.clone(), b.clone()]).is_empty());
         assert!(!c.violations(&[b, a]).is_empty());
+    }
+
+    #[test]
+    fn a_parallel_view_is_checked_along_its_direction() {
+        let rect = |x0: f64, x1: f64, z: f64, face: u32| ExactFragment {
+            face,
+            verts: vec![p(x0, -1.0, z), p(x1, -1.0, z), p(x1, 1.0, z), p(x0, 1.0, z)],
+        };
+        // Seen along (−1, 0, −1), the upper rectangle covers x in [1, 1.5] of the lower
+        // one; seen from the point (0, 0, 5) straight down, they do not overlap.
+        let (upper, lower) = (rect(2.0, 3.0, 1.0, 0), rect(0.5, 1.5, 0.0, 1));
+        let parallel = Checker::toward([1.0, 0.0, 1.0]);
+        assert!(parallel
+            .violations(&[lower.clone(), upper.clone()])
+            .is_empty());
+        assert_eq!(
+            parallel.violations(&[upper.clone(), lower.clone()]).len(),
+            1
+        );
+        let point = Checker::new(p(0.0, 0.0, 5.0), [0.0, 0.0, -1.0]);
+        assert!(point.violations(&[upper, lower]).is_empty());
     }
 }

@@ -4,7 +4,7 @@
 use glam::DVec3;
 use limn_depthsort::{order_polygons, OrderError, OrderOptions, Ordered};
 use limn_kernel::{ExactKernel, ExactPolygon, Plane, PlaneDef};
-use limn_scene::{Camera, Scene};
+use limn_scene::{Camera, Scene, Viewpoint};
 use num_traits::Zero;
 
 use crate::checker::{Checker, ExactFragment, P3, Q};
@@ -148,9 +148,12 @@ pub fn try_exact_run(
             verts: exact_vertices(p),
         })
         .collect();
-    let eye: P3 = qp(camera.eye.to_array());
     let fwd: DVec3 = ordered.camera.forward();
-    let checker = Checker::new(eye, fwd.to_array());
+    // A parallel projection is checked along its own direction, exactly.
+    let checker = match ordered.camera.viewpoint() {
+        Ok(Viewpoint::Toward(d)) => Checker::toward(d.to_array()),
+        _ => Checker::new(qp(camera.eye.to_array()), fwd.to_array()),
+    };
     Ok(ExactRun {
         ordered,
         fragments,
