@@ -101,6 +101,12 @@ fn ms(v: f64) -> String {
     }
 }
 
+/// The allocator: ordering and composing make and free millions of small vectors
+/// on both cores, where mimalloc's per-thread heaps cost less than the system
+/// allocator's (BENCHMARKS.md, "Allocator").
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() -> Result<()> {
     let a = match Cli::parse().command {
         Cmd::Table(a) => a,
