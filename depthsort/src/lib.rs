@@ -43,6 +43,7 @@ mod newell;
 mod occlusion;
 mod options;
 mod pieces;
+mod piercing;
 mod prepare;
 mod rng;
 mod shadows;
