@@ -35,6 +35,7 @@ mod adaptive;
 mod broad;
 mod bsp;
 mod coincident;
+mod components;
 mod feature_edges;
 mod geom;
 mod marks;
