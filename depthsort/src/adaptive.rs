@@ -137,7 +137,7 @@ fn order_set<K: Kernel>(
 
 /// Sets larger than this are probed ([`cycles_everywhere`]) before being analysed.
 const PROBE_MIN: usize = 256;
-/// Members of a set probed by [`cycles_everywhere`].
+/// Members of a set probed by [`cycles_everywhere`] (a power of two).
 const PROBE_SAMPLE: usize = 64;
 
 /// Whether the occlusion graph of `set` is, as measured on a sample, certain to be one
@@ -146,8 +146,10 @@ const PROBE_SAMPLE: usize = 64;
 /// when a piece is in conflict with one other piece or more on average, the conflicts
 /// form a giant connected part, as in a random graph of that mean degree, and so does the
 /// occlusion graph's largest component. The mean is measured on [`PROBE_SAMPLE`] evenly
-/// spaced members against the whole set (in parallel; the count does not depend on the
-/// threads).
+/// spaced members against the whole set, [`PROBE_BLOCK`] members at a time (in parallel),
+/// spread over the set in bit-reversed order; the count stops as soon as it reaches the
+/// answer, which is the same as counting them all (the count only grows), on any number
+/// of threads.
 fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
     let n = set.len();
     let m = ctx.margin;
@@ -155,25 +157,36 @@ fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
         .iter()
         .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
         .collect();
-    let conflicts: usize = (0..PROBE_SAMPLE)
-        .into_par_iter()
-        .map(|k| {
-            let a = k * n / PROBE_SAMPLE;
-            let (p, bp) = (set[a], &boxes[a]);
-            let pp = &ctx.pieces[p as usize];
-            (0..n)
-                .filter(|&b| {
-                    let q = set[b];
-                    b != a
-                        && boxes_meet(bp, &boxes[b], 0.0)
-                        && !convex_disjoint(&pp.pts, &ctx.pieces[q as usize].pts, m)
-                        && ctx.pair(p, q) == Pair::Conflict
-                })
-                .count()
-        })
-        .sum();
-    conflicts >= PROBE_SAMPLE
+    let conflicts_of = |k: usize| {
+        let a = k * n / PROBE_SAMPLE;
+        let (p, bp) = (set[a], &boxes[a]);
+        let pp = &ctx.pieces[p as usize];
+        (0..n)
+            .filter(|&b| {
+                let q = set[b];
+                b != a
+                    && boxes_meet(bp, &boxes[b], 0.0)
+                    && !convex_disjoint(&pp.pts, &ctx.pieces[q as usize].pts, m)
+                    && ctx.pair(p, q) == Pair::Conflict
+            })
+            .count()
+    };
+    let spread = |j: usize| j.reverse_bits() >> (usize::BITS - PROBE_SAMPLE.trailing_zeros());
+    let mut conflicts = 0;
+    for block in (0..PROBE_SAMPLE).step_by(PROBE_BLOCK) {
+        conflicts += (block..block + PROBE_BLOCK)
+            .into_par_iter()
+            .map(|j| conflicts_of(spread(j)))
+            .sum::<usize>();
+        if conflicts >= PROBE_SAMPLE {
+            return true;
+        }
+    }
+    false
 }
+
+/// Members of the probe of [`cycles_everywhere`] tested between two looks at the count.
+const PROBE_BLOCK: usize = 8;
 
 /// Whether analysing `set`, a part of a split component (testing its candidate pairs), is
 /// expected to cost less than finishing it by BSP, and the density of candidate pairs
