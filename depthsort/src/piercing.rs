@@ -129,4 +129,82 @@ mod tests {
         assert!(!pierce(&flat, &touching));
         assert!(!pierce(&touching, &flat));
     }
+
+    type R = num_rational::BigRational;
+
+    fn exact(x: f64) -> R {
+        R::from_float(x).expect("finite")
+    }
+
+    fn sub(a: &[R; 3], b: &[R; 3]) -> [R; 3] {
+        [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+    }
+
+    fn dot(a: &[R; 3], b: &[R; 3]) -> R {
+        &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
+    }
+
+    fn cross(a: &[R; 3], b: &[R; 3]) -> [R; 3] {
+        [
+            &a[1] * &b[2] - &a[2] * &b[1],
+            &a[2] * &b[0] - &a[0] * &b[2],
+            &a[0] * &b[1] - &a[1] * &b[0],
+        ]
+    }
+
+    /// The exact extent along `dir` of where triangle `v` crosses the plane of `w`.
+    fn exact_cut(v: &[[R; 3]; 3], w: &[[R; 3]; 3], dir: &[R; 3]) -> Option<(R, R)> {
+        let n = cross(&sub(&w[1], &w[0]), &sub(&w[2], &w[0]));
+        let d: Vec<R> = v.iter().map(|p| dot(&sub(p, &w[0]), &n)).collect();
+        let zero = R::from_integer(0.into());
+        let mut at = Vec::new();
+        for i in 0..3 {
+            let (a, b) = (&v[i], &v[(i + 1) % 3]);
+            let (da, db) = (&d[i], &d[(i + 1) % 3]);
+            if *da == zero {
+                at.push(dot(a, dir));
+            } else if (*da < zero) != (*db < zero) && *db != zero {
+                let t = da / (da - db);
+                let p = [
+                    &a[0] + &t * (&b[0] - &a[0]),
+                    &a[1] + &t * (&b[1] - &a[1]),
+                    &a[2] + &t * (&b[2] - &a[2]),
+                ];
+                at.push(dot(&p, dir));
+            }
+        }
+        let lo = at.iter().min()?.clone();
+        let hi = at.iter().max()?.clone();
+        Some((lo, hi))
+    }
+
+    #[test]
+    fn a_float_piercing_is_an_exact_one() {
+        // Random triangles in a small cube, many nearly touching: whenever the estimate
+        // says two pierce each other, the exact cut segments overlap with positive length.
+        let mut r = crate::rng::SplitMix::new(11);
+        let mut u = || ((r.next_u64() >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 2.0;
+        let (mut said, mut checked) = (0, 0);
+        for _ in 0..4000 {
+            let a = tri([u(), u(), u()], [u(), u(), u()], [u(), u(), u()]);
+            let b = tri([u(), u(), u()], [u(), u(), u()], [u(), u(), u()]);
+            let ea = [0, 1, 2].map(|i| a[i].to_array().map(exact));
+            let eb = [0, 1, 2].map(|i| b[i].to_array().map(exact));
+            let dir = cross(
+                &cross(&sub(&ea[1], &ea[0]), &sub(&ea[2], &ea[0])),
+                &cross(&sub(&eb[1], &eb[0]), &sub(&eb[2], &eb[0])),
+            );
+            let (Some((a0, a1)), Some((b0, b1))) =
+                (exact_cut(&ea, &eb, &dir), exact_cut(&eb, &ea, &dir))
+            else {
+                continue;
+            };
+            checked += 1;
+            if pierce(&a, &b) {
+                said += 1;
+                assert!(a1.min(b1) > a0.max(b0), "{a:?} {b:?}");
+            }
+        }
+        assert!(said > 50 && checked > said, "{said} of {checked}");
+    }
 }
