@@ -11,6 +11,7 @@ use crate::components::Components;
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
 use crate::pieces::Ctx;
+use crate::separation::SeparatingAxes;
 
 /// Parts of a split component up to this size are always analysed again (the analysis
 /// of a small set is cheap whatever its density).
@@ -79,6 +80,19 @@ fn order_set<K: Kernel>(
                 }
             }
         }
+    } else if crowded(shared, &set) {
+        // Each piece's own extents along its edge normals, once for the whole set.
+        let axes = SeparatingAxes::new(
+            set.iter()
+                .map(|&p| shared.pieces[p as usize].pts.as_slice()),
+            margin,
+        );
+        ws.tested = box_pairs(shared, &set, |i, j, out: &mut Vec<(u32, u32, Pair)>| {
+            let (p, q) = (set[i], set[j]);
+            if !shared.apart_by_construction(p, q) && !axes.disjoint(i, j) {
+                out.push((i as u32, j as u32, shared.pair(p, q)));
+            }
+        });
     } else {
         ws.tested = box_pairs(shared, &set, test);
     }
@@ -134,6 +148,28 @@ fn order_set<K: Kernel>(
         stack.push(Task::Emit(ws.run.iter().rev().copied().collect()));
     }
 }
+
+/// Whether the screen boxes of `set` are expected to meet [`CROWDED`] others each or
+/// more (boxes of the mean width and height, spread evenly over the set's extent): then
+/// the separating axes of each piece are worth computing once for the set
+/// ([`SeparatingAxes`]); on a mesh, where a piece meets a few neighbours, they are not.
+fn crowded<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
+    let mut extent = Box2::EMPTY;
+    let (mut w, mut h) = (0.0, 0.0);
+    for &p in set {
+        let b = &ctx.pieces[p as usize].bbox;
+        extent = extent.union(b);
+        w += b.width();
+        h += b.height();
+    }
+    let n = set.len() as f64;
+    let area = extent.width() * extent.height();
+    // Two boxes meet when their centres are closer than the sum of their half sizes.
+    4.0 * (w / n) * (h / n) * n >= CROWDED * area
+}
+
+/// Other boxes met per box, expected, from which a set is [`crowded`].
+const CROWDED: f64 = 8.0;
 
 /// Sets larger than this are probed ([`cycles_everywhere`]) before being analysed.
 const PROBE_MIN: usize = 256;

@@ -47,6 +47,7 @@ mod pieces;
 mod piercing;
 mod prepare;
 mod rng;
+mod separation;
 mod shadows;
 mod simple;
 mod view;
