@@ -22,12 +22,13 @@ const ALWAYS_ANALYSE: usize = 4;
 /// classifications, and for pieces spanning each other's planes a float piercing
 /// estimate or two exact splits into halves and their projections. Set from ordering
 /// soups of 2,000 to 50,000 triangles of sizes 0.1 to 0.5 (BENCHMARKS.md): 8 gives the
-/// fewest fragments but costs up to 1.13× BSP's time on the densest, 32 gives up more
-/// fragments than it saves time.
+/// fewest fragments but costs up to 1.13× BSP's time on the densest; 24 and 32 give up
+/// fragments without saving time.
 const PAIR_COST: usize = 16;
 
 /// Sets of at most this many pieces are tested all against all by [`order_set`] itself,
-/// in the order the broad phase visits a set this small, with no allocation.
+/// in the order the broad phase visits a set this small, in the working space (none of
+/// the broad phase's vectors).
 const SMALL_SET: usize = 16;
 
 /// Working space of [`order_set`], kept from set to set: a dense scene is ordered as
