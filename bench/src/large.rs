@@ -27,6 +27,9 @@ pub struct LargeArgs {
     /// Memory a peer may use, in MB, before it is reported as out of memory.
     #[arg(long, default_value_t = 4096)]
     mem_mb: u64,
+    /// Only the scenes whose name contains this text (e.g. `soup`).
+    #[arg(long)]
+    only: Option<String>,
 }
 
 /// The table (Markdown): per scene, limn exact adaptive (order + SVG in this process, on
@@ -66,7 +69,10 @@ pub fn run(a: LargeArgs) -> Result<String> {
             dir.display()
         );
     }
-    for s in scenes::large() {
+    let chosen = scenes::large()
+        .into_iter()
+        .filter(|s| a.only.as_ref().is_none_or(|o| s.name.contains(o.as_str())));
+    for s in chosen {
         eprintln!("limn-bench: {}", s.name);
         let m = limn_runs::measure(&s, SortMode::Adaptive, Arith::Exact, a.runs)?;
         out += &format!(

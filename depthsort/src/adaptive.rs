@@ -7,141 +7,174 @@ use rayon::prelude::*;
 
 use crate::broad::{box_pairs, estimated_box_pairs};
 use crate::bsp::{choose_splitter, partition, push_parts_as, Task, SCORE_SAMPLE};
+use crate::components::Components;
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
 use crate::pieces::Ctx;
+use crate::separation::SeparatingAxes;
 
 /// Parts of a split component up to this size are always analysed again (the analysis
 /// of a small set is cheap whatever its density).
 const ALWAYS_ANALYSE: usize = 4;
 
 /// Cost of one candidate-pair test in the units of the cost model of [`analysis_pays`]
-/// (one polygon classified against a plane): two classifications, often two exact
-/// splits into halves and their projections, and the separating-axis tests.
-const PAIR_COST: usize = 32;
+/// (one polygon classified against a plane): the separating-axis tests, two float-filtered
+/// classifications, and for pieces spanning each other's planes a float piercing
+/// estimate or two exact splits into halves and their projections. Set from ordering
+/// soups of 2,000 to 50,000 triangles of sizes 0.1 to 0.5 (BENCHMARKS.md): 8 gives the
+/// fewest fragments but costs up to 1.13× BSP's time on the densest; 24 and 32 give up
+/// fragments without saving time.
+const PAIR_COST: usize = 16;
 
-/// Strongly connected components of a graph given in CSR form, in topological order
-/// (a component comes before every component it has edges to). Iterative Tarjan.
-pub(crate) fn components(n: usize, start: &[u32], adj: &[u32]) -> Vec<Vec<u32>> {
-    const UNSEEN: u32 = u32::MAX;
-    let mut index = vec![UNSEEN; n];
-    let mut low = vec![0u32; n];
-    let mut on_stack = vec![false; n];
-    let mut stack: Vec<u32> = Vec::new();
-    let mut out: Vec<Vec<u32>> = Vec::new();
-    let mut next = 0u32;
-    let mut call: Vec<(u32, u32)> = Vec::new();
-    for root in 0..n as u32 {
-        if index[root as usize] != UNSEEN {
-            continue;
-        }
-        call.push((root, start[root as usize]));
-        index[root as usize] = next;
-        low[root as usize] = next;
-        next += 1;
-        stack.push(root);
-        on_stack[root as usize] = true;
-        while let Some(&mut (v, ref mut e)) = call.last_mut() {
-            let vi = v as usize;
-            if *e < start[vi + 1] {
-                let w = adj[*e as usize];
-                *e += 1;
-                let wi = w as usize;
-                if index[wi] == UNSEEN {
-                    index[wi] = next;
-                    low[wi] = next;
-                    next += 1;
-                    stack.push(w);
-                    on_stack[wi] = true;
-                    call.push((w, start[wi]));
-                } else if on_stack[wi] {
-                    low[vi] = low[vi].min(index[wi]);
-                }
-            } else {
-                call.pop();
-                if let Some(&(parent, _)) = call.last() {
-                    let pi = parent as usize;
-                    low[pi] = low[pi].min(low[vi]);
-                }
-                if low[vi] == index[vi] {
-                    let mut comp = Vec::new();
-                    loop {
-                        let w = stack.pop().expect("tarjan stack holds the component");
-                        on_stack[w as usize] = false;
-                        comp.push(w);
-                        if w == v {
-                            break;
-                        }
-                    }
-                    out.push(comp);
-                }
-            }
-        }
-    }
-    // Tarjan emits components after everything reachable from them.
-    out.reverse();
-    out
+/// Sets of at most this many pieces are tested all against all by [`order_set`] itself,
+/// in the order the broad phase visits a set this small, in the working space (none of
+/// the broad phase's vectors).
+const SMALL_SET: usize = 16;
+
+/// Working space of [`order_set`], kept from set to set: a dense scene is ordered as
+/// thousands of sets of two to four pieces, where allocating the graph's vectors anew for
+/// each cost more than the search.
+#[derive(Default)]
+struct Workspace {
+    boxes: Vec<Box2>,
+    tested: Vec<(u32, u32, Pair)>,
+    edges: Vec<(u32, u32)>,
+    start: Vec<u32>,
+    fill: Vec<u32>,
+    adj: Vec<u32>,
+    comps: Components,
+    /// Pieces alone in their component, waiting to be emitted together.
+    run: Vec<u32>,
 }
 
 /// Orders one set: constraints, components, and tasks for the stack.
-fn order_set<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, stack: &mut Vec<Task>) {
+fn order_set<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    set: Vec<u32>,
+    stack: &mut Vec<Task>,
+    ws: &mut Workspace,
+) {
     let n = set.len();
     // The pair tests only read the pieces: each pair is tested as the broad phase finds
     // it (in parallel blocks for large sets), and the results come back in the order of
     // a visit on one thread whatever the number of threads.
     let shared: &Ctx<'_, K> = ctx;
     let margin = shared.margin;
-    let tested = box_pairs(shared, &set, |i, j, out: &mut Vec<(u32, u32, Pair)>| {
+    let test = |i: usize, j: usize, out: &mut Vec<(u32, u32, Pair)>| {
         let (p, q) = (set[i], set[j]);
         let (pp, qq) = (&shared.pieces[p as usize], &shared.pieces[q as usize]);
         if !shared.apart_by_construction(p, q) && !convex_disjoint(&pp.pts, &qq.pts, margin) {
             out.push((i as u32, j as u32, shared.pair(p, q)));
         }
-    });
-    ctx.stats.candidate_pairs += tested.len();
-    let mut edges: Vec<(u32, u32)> = Vec::with_capacity(tested.len());
-    for (i, j, pair) in tested {
+    };
+    if n <= SMALL_SET {
+        ws.tested.clear();
+        ws.boxes.clear();
+        ws.boxes.extend(
+            set.iter()
+                .map(|&p| shared.pieces[p as usize].bbox.grown(margin)),
+        );
+        for i in 0..n {
+            for j in i + 1..n {
+                if boxes_meet(&ws.boxes[i], &ws.boxes[j], 0.0) {
+                    test(i, j, &mut ws.tested);
+                }
+            }
+        }
+    } else if crowded(shared, &set) {
+        // Each piece's own extents along its edge normals, once for the whole set.
+        let axes = SeparatingAxes::new(
+            set.iter()
+                .map(|&p| shared.pieces[p as usize].pts.as_slice()),
+            margin,
+        );
+        ws.tested = box_pairs(shared, &set, |i, j, out: &mut Vec<(u32, u32, Pair)>| {
+            let (p, q) = (set[i], set[j]);
+            if !shared.apart_by_construction(p, q) && !axes.disjoint(i, j) {
+                out.push((i as u32, j as u32, shared.pair(p, q)));
+            }
+        });
+    } else {
+        ws.tested = box_pairs(shared, &set, test);
+    }
+    ctx.stats.candidate_pairs += ws.tested.len();
+    ws.edges.clear();
+    for &(i, j, pair) in &ws.tested {
         match pair {
             Pair::Free => {}
-            Pair::FirstBefore => edges.push((i, j)),
-            Pair::SecondBefore => edges.push((j, i)),
+            Pair::FirstBefore => ws.edges.push((i, j)),
+            Pair::SecondBefore => ws.edges.push((j, i)),
             Pair::Conflict => {
-                edges.push((i, j));
-                edges.push((j, i));
+                ws.edges.push((i, j));
+                ws.edges.push((j, i));
             }
         }
     }
-    ctx.stats.constraints += edges.len();
-    let mut start = vec![0u32; n + 1];
-    for &(a, _) in &edges {
-        start[a as usize + 1] += 1;
+    ctx.stats.constraints += ws.edges.len();
+    ws.start.clear();
+    ws.start.resize(n + 1, 0);
+    for &(a, _) in &ws.edges {
+        ws.start[a as usize + 1] += 1;
     }
     for i in 0..n {
-        start[i + 1] += start[i];
+        ws.start[i + 1] += ws.start[i];
     }
-    let mut fill = start.clone();
-    let mut adj = vec![0u32; edges.len()];
-    for &(a, b) in &edges {
-        adj[fill[a as usize] as usize] = b;
-        fill[a as usize] += 1;
+    ws.fill.clear();
+    ws.fill.extend_from_slice(&ws.start);
+    ws.adj.clear();
+    ws.adj.resize(ws.edges.len(), 0);
+    for &(a, b) in &ws.edges {
+        ws.adj[ws.fill[a as usize] as usize] = b;
+        ws.fill[a as usize] += 1;
     }
-    let comps = components(n, &start, &adj);
+    ws.comps.find(n, &ws.start, &ws.adj);
 
-    for comp in comps.into_iter().rev() {
-        let members: Vec<u32> = comp.iter().map(|&i| set[i as usize]).collect();
-        if members.len() == 1 {
-            stack.push(Task::Emit(members));
-        } else {
-            ctx.stats.components += 1;
-            ctx.stats.largest_component = ctx.stats.largest_component.max(members.len());
-            stack.push(Task::Split(members));
+    // Tasks are pushed last component first, so that they are popped in topological
+    // order; consecutive single pieces are emitted by one task.
+    ws.run.clear();
+    for comp in ws.comps.in_topological_order().rev() {
+        if let [only] = comp {
+            ws.run.push(set[*only as usize]);
+            continue;
         }
+        if !ws.run.is_empty() {
+            stack.push(Task::Emit(ws.run.iter().rev().copied().collect()));
+            ws.run.clear();
+        }
+        ctx.stats.components += 1;
+        ctx.stats.largest_component = ctx.stats.largest_component.max(comp.len());
+        stack.push(Task::Split(comp.iter().map(|&i| set[i as usize]).collect()));
+    }
+    if !ws.run.is_empty() {
+        stack.push(Task::Emit(ws.run.iter().rev().copied().collect()));
     }
 }
 
+/// Whether the screen boxes of `set` are expected to meet [`CROWDED`] others each or
+/// more (boxes of the mean width and height, spread evenly over the set's extent): then
+/// the separating axes of each piece are worth computing once for the set
+/// ([`SeparatingAxes`]); on a mesh, where a piece meets a few neighbours, they are not.
+fn crowded<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
+    let mut extent = Box2::EMPTY;
+    let (mut w, mut h) = (0.0, 0.0);
+    for &p in set {
+        let b = &ctx.pieces[p as usize].bbox;
+        extent = extent.union(b);
+        w += b.width();
+        h += b.height();
+    }
+    let n = set.len() as f64;
+    let area = extent.width() * extent.height();
+    // Two boxes meet when their centres are closer than the sum of their half sizes.
+    4.0 * (w / n) * (h / n) * n >= CROWDED * area
+}
+
+/// Other boxes met per box, expected, from which a set is [`crowded`].
+const CROWDED: f64 = 8.0;
+
 /// Sets larger than this are probed ([`cycles_everywhere`]) before being analysed.
 const PROBE_MIN: usize = 256;
-/// Members of a set probed by [`cycles_everywhere`].
+/// Members of a set probed by [`cycles_everywhere`] (a power of two).
 const PROBE_SAMPLE: usize = 64;
 
 /// Whether the occlusion graph of `set` is, as measured on a sample, certain to be one
@@ -150,8 +183,10 @@ const PROBE_SAMPLE: usize = 64;
 /// when a piece is in conflict with one other piece or more on average, the conflicts
 /// form a giant connected part, as in a random graph of that mean degree, and so does the
 /// occlusion graph's largest component. The mean is measured on [`PROBE_SAMPLE`] evenly
-/// spaced members against the whole set (in parallel; the count does not depend on the
-/// threads).
+/// spaced members against the whole set, [`PROBE_BLOCK`] members at a time (in parallel),
+/// spread over the set in bit-reversed order; the count stops as soon as it reaches the
+/// answer, which is the same as counting them all (the count only grows), on any number
+/// of threads.
 fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
     let n = set.len();
     let m = ctx.margin;
@@ -159,25 +194,36 @@ fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
         .iter()
         .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
         .collect();
-    let conflicts: usize = (0..PROBE_SAMPLE)
-        .into_par_iter()
-        .map(|k| {
-            let a = k * n / PROBE_SAMPLE;
-            let (p, bp) = (set[a], &boxes[a]);
-            let pp = &ctx.pieces[p as usize];
-            (0..n)
-                .filter(|&b| {
-                    let q = set[b];
-                    b != a
-                        && boxes_meet(bp, &boxes[b], 0.0)
-                        && !convex_disjoint(&pp.pts, &ctx.pieces[q as usize].pts, m)
-                        && ctx.pair(p, q) == Pair::Conflict
-                })
-                .count()
-        })
-        .sum();
-    conflicts >= PROBE_SAMPLE
+    let conflicts_of = |k: usize| {
+        let a = k * n / PROBE_SAMPLE;
+        let (p, bp) = (set[a], &boxes[a]);
+        let pp = &ctx.pieces[p as usize];
+        (0..n)
+            .filter(|&b| {
+                let q = set[b];
+                b != a
+                    && boxes_meet(bp, &boxes[b], 0.0)
+                    && !convex_disjoint(&pp.pts, &ctx.pieces[q as usize].pts, m)
+                    && ctx.pair(p, q) == Pair::Conflict
+            })
+            .count()
+    };
+    let spread = |j: usize| j.reverse_bits() >> (usize::BITS - PROBE_SAMPLE.trailing_zeros());
+    let mut conflicts = 0;
+    for block in (0..PROBE_SAMPLE).step_by(PROBE_BLOCK) {
+        conflicts += (block..block + PROBE_BLOCK)
+            .into_par_iter()
+            .map(|j| conflicts_of(spread(j)))
+            .sum::<usize>();
+        if conflicts >= PROBE_SAMPLE {
+            return true;
+        }
+    }
+    false
 }
+
+/// Members of the probe of [`cycles_everywhere`] tested between two looks at the count.
+const PROBE_BLOCK: usize = 8;
 
 /// Whether analysing `set`, a part of a split component (testing its candidate pairs), is
 /// expected to cost less than finishing it by BSP, and the density of candidate pairs
@@ -189,9 +235,10 @@ fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
 /// Until the analysis pays, the set is split one BSP level further and its parts are
 /// asked again.
 ///
-/// The estimate itself costs a few sorts of the set. `density` is the one measured on a
-/// set this one was split from: while pairs at that density would cost more than
-/// [`SKIP_ESTIMATE`] times the BSP, the set is split without measuring (splitting a
+/// The estimate itself costs a few sorts of the set; a set of at most [`SMALL_SET`]
+/// pieces counts its meeting boxes instead, all against all. `density` is the one
+/// measured on a set this one was split from: while pairs at that density would cost
+/// more than [`SKIP_ESTIMATE`] times the BSP, the set is split without measuring (splitting a
 /// dense set changes its density by a small factor a level).
 fn analysis_pays<K: Kernel>(
     ctx: &Ctx<'_, K>,
@@ -206,13 +253,36 @@ fn analysis_pays<K: Kernel>(
     if density.is_finite() && density * all * PAIR_COST as f64 > SKIP_ESTIMATE * bsp {
         return (false, density);
     }
-    let pairs = estimated_box_pairs(ctx, set);
+    let pairs = if n <= SMALL_SET {
+        meeting_boxes(ctx, set)
+    } else {
+        estimated_box_pairs(ctx, set)
+    };
     (pairs * PAIR_COST <= bsp as usize, pairs as f64 / all)
+}
+
+/// How many pairs of the small `set`'s screen boxes (grown by the prefilter margin) meet,
+/// counted all against all: cheaper than estimating for a set of at most [`SMALL_SET`].
+fn meeting_boxes<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> usize {
+    let m = ctx.margin;
+    let mut boxes = [Box2::EMPTY; SMALL_SET];
+    for (b, &p) in boxes.iter_mut().zip(set) {
+        *b = ctx.pieces[p as usize].bbox.grown(m);
+    }
+    let boxes = &boxes[..set.len()];
+    let mut count = 0;
+    for (i, a) in boxes.iter().enumerate() {
+        count += boxes[i + 1..]
+            .iter()
+            .filter(|b| boxes_meet(a, b, 0.0))
+            .count();
+    }
+    count
 }
 
 /// How far above the cost of BSP the pairs at an inherited density must be for a set to
 /// be split without estimating its pairs (see [`analysis_pays`]).
-const SKIP_ESTIMATE: f64 = 4.0;
+const SKIP_ESTIMATE: f64 = 1.0;
 
 /// The adaptive order of `set`.
 pub(crate) fn adaptive<K: Kernel>(
@@ -222,6 +292,7 @@ pub(crate) fn adaptive<K: Kernel>(
 ) -> Vec<u32> {
     let mut out = Vec::with_capacity(set.len());
     let mut stack = vec![Task::Order(set)];
+    let mut ws = Workspace::default();
     while let Some(t) = stack.pop() {
         match t {
             Task::Emit(v) => out.extend(v),
@@ -231,7 +302,7 @@ pub(crate) fn adaptive<K: Kernel>(
                 } else if s.len() > PROBE_MIN && cycles_everywhere(ctx, &s) {
                     stack.push(Task::Split(s));
                 } else {
-                    order_set(ctx, s, &mut stack);
+                    order_set(ctx, s, &mut stack, &mut ws);
                 }
             }
             Task::Split(s) => {
@@ -246,7 +317,7 @@ pub(crate) fn adaptive<K: Kernel>(
                 }
                 let (pays, density) = analysis_pays(ctx, &s, candidates, density);
                 if pays {
-                    order_set(ctx, s, &mut stack);
+                    order_set(ctx, s, &mut stack, &mut ws);
                     continue;
                 }
                 let sp = choose_splitter(ctx, &s, candidates);
@@ -256,48 +327,4 @@ pub(crate) fn adaptive<K: Kernel>(
         }
     }
     out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::components;
-
-    fn csr(n: usize, edges: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
-        let mut start = vec![0u32; n + 1];
-        for &(a, _) in edges {
-            start[a as usize + 1] += 1;
-        }
-        for i in 0..n {
-            start[i + 1] += start[i];
-        }
-        let mut fill = start.clone();
-        let mut adj = vec![0; edges.len()];
-        for &(a, b) in edges {
-            adj[fill[a as usize] as usize] = b;
-            fill[a as usize] += 1;
-        }
-        (start, adj)
-    }
-
-    #[test]
-    fn components_come_in_topological_order() {
-        // 3 -> 0 -> 1 <-> 2, 4 alone
-        let (s, a) = csr(5, &[(3, 0), (0, 1), (1, 2), (2, 1)]);
-        let comps = components(5, &s, &a);
-        let pos = |v: u32| comps.iter().position(|c| c.contains(&v)).unwrap();
-        assert!(pos(3) < pos(0) && pos(0) < pos(1));
-        assert_eq!(pos(1), pos(2));
-        assert_eq!(comps.len(), 4);
-    }
-
-    #[test]
-    fn long_chain_does_not_recurse() {
-        let n = 200_000;
-        let edges: Vec<(u32, u32)> = (0..n as u32 - 1).map(|i| (i, i + 1)).collect();
-        let (s, a) = csr(n, &edges);
-        let comps = components(n, &s, &a);
-        assert_eq!(comps.len(), n);
-        assert_eq!(comps[0], vec![0]);
-        assert_eq!(comps[n - 1], vec![n as u32 - 1]);
-    }
 }

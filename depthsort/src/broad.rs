@@ -344,7 +344,10 @@ fn x_overlaps(boxes: &[Box2]) -> usize {
 
 /// Calls `f(i, j)` (i < j, each pair once) for every pair of `boxes` that meet: boxes in
 /// order of their left sides, each against the earlier ones whose right side it has not
-/// passed.
+/// passed. The active boxes are kept side by side (index, right side, y extent) in the
+/// order they became active; one pass drops those that ended and tests the rest in y
+/// (the only test left: an active box began no later and ends no earlier), writing the
+/// boxes met without a branch on the outcome (random outcomes mispredict).
 fn sweep_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
     let mut by_x: Vec<u32> = (0..boxes.len() as u32).collect();
     by_x.sort_unstable_by(|&a, &b| {
@@ -353,16 +356,35 @@ fn sweep_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
             .total_cmp(&boxes[b as usize].min_x)
             .then(a.cmp(&b))
     });
-    let mut active: Vec<u32> = Vec::new();
+    let mut index: Vec<u32> = Vec::new();
+    let mut right: Vec<f64> = Vec::new();
+    let mut span_y: Vec<[f64; 2]> = Vec::new();
+    let mut met: Vec<u32> = Vec::new();
     for &i in &by_x {
         let bi = &boxes[i as usize];
-        active.retain(|&j| boxes[j as usize].max_x >= bi.min_x);
-        for &j in &active {
-            if boxes_meet(bi, &boxes[j as usize], 0.0) {
-                f(i.min(j) as usize, i.max(j) as usize);
+        let (mut kept, mut hits) = (0, 0);
+        met.resize(index.len(), 0);
+        for k in 0..index.len() {
+            if right[k] < bi.min_x {
+                continue;
             }
+            let (j, [y0, y1]) = (index[k], span_y[k]);
+            index[kept] = j;
+            right[kept] = right[k];
+            span_y[kept] = [y0, y1];
+            kept += 1;
+            met[hits] = j;
+            hits += usize::from((y0 <= bi.max_y) & (bi.min_y <= y1));
         }
-        active.push(i);
+        for &j in &met[..hits] {
+            f(i.min(j) as usize, i.max(j) as usize);
+        }
+        index.truncate(kept);
+        right.truncate(kept);
+        span_y.truncate(kept);
+        index.push(i);
+        right.push(bi.max_x);
+        span_y.push([bi.min_y, bi.max_y]);
     }
 }
 

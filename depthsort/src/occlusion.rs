@@ -205,8 +205,12 @@ impl<K: Kernel> Ctx<'_, K> {
     /// one half of `p` (cut by `q`'s plane) can overlap `q` on screen, and that half
     /// decides the order. A half is ruled out only when the float separating-axis test
     /// shows a gap wider than the margin, so a doubtful case stays a conflict (and gets
-    /// split); the order itself follows from exact plane sides.
+    /// split); the order itself follows from exact plane sides. Pieces that clearly pierce
+    /// each other by a float estimate are a conflict at once (see [`crate::piercing`]).
     fn resolve_spanning(&self, p: u32, q: u32) -> Pair {
+        if self.clearly_pierce(p, q) {
+            return Pair::Conflict;
+        }
         let (pp, qq) = (&self.pieces[p as usize], &self.pieces[q as usize]);
         // Halves of p: the one on the eye's side of q's plane cannot be hidden by q; the
         // far one cannot hide q.
