@@ -44,17 +44,7 @@ pub fn run(a: LargeArgs) -> Result<String> {
     let gl2ps: Vec<_> = found.into_iter().filter(|p| p.name == "gl2ps").collect();
     let work = tempfile::tempdir()?;
     let timeout = Duration::from_secs(a.timeout);
-    let empty = work.path().join("empty.txt");
-    std::fs::write(&empty, "limn-projected 1\n16 16\n0\n")?;
-    let startup: Vec<f64> = gl2ps
-        .iter()
-        .map(
-            |p| match peers::run(p, &empty, work.path(), 3, timeout, a.mem_mb, 0.0) {
-                Outcome::Done(m) => m.ms,
-                _ => 0.0,
-            },
-        )
-        .collect();
+    let startup = peers::startup_times(&gl2ps, work.path(), timeout, a.mem_mb)?;
     let mut out = format!(
         "Medians of {} runs on {} threads; limn: exact adaptive, order + SVG in process; \
          gl2ps: the whole process less its time on an empty scene.\n\n\

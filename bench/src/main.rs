@@ -128,19 +128,7 @@ fn main() -> Result<()> {
     let (peers, missing) = peers::find(&peer_dir);
     let work = tempfile::tempdir()?;
     let timeout = Duration::from_secs(a.timeout);
-    // Each peer's start-up (process, interpreter, imports) on an empty scene, taken off
-    // its times so that they measure the drawing.
-    let empty = work.path().join("empty.txt");
-    std::fs::write(&empty, "limn-projected 1\n16 16\n0\n")?;
-    let startup: Vec<f64> = peers
-        .iter()
-        .map(
-            |p| match peers::run(p, &empty, work.path(), 3, timeout, a.mem_mb, 0.0) {
-                Outcome::Done(m) => m.ms,
-                _ => 0.0,
-            },
-        )
-        .collect();
+    let startup = peers::startup_times(&peers, work.path(), timeout, a.mem_mb)?;
 
     let mut out = String::new();
     out += "| scene | program | sort | arith | ms | primitives | bytes | wrong pixels |\n";

@@ -110,6 +110,26 @@ pub fn write_projected(
     std::fs::File::create(out)?.write_all(text.as_bytes())
 }
 
+/// Each peer's start-up (process, interpreter, imports): its median time on an empty
+/// scene written in `dir` (0 when it fails there), taken off its times so that they
+/// measure the drawing.
+pub fn startup_times(
+    peers: &[Peer],
+    dir: &Path,
+    timeout: Duration,
+    mem_mb: u64,
+) -> std::io::Result<Vec<f64>> {
+    let empty = dir.join("empty.txt");
+    std::fs::write(&empty, "limn-projected 1\n16 16\n0\n")?;
+    Ok(peers
+        .iter()
+        .map(|p| match run(p, &empty, dir, 3, timeout, mem_mb, 0.0) {
+            Outcome::Done(m) => m.ms,
+            _ => 0.0,
+        })
+        .collect())
+}
+
 /// Runs `peer` on `input`, `runs` times, each capped at `timeout` and `mem_mb`; the
 /// median wall time minus `startup` (the peer's time on an empty scene).
 pub fn run(
