@@ -58,6 +58,7 @@ mod exact;
 mod fragment_ids;
 mod image;
 mod lines;
+mod pixel_rays;
 mod pixel_shading;
 mod png;
 mod raycast;

@@ -9,13 +9,14 @@
 //! are interpolated in world space). Nothing here runs when no face is smooth or
 //! textured.
 
-use glam::{DMat4, DVec3, DVec4};
+use glam::DVec3;
 use limn_scene::{
     polygon_normal, shade_face, shade_face_in_shadow, shade_sided_in_scene, shade_sided_in_shadow,
     FaceNormals, FaceTexcoords, LightSet, Rgb, Scene, Shading,
 };
 
 use crate::image::{rgb_to_u8, NO_FACE};
+use crate::pixel_rays::PixelRays;
 use crate::setup::Frame;
 
 /// Whether some face of `scene` is shaded smoothly or textured (and [`shade`] is
@@ -54,8 +55,7 @@ pub(crate) fn shade(
     background: [u8; 3],
 ) -> Vec<[u8; 3]> {
     let eye = frame.camera.eye;
-    let inv: DMat4 = frame.vp.inverse();
-    let (w, h) = (f64::from(frame.width), f64::from(frame.height));
+    let rays = PixelRays::new(frame);
     let mut faces: Vec<Option<Option<Smooth>>> = (0..scene.faces.len()).map(|_| None).collect();
     ids.iter()
         .enumerate()
@@ -68,23 +68,9 @@ pub(crate) fn shade(
                 return flat(i, id);
             };
             let set = shadowed.map_or(LightSet::EMPTY, |sh| sh[i]);
-            let x = (i % frame.width as usize) as f64 + 0.5;
-            let y = (i / frame.width as usize) as f64 + 0.5;
-            // The pixel's ray from the near to the far plane (any projection).
-            let at = |z: f64| {
-                let q = inv * DVec4::new(x / w * 2.0 - 1.0, 1.0 - y / h * 2.0, z, 1.0);
-                q.truncate() / q.w
+            let Some((p, _)) = rays.meet(i, s.side, s.origin) else {
+                return flat(i, id);
             };
-            let (near, far) = (at(-1.0), at(1.0));
-            let dir = far - near;
-            let den = dir.dot(s.side);
-            if den == 0.0 || !den.is_finite() {
-                return flat(i, id);
-            }
-            let p = near + dir * ((s.origin - near).dot(s.side) / den);
-            if !p.is_finite() {
-                return flat(i, id);
-            }
             let m = &scene.materials[scene.faces[id as usize].material as usize];
             let c = if let Some((tex, flat)) = &s.texture {
                 let t = tex.color_at(p);

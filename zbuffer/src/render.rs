@@ -5,7 +5,7 @@ use std::str::FromStr;
 
 use std::collections::HashMap;
 
-use glam::{DVec3, DVec4};
+use glam::DVec3;
 use limn_scene::{
     polygon_normal, shade_face, shade_face_in_shadow, shade_in_scene, Camera, LightSet, Rgb, Scene,
 };
@@ -13,6 +13,7 @@ use thiserror::Error;
 
 use crate::abuffer::{abuffer, FaceLook};
 use crate::image::{rgb_to_u8, ColorImage, DepthImage, IdImage, NO_FACE};
+use crate::pixel_rays::PixelRays;
 use crate::setup::{prepare, Collect, Frame, Prepared};
 use crate::shadow_map::{ShadowMapOptions, ShadowMaps};
 use crate::shadow_rays::Casters;
@@ -239,8 +240,7 @@ pub fn render_with_shadow_maps(
 
 /// The shadow sets of the pixels' points by the shadow maps.
 fn map_shadows(scene: &Scene, frame: &Frame, ids: &[u32], maps: &ShadowMaps) -> Vec<LightSet> {
-    let inv = frame.vp.inverse();
-    let (w, h) = (f64::from(frame.width), f64::from(frame.height));
+    let rays = PixelRays::new(frame);
     let mut planes: Vec<Option<(DVec3, DVec3)>> = vec![None; scene.faces.len()];
     ids.iter()
         .enumerate()
@@ -253,19 +253,9 @@ fn map_shadows(scene: &Scene, frame: &Frame, ids: &[u32], maps: &ShadowMaps) -> 
                 let c = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
                 (polygon_normal(&pts), c)
             });
-            let x = (i % frame.width as usize) as f64 + 0.5;
-            let y = (i / frame.width as usize) as f64 + 0.5;
-            let at = |z: f64| {
-                let q = inv * DVec4::new(x / w * 2.0 - 1.0, 1.0 - y / h * 2.0, z, 1.0);
-                q.truncate() / q.w
-            };
-            let (near, far) = (at(-1.0), at(1.0));
-            let dir = far - near;
-            let den = dir.dot(n);
-            let p = near + dir * ((origin - near).dot(n) / den);
-            if !p.is_finite() {
+            let Some((p, near)) = rays.meet(i, n, origin) else {
                 return LightSet::EMPTY;
-            }
+            };
             maps.shadowed(p, n, near)
         })
         .collect()
