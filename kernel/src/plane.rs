@@ -139,6 +139,23 @@ fn finite_or_inf(e: f64) -> f64 {
     }
 }
 
+/// The cross product `u × v` of rounded differences in f64, and a bound on each
+/// component's error against the exact cross product of the exact differences (see
+/// [`PlaneDef::approximate`]).
+fn cross_with_bound(u: [f64; 3], v: [f64; 3]) -> ([f64; 3], f64) {
+    let n = [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ];
+    let m = [
+        (u[1] * v[2]).abs() + (u[2] * v[1]).abs(),
+        (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
+        (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
+    ];
+    (n, (REL * m[0].max(m[1]).max(m[2]) + ETA) * SAFETY)
+}
+
 impl PlaneDef {
     /// Approximate coefficients and proven bounds `(ñ, d̃, e_n, e_d)` with
     /// `|nᵢ − ñᵢ| ≤ e_n` and `|d − d̃| ≤ e_d`, in plain f64 with a-priori bounds:
@@ -157,18 +174,7 @@ impl PlaneDef {
         let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
         let (n, err_n, p) = match *self {
             PlaneDef::Through([p, q, r]) => {
-                let (u, v) = (sub(q, p), sub(r, p));
-                let n = [
-                    u[1] * v[2] - u[2] * v[1],
-                    u[2] * v[0] - u[0] * v[2],
-                    u[0] * v[1] - u[1] * v[0],
-                ];
-                let m = [
-                    (u[1] * v[2]).abs() + (u[2] * v[1]).abs(),
-                    (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
-                    (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
-                ];
-                let e = (REL * m[0].max(m[1]).max(m[2]) + ETA) * SAFETY;
+                let (n, e) = cross_with_bound(sub(q, p), sub(r, p));
                 (n, e, p)
             }
             PlaneDef::Edge { p, q, k, flip } => {
@@ -183,19 +189,9 @@ impl PlaneDef {
                 (n, e, p)
             }
             PlaneDef::Along { p, q, d: v } => {
-                // As `Through` with the second difference exact (`d` is given).
-                let u = sub(q, p);
-                let n = [
-                    u[1] * v[2] - u[2] * v[1],
-                    u[2] * v[0] - u[0] * v[2],
-                    u[0] * v[1] - u[1] * v[0],
-                ];
-                let m = [
-                    (u[1] * v[2]).abs() + (u[2] * v[1]).abs(),
-                    (u[2] * v[0]).abs() + (u[0] * v[2]).abs(),
-                    (u[0] * v[1]).abs() + (u[1] * v[0]).abs(),
-                ];
-                let e = (REL * m[0].max(m[1]).max(m[2]) + ETA) * SAFETY;
+                // As `Through` with the second difference exact (`d` is given): the
+                // same bound holds with room to spare.
+                let (n, e) = cross_with_bound(sub(q, p), v);
                 (n, e, p)
             }
             PlaneDef::PointNormal { p, n } => (n, 0.0, p),
