@@ -2,9 +2,6 @@
 //! soups of 10,000 triangles) against gl2ps's two sorts, measured in one run: time,
 //! primitives and bytes, without rasterising (the table's scenes check the pixels).
 
-use std::path::PathBuf;
-use std::time::Duration;
-
 use anyhow::Result;
 use limn_depthsort::{Arith, SortMode};
 
@@ -18,15 +15,8 @@ pub struct LargeArgs {
     /// Runs per measurement (the median is reported).
     #[arg(long, default_value_t = 3)]
     runs: usize,
-    /// Folder of the peer drivers [default: bench/peers of this crate].
-    #[arg(long)]
-    peers: Option<PathBuf>,
-    /// Seconds a peer may take on one scene before it is reported as out of time.
-    #[arg(long, default_value_t = 60)]
-    timeout: u64,
-    /// Memory a peer may use, in MB, before it is reported as out of memory.
-    #[arg(long, default_value_t = 4096)]
-    mem_mb: u64,
+    #[command(flatten)]
+    limits: peers::PeerLimits,
     /// Only the scenes whose name contains this text (e.g. `soup`).
     #[arg(long)]
     only: Option<String>,
@@ -36,15 +26,12 @@ pub struct LargeArgs {
 /// every core) and gl2ps's sorts (the whole process less its time on an empty scene), with
 /// each peer's time over limn's.
 pub fn run(a: LargeArgs) -> Result<String> {
-    let dir = a
-        .peers
-        .clone()
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("peers"));
+    let dir = a.limits.dir();
     let (found, _) = peers::find(&dir);
     let gl2ps: Vec<_> = found.into_iter().filter(|p| p.name == "gl2ps").collect();
     let work = tempfile::tempdir()?;
-    let timeout = Duration::from_secs(a.timeout);
-    let startup = peers::startup_times(&gl2ps, work.path(), timeout, a.mem_mb)?;
+    let timeout = a.limits.time_bound();
+    let startup = peers::startup_times(&gl2ps, work.path(), timeout, a.limits.mem_mb)?;
     let mut out = format!(
         "Medians of {} runs on {} threads; limn: exact adaptive, order + SVG in process; \
          gl2ps: the whole process less its time on an empty scene.\n\n\
@@ -76,7 +63,15 @@ pub fn run(a: LargeArgs) -> Result<String> {
         let input = work.path().join("scene.txt");
         peers::write_projected(&s, &ordered.camera, ordered.near, ordered.far, &input)?;
         for (p, &start) in gl2ps.iter().zip(&startup) {
-            let cell = match peers::run(p, &input, work.path(), a.runs, timeout, a.mem_mb, start) {
+            let cell = match peers::run(
+                p,
+                &input,
+                work.path(),
+                a.runs,
+                timeout,
+                a.limits.mem_mb,
+                start,
+            ) {
                 Outcome::Done(g) => format!(
                     "{:.0} | {} | {} | {:.2}",
                     g.ms,
@@ -84,7 +79,7 @@ pub fn run(a: LargeArgs) -> Result<String> {
                     g.bytes,
                     g.ms / m.ms
                 ),
-                Outcome::Timeout => format!("> {} s | – | – | –", a.timeout),
+                Outcome::Timeout => format!("> {} s | – | – | –", a.limits.timeout),
                 Outcome::Failed(why) => format!("failed: {} | – | – | –", why.replace('|', "/")),
             };
             out += &format!("| {} | gl2ps | {} | {cell} |\n", s.name, p.sort);

@@ -15,7 +15,6 @@ mod scenes;
 mod shadow_costs;
 
 use std::path::PathBuf;
-use std::time::Duration;
 
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
@@ -66,15 +65,8 @@ struct TableArgs {
     /// Runs per measurement (the median is reported) [default: 3 with --quick, else 5].
     #[arg(long)]
     runs: Option<usize>,
-    /// Folder of the peer drivers [default: bench/peers of this crate].
-    #[arg(long)]
-    peers: Option<PathBuf>,
-    /// Seconds a peer may take on one scene before it is reported as out of time.
-    #[arg(long, default_value_t = 60)]
-    timeout: u64,
-    /// Memory a peer may use, in MB, before it is reported as out of memory.
-    #[arg(long, default_value_t = 4096)]
-    mem_mb: u64,
+    #[command(flatten)]
+    limits: peers::PeerLimits,
     /// Also write the table to this file.
     #[arg(long)]
     out: Option<PathBuf>,
@@ -121,14 +113,11 @@ fn main() -> Result<()> {
         }
     };
     let runs = a.runs.unwrap_or(if a.quick { 3 } else { 5 });
-    let peer_dir = a
-        .peers
-        .clone()
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("peers"));
+    let peer_dir = a.limits.dir();
     let (peers, missing) = peers::find(&peer_dir);
     let work = tempfile::tempdir()?;
-    let timeout = Duration::from_secs(a.timeout);
-    let startup = peers::startup_times(&peers, work.path(), timeout, a.mem_mb)?;
+    let timeout = a.limits.time_bound();
+    let startup = peers::startup_times(&peers, work.path(), timeout, a.limits.mem_mb)?;
 
     let mut out = String::new();
     out += "| scene | program | sort | arith | ms | primitives | bytes | wrong pixels |\n";
@@ -182,8 +171,15 @@ fn main() -> Result<()> {
             let o = &painted.ordered;
             peers::write_projected(&s, &o.camera, o.near, o.far, &input)?;
             for (p, &start) in peers.iter().zip(&startup) {
-                let cell = match peers::run(p, &input, work.path(), runs, timeout, a.mem_mb, start)
-                {
+                let cell = match peers::run(
+                    p,
+                    &input,
+                    work.path(),
+                    runs,
+                    timeout,
+                    a.limits.mem_mb,
+                    start,
+                ) {
                     Outcome::Done(m) => {
                         let bad = wrong(&m.svg)?;
                         line += &format!("; {} {} {} ms, {bad} wrong", p.name, p.sort, ms(m.ms));
@@ -191,7 +187,7 @@ fn main() -> Result<()> {
                     }
                     Outcome::Timeout => {
                         line += &format!("; {} {} out of time", p.name, p.sort);
-                        format!("> {} s | – | – | –", a.timeout)
+                        format!("> {} s | – | – | –", a.limits.timeout)
                     }
                     Outcome::Failed(why) => {
                         line += &format!("; {} {} failed", p.name, p.sort);

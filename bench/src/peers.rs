@@ -110,6 +110,34 @@ pub fn write_projected(
     std::fs::File::create(out)?.write_all(text.as_bytes())
 }
 
+/// How the peers are found and bounded (options shared by the commands that run them).
+#[derive(Debug, clap::Args)]
+pub struct PeerLimits {
+    /// Folder of the peer drivers [default: bench/peers of this crate].
+    #[arg(long)]
+    peers: Option<PathBuf>,
+    /// Seconds a peer may take on one scene before it is reported as out of time.
+    #[arg(long, default_value_t = 60)]
+    pub timeout: u64,
+    /// Memory a peer may use, in MB, before it is reported as out of memory.
+    #[arg(long, default_value_t = 4096)]
+    pub mem_mb: u64,
+}
+
+impl PeerLimits {
+    /// The folder of the peer drivers.
+    pub fn dir(&self) -> PathBuf {
+        self.peers
+            .clone()
+            .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("peers"))
+    }
+
+    /// The time bound of one peer on one scene.
+    pub fn time_bound(&self) -> Duration {
+        Duration::from_secs(self.timeout)
+    }
+}
+
 /// Each peer's start-up (process, interpreter, imports): its median time on an empty
 /// scene written in `dir` (0 when it fails there), taken off its times so that they
 /// measure the drawing.
