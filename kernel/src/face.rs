@@ -47,33 +47,18 @@ pub(crate) fn orient_k(a: P3, b: P3, c: P3, k: usize) -> Ordering {
 
 /// Builds the polygon of an outline that is strictly convex in projection along the
 /// dominant axis of `support`, whose corners lie exactly on `support`.
+/// Its edge planes (through corners `i` and `i + 1` along the dominant exact axis of
+/// `support`, see [`crate::polygon::input_edge_axis`]) are made only when asked for.
 pub(crate) fn convex_polygon(pts: &[P3], support: Plane, original: &[bool]) -> ExactPolygon {
-    let k = dominant_exact_axis(&support);
-    let flip = support.normal_sign(k) == Ordering::Less;
-    let n = pts.len();
     let mut out = Builder::default();
-    for i in 0..n {
-        let (p, q) = (pts[i], pts[(i + 1) % n]);
-        let corner = Corner {
-            pos: p,
+    for (&pos, &original) in pts.iter().zip(original) {
+        out.push_input_corner(Corner {
+            pos,
             err: 0.0,
-            original: original[i],
-        };
-        out.push(corner, Plane::edge(p, q, k, flip));
+            original,
+        });
     }
     out.finish(support)
-}
-
-/// The dominant axis of a plane's normal, with an exactly non-zero component there.
-fn dominant_exact_axis(p: &Plane) -> usize {
-    let k = p.dominant_axis();
-    if p.normal_sign(k) != Ordering::Equal {
-        return k;
-    }
-    // The approximation was too coarse to choose: any exactly non-zero component works.
-    (0..3)
-        .find(|&j| p.normal_sign(j) != Ordering::Equal)
-        .unwrap_or(k)
 }
 
 /// Removes corners collinear with their neighbours (in projection along `k`), repeatedly.
@@ -231,7 +216,7 @@ fn try_convex(g: &[P3], support: &Plane) -> Option<ExactPolygon> {
     if g.iter().any(|&p| support.side_of(p) != crate::Side::On) {
         return None;
     }
-    let k = dominant_exact_axis(support);
+    let k = support.dominant_exact_axis();
     let mut pts = g.to_vec();
     drop_collinear(&mut pts, k);
     let sgn = support.normal_sign(k);

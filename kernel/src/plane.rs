@@ -582,6 +582,19 @@ impl Plane {
         }
     }
 
+    /// The dominant axis of the normal ([`Plane::dominant_axis`]) when the normal's
+    /// component there is exactly non-zero, else the first axis where it is.
+    pub(crate) fn dominant_exact_axis(&self) -> usize {
+        let k = self.dominant_axis();
+        if self.normal_sign(k) != Ordering::Equal {
+            return k;
+        }
+        // The approximation was too coarse to choose: any exactly non-zero component works.
+        (0..3)
+            .find(|&j| self.normal_sign(j) != Ordering::Equal)
+            .unwrap_or(k)
+    }
+
     /// Whether two planes are the same oriented plane (geometrically), exactly.
     pub fn coincides(&self, other: &Plane) -> bool {
         if self.same_definition(other) {

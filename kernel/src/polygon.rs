@@ -53,6 +53,15 @@ impl Builder {
         self.edges.push(edge);
     }
 
+    /// Appends vertex `i` of an input polygon whose edge planes are made when asked for
+    /// (see [`ExactPolygon::edge_plane`]): every corner is pushed this way, none by
+    /// [`Builder::push`].
+    #[inline]
+    pub(crate) fn push_input_corner(&mut self, corner: Corner) {
+        debug_assert!(self.edges.is_empty());
+        self.corners.push(corner);
+    }
+
     /// The polygon, computing the filter's per-polygon bounds.
     pub(crate) fn finish(self, support: Plane) -> ExactPolygon {
         let mut max_abs: f32 = 0.0;
@@ -82,7 +91,12 @@ impl Builder {
 /// counter-clockwise seen from the front of `S`.
 ///
 /// Layout: the data the filter reads (cached positions, per-polygon bounds) comes first
-/// and is stored apart from the edge planes; up to four vertices need no heap.
+/// and is stored apart from the edge planes; up to four vertices need no heap. An input
+/// polygon stores no edge planes (`edges` is empty): its edge `i` is the plane through
+/// its input corners `i` and `i + 1` along the dominant axis of its supporting plane,
+/// made only when asked for (by a split, or [`ExactPolygon::edge_plane`]). Most polygons
+/// of a large scene are never split, and three planes per triangle were most of the
+/// ordering's memory.
 #[derive(Debug, Clone)]
 #[repr(C)]
 pub struct ExactPolygon {
@@ -91,7 +105,8 @@ pub struct ExactPolygon {
     max_abs: f32,
     /// Upper bound on the error bounds of all cached vertex positions.
     max_err: f32,
-    pub(crate) edges: SmallVec<[Plane; INLINE]>,
+    /// The edge planes, or none for an input polygon (made when asked for).
+    edges: SmallVec<[Plane; INLINE]>,
     pub(crate) support: Plane,
 }
 
@@ -114,7 +129,44 @@ impl ExactPolygon {
     /// The bounding plane of edge `i` (from vertex `i` to `i + 1`); the interior is on its
     /// back side. Panics if `i` is out of range.
     pub fn edge_plane(&self, i: usize) -> Plane {
-        self.edges[i].clone()
+        match self.edges.get(i) {
+            Some(e) => e.clone(),
+            None => self.input_edge(i),
+        }
+    }
+
+    /// Edge `i` of an input polygon (no stored edge planes): the plane through corners
+    /// `i` and `i + 1` (both input points) containing the direction of the supporting
+    /// plane's dominant exact axis, as [`crate::face`] defines it. Panics if `i` is out
+    /// of range.
+    fn input_edge(&self, i: usize) -> Plane {
+        let n = self.corners.len();
+        let (p, q) = (self.corners[i].pos, self.corners[(i + 1) % n].pos);
+        let (k, flip) = input_edge_axis(&self.support);
+        Plane::edge(p, q, k, flip)
+    }
+
+    /// Every edge plane, made now for an input polygon.
+    fn edge_planes(&self) -> SmallVec<[Plane; INLINE]> {
+        if !self.edges.is_empty() {
+            return self.edges.clone();
+        }
+        let (k, flip) = input_edge_axis(&self.support);
+        let n = self.corners.len();
+        (0..n)
+            .map(|i| Plane::edge(self.corners[i].pos, self.corners[(i + 1) % n].pos, k, flip))
+            .collect()
+    }
+
+    /// The stored planes of the edges before and at vertex `i`, a vertex that is not an
+    /// input point (only split polygons have such vertices, and they store their edges).
+    #[inline]
+    fn stored_edges_at(&self, i: usize) -> Option<(&Plane, &Plane)> {
+        let n = self.edges.len();
+        if n == 0 {
+            return None;
+        }
+        Some((&self.edges[(i + n - 1) % n], &self.edges[i]))
     }
 
     /// Whether edge `i` lies on an edge of the input face.
@@ -128,8 +180,8 @@ impl ExactPolygon {
         let n = self.corners.len();
         [
             self.support.clone(),
-            self.edges[(i + n - 1) % n].clone(),
-            self.edges[i].clone(),
+            self.edge_plane((i + n - 1) % n),
+            self.edge_plane(i),
         ]
     }
 
@@ -146,9 +198,13 @@ impl ExactPolygon {
         if c.err == 0.0 {
             return h.side_exact(c.pos);
         }
-        let n = self.corners.len();
-        let (a, b) = (&self.edges[(i + n - 1) % n], &self.edges[i]);
-        predicates::side_of_intersection(&self.support, a, b, h).unwrap_or(Side::On)
+        match self.stored_edges_at(i) {
+            Some((a, b)) => {
+                predicates::side_of_intersection(&self.support, a, b, h).unwrap_or(Side::On)
+            }
+            // Not reached: an input polygon's vertices are input points (error 0).
+            None => h.side_exact(c.pos),
+        }
     }
 
     /// The semi-static filter's sign at corner `c`: `1` front, `-1` back, `0` undecided.
@@ -185,9 +241,7 @@ impl ExactPolygon {
             if h.defined_by(&c.pos) {
                 return Some(Side::On);
             }
-        } else {
-            let n = self.corners.len();
-            let (a, b) = (&self.edges[(i + n - 1) % n], &self.edges[i]);
+        } else if let Some((a, b)) = self.stored_edges_at(i) {
             if h.same_definition(&self.support) || h.same_definition(a) || h.same_definition(b) {
                 return Some(Side::On);
             }
@@ -371,10 +425,11 @@ impl ExactPolygon {
         }
         let n = self.corners.len();
         let neg = h.flipped();
+        let edges = self.edge_planes();
         let mut fp = Builder::default();
         let mut bp = Builder::default();
         for i in 0..n {
-            let (c, e) = (self.corners[i], &self.edges[i]);
+            let (c, e) = (self.corners[i], &edges[i]);
             let j = if i + 1 == n { 0 } else { i + 1 };
             let (si, sj) = (sides[i], sides[j]);
             // Vertex i itself; its outgoing edge becomes the cut when the polygon leaves
@@ -424,6 +479,14 @@ impl ExactPolygon {
             Some(bp.finish(self.support.clone())),
         )
     }
+}
+
+/// The axis an input polygon's edge planes contain, and whether their normals are
+/// negated: the dominant exact axis of the supporting plane's normal, negated when the
+/// normal's component there is negative (so the interior lies behind every edge).
+pub(crate) fn input_edge_axis(support: &Plane) -> (usize, bool) {
+    let k = support.dominant_exact_axis();
+    (k, support.normal_sign(k) == std::cmp::Ordering::Less)
 }
 
 /// Whether two of a vertex's planes meet in a line through two input points that both lie
