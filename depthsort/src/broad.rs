@@ -49,7 +49,6 @@ pub(crate) fn box_pairs<K: Kernel, T: Send>(
                     part
                 })
                 .collect();
-            out = parts.into_iter().flatten().collect();
             let bigs: Vec<Vec<T>> = (0..g.big.len())
                 .into_par_iter()
                 .map(|k| {
@@ -58,7 +57,7 @@ pub(crate) fn box_pairs<K: Kernel, T: Send>(
                     part
                 })
                 .collect();
-            out.extend(bigs.into_iter().flatten());
+            out = joined(parts.into_iter().chain(bigs).collect());
         }
         Plan::Grid(g) => {
             for c in 0..g.cells() {
@@ -81,9 +80,19 @@ pub(crate) fn box_pairs<K: Kernel, T: Send>(
                     part
                 })
                 .collect();
-            out = parts.into_iter().flatten().collect();
+            out = joined(parts);
         }
         Plan::Sweep { .. } => sweep_pairs(&boxes, |i, j| visit(i, j, &mut out)),
+    }
+    out
+}
+
+/// The parts one after another, in one vector allocated once (collecting a flattened
+/// iterator grows it by doubling, touching twice its memory).
+fn joined<T>(parts: Vec<Vec<T>>) -> Vec<T> {
+    let mut out = Vec::with_capacity(parts.iter().map(Vec::len).sum());
+    for mut p in parts {
+        out.append(&mut p);
     }
     out
 }

@@ -24,7 +24,8 @@ pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
     let mut ok = vec![true; n];
     let mut has_faces = vec![false; n];
     // Edges (object, lower end, upper end, direction).
-    let mut edges: Vec<(u32, u32, u32, bool)> = Vec::new();
+    let mut edges: Vec<(u32, u32, u32, bool)> =
+        Vec::with_capacity(scene.faces.iter().map(|f| f.vertices.len()).sum());
     for f in &scene.faces {
         let o = f.object as usize;
         has_faces[o] = true;

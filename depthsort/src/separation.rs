@@ -20,13 +20,23 @@ pub(crate) struct SeparatingAxes {
 
 impl SeparatingAxes {
     /// The axes of `polygons` (each convex, as projected pieces are) for `margin`.
-    pub(crate) fn new<'a>(polygons: impl Iterator<Item = &'a [[f64; 2]]>, margin: f64) -> Self {
+    /// The tables are sized from the corners before they are filled (growing them by
+    /// doubling touched twice the memory of a large set).
+    pub(crate) fn new<'a>(
+        polygons: impl Iterator<Item = &'a [[f64; 2]]> + Clone,
+        margin: f64,
+    ) -> Self {
+        let (count, corners) = polygons
+            .clone()
+            .fold((0, 0), |(c, k), a| (c + 1, k + a.len()));
         let mut s = SeparatingAxes {
-            pts: Vec::new(),
-            axes: Vec::new(),
-            corners: vec![0],
-            first_axis: vec![0],
+            pts: Vec::with_capacity(corners),
+            axes: Vec::with_capacity(corners),
+            corners: Vec::with_capacity(count + 1),
+            first_axis: Vec::with_capacity(count + 1),
         };
+        s.corners.push(0);
+        s.first_axis.push(0);
         for a in polygons {
             let n = a.len();
             for i in 0..n {
