@@ -8,6 +8,7 @@ use rayon::prelude::*;
 use crate::broad::{box_pairs, estimated_box_pairs};
 use crate::bsp::{choose_splitter, partition, push_parts_as, Task, SCORE_SAMPLE};
 use crate::components::Components;
+use crate::detached::order_apart;
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
 use crate::pieces::Ctx;
@@ -284,15 +285,64 @@ fn meeting_boxes<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> usize {
 /// be split without estimating its pairs (see [`analysis_pays`]).
 const SKIP_ESTIMATE: f64 = 1.0;
 
-/// The adaptive order of `set`.
+/// The adaptive order of `set`. The components of its occlusion graph are split and
+/// ordered on every core ([`order_apart`]).
 pub(crate) fn adaptive<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     set: Vec<u32>,
     candidates: usize,
 ) -> Vec<u32> {
     let mut out = Vec::with_capacity(set.len());
-    let mut stack = vec![Task::Order(set)];
     let mut ws = Workspace::default();
+    if set.len() <= 1 || (set.len() > PROBE_MIN && cycles_everywhere(ctx, &set)) {
+        run(ctx, Task::Order(set), candidates, &mut ws, &mut out);
+        return out;
+    }
+    // The tasks of the whole set, popped in order: runs of pieces alone in their
+    // component, and components to split.
+    let mut top = Vec::new();
+    order_set(ctx, set, &mut top, &mut ws);
+    let mut comps = Vec::new();
+    let mut steps = Vec::with_capacity(top.len());
+    for t in top.into_iter().rev() {
+        match t {
+            Task::Emit(run) => steps.push(Ok(run)),
+            Task::Split(c) => {
+                steps.push(Err(comps.len()));
+                comps.push(c);
+            }
+            Task::Order(_) | Task::Deep(..) => unreachable!("order_set makes no such task"),
+        }
+    }
+    let orders = order_apart(ctx, comps, |local, comps| {
+        let mut ws = Workspace::default();
+        comps
+            .into_iter()
+            .map(|c| {
+                let mut o = Vec::with_capacity(c.len());
+                run(local, Task::Split(c), candidates, &mut ws, &mut o);
+                o
+            })
+            .collect()
+    });
+    for step in steps {
+        match step {
+            Ok(run) => out.extend(run),
+            Err(k) => out.extend_from_slice(&orders[k]),
+        }
+    }
+    out
+}
+
+/// Carries out `first` and the tasks it makes, appending the order to `out`.
+fn run<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    first: Task,
+    candidates: usize,
+    ws: &mut Workspace,
+    out: &mut Vec<u32>,
+) {
+    let mut stack = vec![first];
     while let Some(t) = stack.pop() {
         match t {
             Task::Emit(v) => out.extend(v),
@@ -302,7 +352,7 @@ pub(crate) fn adaptive<K: Kernel>(
                 } else if s.len() > PROBE_MIN && cycles_everywhere(ctx, &s) {
                     stack.push(Task::Split(s));
                 } else {
-                    order_set(ctx, s, &mut stack, &mut ws);
+                    order_set(ctx, s, &mut stack, ws);
                 }
             }
             Task::Split(s) => {
@@ -317,7 +367,7 @@ pub(crate) fn adaptive<K: Kernel>(
                 }
                 let (pays, density) = analysis_pays(ctx, &s, candidates, density);
                 if pays {
-                    order_set(ctx, s, &mut stack, &mut ws);
+                    order_set(ctx, s, &mut stack, ws);
                     continue;
                 }
                 let sp = choose_splitter(ctx, &s, candidates);
@@ -326,5 +376,4 @@ pub(crate) fn adaptive<K: Kernel>(
             }
         }
     }
-    out
 }

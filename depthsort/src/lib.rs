@@ -36,6 +36,7 @@ mod broad;
 mod bsp;
 mod coincident;
 mod components;
+mod detached;
 mod feature_edges;
 mod geom;
 mod marks;

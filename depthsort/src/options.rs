@@ -222,6 +222,19 @@ pub struct Stats {
     pub ms_shadows: f64,
 }
 
+impl Stats {
+    /// Adds the ordering's counts of `other` (a context that ordered part of the scene
+    /// apart, [`crate::pieces::Ctx::detached`]): pairs, constraints, components, splits,
+    /// and the largest component.
+    pub(crate) fn add_ordering(&mut self, other: &Stats) {
+        self.candidate_pairs += other.candidate_pairs;
+        self.constraints += other.constraints;
+        self.components += other.components;
+        self.largest_component = self.largest_component.max(other.largest_component);
+        self.splits += other.splits;
+    }
+}
+
 /// Errors of the orderings: all come from invalid input.
 #[derive(Debug, Error)]
 #[non_exhaustive]

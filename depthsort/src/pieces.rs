@@ -2,6 +2,9 @@
 //! fragment split from it, with its provenance), projections, counters and the random
 //! source. The occlusion predicates between pieces live in [`crate::occlusion`].
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
+
 use glam::{DMat4, DVec3};
 use limn_kernel::{Kernel, PolygonSide, Side};
 use limn_scene::Camera;
@@ -35,6 +38,24 @@ pub(crate) struct Piece<K: Kernel> {
     pub dmean: f64,
 }
 
+impl<K: Kernel> Clone for Piece<K> {
+    fn clone(&self) -> Self {
+        Piece {
+            poly: self.poly.clone(),
+            plane: self.plane.clone(),
+            face: self.face,
+            parent: self.parent,
+            kids: self.kids,
+            eye_front: self.eye_front,
+            pts: self.pts.clone(),
+            bbox: self.bbox,
+            dmin: self.dmin,
+            dmax: self.dmax,
+            dmean: self.dmean,
+        }
+    }
+}
+
 pub(crate) struct Ctx<'a, K: Kernel> {
     pub k: &'a K,
     pub eye: Eye<K::Point>,
@@ -53,7 +74,10 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     pub exceeded: bool,
     /// Per input face: whether it is a quad given as two triangles that share a diagonal
     /// (a quad not exactly planar as given, or not convex).
-    pub quad_halves: Vec<bool>,
+    pub quad_halves: Arc<[bool]>,
+    /// For a detached context ([`Ctx::detached`]): the pieces of the whole ordering,
+    /// counted across every detached context, against `limit`.
+    counted: Option<Arc<AtomicUsize>>,
     rng: SplitMix,
     scratch: Vec<DVec3>,
 }
@@ -79,7 +103,8 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             dmargin: 1e-9 * far.abs().max(1e-300),
             limit: usize::MAX,
             exceeded: false,
-            quad_halves: Vec::new(),
+            quad_halves: Arc::from([]),
+            counted: None,
             rng: SplitMix::new(seed),
             scratch: Vec::new(),
         }
@@ -92,6 +117,31 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         r.margin = self.margin;
         r.dmargin = self.dmargin;
         r
+    }
+
+    /// A context with the same kernel, view, margins and limit holding `pieces` (copies
+    /// of some of this context's pieces, under ids of their own), its own random source
+    /// seeded with `seed`, and no counts: it orders apart from this one while this one is
+    /// only read. Its splits count against the limit in `counted`, shared by every
+    /// detached context and started at this context's pieces.
+    pub fn detached(&self, pieces: Vec<Piece<K>>, seed: u64, counted: Arc<AtomicUsize>) -> Self {
+        let mut d = self.reader();
+        d.pieces = pieces;
+        d.limit = self.limit;
+        d.quad_halves = Arc::clone(&self.quad_halves);
+        d.counted = Some(counted);
+        d.rng = SplitMix::new(seed);
+        d
+    }
+
+    /// Whether two more pieces stay within the limit (counted across the detached
+    /// contexts for one of them: a refused split of any is over the limit in any order
+    /// the contexts run in, since none is refused while all of them together fit).
+    fn room_for_two(&self) -> bool {
+        match &self.counted {
+            None => self.pieces.len() + 2 <= self.limit,
+            Some(c) => c.fetch_add(2, Ordering::Relaxed) + 2 <= self.limit,
+        }
     }
 
     /// A deterministic pseudo-random number.
@@ -184,7 +234,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         match self.k.classify(&piece.poly, plane) {
             PolygonSide::Front | PolygonSide::Coplanar => (Some(id), None),
             PolygonSide::Back | PolygonSide::CoplanarOpposite => (None, Some(id)),
-            PolygonSide::Spanning if self.pieces.len() + 2 > self.limit => {
+            PolygonSide::Spanning if !self.room_for_two() => {
                 // Over the limit: the result is discarded, so any side will do; the
                 // orderings still terminate (no piece is ever split again).
                 self.exceeded = true;

@@ -87,7 +87,7 @@ pub(crate) fn prepare<K: Kernel>(
     // Room for a piece per face and as many again (quads as two triangles, splits): the
     // pieces are large, and growing the vector copies them all.
     ctx.pieces.reserve(2 * scene.faces.len());
-    ctx.quad_halves = vec![false; scene.faces.len()];
+    let mut quad_halves = vec![false; scene.faces.len()];
     // Block k + 1 is prepared on the pool while block k's pieces are added (by a reader
     // with the same view and no pieces of its own).
     let reader = ctx.reader();
@@ -111,14 +111,30 @@ pub(crate) fn prepare<K: Kernel>(
     for (k, block) in blocks.iter().enumerate() {
         let outs = next.take().unwrap_or_default();
         let (added, prepared) = rayon::join(
-            || add_block(ctx, block.clone(), outs, &mut items, &mut whole),
+            || {
+                let done = Done {
+                    items: &mut items,
+                    whole: &mut whole,
+                    quad_halves: &mut quad_halves,
+                };
+                add_block(ctx, block.clone(), outs, done)
+            },
             || blocks.get(k + 1).map(|r| prepare_block(r.clone())),
         );
         added?;
         next = prepared;
     }
     ctx.stats.polygons = items.len();
+    ctx.quad_halves = quad_halves.into();
     Ok((items, whole))
+}
+
+/// What [`add_block`] records besides the pieces: the ids to order, and per face whether
+/// it is whole and whether it is a quad as two triangles.
+struct Done<'a> {
+    items: &'a mut Vec<u32>,
+    whole: &'a mut [bool],
+    quad_halves: &'a mut [bool],
 }
 
 /// Adds the pieces of the faces of `block` (`outs`, prepared in parallel) in face order:
@@ -128,9 +144,13 @@ fn add_block<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     block: Range<usize>,
     outs: Vec<Result<Option<FaceOut<K>>, OrderError>>,
-    items: &mut Vec<u32>,
-    whole: &mut [bool],
+    done: Done<'_>,
 ) -> Result<(), OrderError> {
+    let Done {
+        items,
+        whole,
+        quad_halves,
+    } = done;
     for (fi, out) in block.zip(outs) {
         ctx.stats.faces_in += 1;
         let Some(out) = out? else {
@@ -142,7 +162,7 @@ fn add_block<K: Kernel>(
             continue;
         }
         ctx.stats.splits += out.splits;
-        ctx.quad_halves[fi] = out.quad_halves;
+        quad_halves[fi] = out.quad_halves;
         let mut kept_any = false;
         for (piece, in_picture) in out.pieces {
             let id = ctx.push(piece);

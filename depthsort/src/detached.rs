@@ -1,0 +1,110 @@
+//! Ordering independent components on every core: consecutive components are gathered
+//! into groups, each group's pieces are copied into a context of its own
+//! ([`Ctx::detached`], under ids of its own), the groups are ordered on the pool, and
+//! the pieces they made are added back to the shared context group after group, with
+//! their ids, parents and children mapped. Groups are formed from the components' sizes
+//! alone and each draws its random numbers from a source seeded in group order, so the
+//! result is the same on any number of threads.
+
+use std::sync::atomic::AtomicUsize;
+use std::sync::Arc;
+
+use limn_kernel::Kernel;
+use rayon::prelude::*;
+
+use crate::pieces::{Ctx, NONE};
+
+/// Pieces in a group, at least (the last group may have fewer): enough that copying them
+/// and starting a task costs little against ordering them.
+const GROUP_PIECES: usize = 512;
+
+/// One group ordered apart: its context, the shared ids of the pieces copied into it (its
+/// first ids, in increasing order), and the order of each of its components.
+struct Group<'a, K: Kernel> {
+    ctx: Ctx<'a, K>,
+    members: Vec<u32>,
+    orders: Vec<Vec<u32>>,
+}
+
+/// Orders `comps` (sets of pieces of `ctx` that can be ordered independently of each
+/// other) on the pool: `order` orders the components of one group in its own context and
+/// returns their orders. Returns the orders of all components in the order given, in ids
+/// of `ctx`, to which the pieces made meanwhile are added (in group order).
+pub(crate) fn order_apart<'a, K: Kernel>(
+    ctx: &mut Ctx<'a, K>,
+    comps: Vec<Vec<u32>>,
+    order: impl Fn(&mut Ctx<'a, K>, Vec<Vec<u32>>) -> Vec<Vec<u32>> + Sync,
+) -> Vec<Vec<u32>> {
+    let mut groups: Vec<(Vec<Vec<u32>>, u64)> = Vec::new();
+    let mut group = Vec::new();
+    let mut size = 0;
+    for c in comps {
+        size += c.len();
+        group.push(c);
+        if size >= GROUP_PIECES {
+            groups.push((std::mem::take(&mut group), ctx.next_random()));
+            size = 0;
+        }
+    }
+    if !group.is_empty() {
+        groups.push((group, ctx.next_random()));
+    }
+    let counted = Arc::new(AtomicUsize::new(ctx.pieces.len()));
+    let shared: &Ctx<'a, K> = ctx;
+    let done: Vec<Group<'a, K>> = groups
+        .into_par_iter()
+        .map(|(comps, seed)| {
+            let mut members: Vec<u32> = comps.iter().flatten().copied().collect();
+            members.sort_unstable();
+            let pieces = members
+                .iter()
+                .map(|&p| shared.pieces[p as usize].clone())
+                .collect();
+            let mut local = shared.detached(pieces, seed, Arc::clone(&counted));
+            let local_comps = comps
+                .into_iter()
+                .map(|c| c.iter().map(|&p| local_id(&members, p)).collect())
+                .collect();
+            let orders = order(&mut local, local_comps);
+            Group {
+                ctx: local,
+                members,
+                orders,
+            }
+        })
+        .collect();
+    let mut out = Vec::new();
+    for g in done {
+        ctx.stats.add_ordering(&g.ctx.stats);
+        ctx.exceeded |= g.ctx.exceeded;
+        let base = ctx.pieces.len() as u32;
+        let m = g.members.len();
+        let global = |l: u32| match l {
+            NONE => NONE,
+            l if (l as usize) < m => g.members[l as usize],
+            l => base + (l - m as u32),
+        };
+        let mut pieces = g.ctx.pieces;
+        for (l, piece) in pieces.iter().enumerate().take(m) {
+            if piece.kids != [NONE, NONE] {
+                ctx.pieces[g.members[l] as usize].kids = piece.kids.map(global);
+            }
+        }
+        for mut piece in pieces.drain(m..) {
+            piece.parent = global(piece.parent);
+            piece.kids = piece.kids.map(global);
+            ctx.push(piece);
+        }
+        out.extend(
+            g.orders
+                .into_iter()
+                .map(|o| o.into_iter().map(global).collect::<Vec<u32>>()),
+        );
+    }
+    out
+}
+
+/// The id in a detached context of the shared piece `p`, one of the sorted `members`.
+fn local_id(members: &[u32], p: u32) -> u32 {
+    members.partition_point(|&q| q < p) as u32
+}
