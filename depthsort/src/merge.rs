@@ -6,6 +6,7 @@
 use std::collections::HashSet;
 
 use limn_kernel::Kernel;
+use rayon::prelude::*;
 
 use crate::occlusion::Rel;
 use crate::pieces::{Ctx, NONE};
@@ -14,7 +15,40 @@ use crate::pieces::{Ctx, NONE};
 /// the same plane. A non-planar face is triangulated into polygons of different planes,
 /// which may hide each other: a run never crosses from one such plane to another, or a
 /// join could move a piece across one it must be painted before or after.
+///
+/// A run never spans a change of face, so the order is cut at changes of face into
+/// blocks of about [`PIECES_PER_TASK`] that are joined on the pool and put together in
+/// order (the same result as one pass).
 pub(crate) fn merge<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
+    let face = |k: usize| ctx.pieces[order[k] as usize].face;
+    let mut cuts = vec![0];
+    let mut k = PIECES_PER_TASK;
+    while k < order.len() {
+        while k < order.len() && face(k) == face(k - 1) {
+            k += 1;
+        }
+        if k < order.len() {
+            cuts.push(k);
+        }
+        k += PIECES_PER_TASK;
+    }
+    cuts.push(order.len());
+    let parts: Vec<Vec<u32>> = cuts
+        .par_windows(2)
+        .map(|w| merge_block(ctx, &order[w[0]..w[1]]))
+        .collect();
+    let mut out = Vec::with_capacity(parts.iter().map(Vec::len).sum());
+    for mut p in parts {
+        out.append(&mut p);
+    }
+    out
+}
+
+/// Pieces of the order per parallel task of [`merge`], about.
+const PIECES_PER_TASK: usize = 8192;
+
+/// [`merge`] on a block of the order that starts and ends at changes of face.
+fn merge_block<K: Kernel>(ctx: &Ctx<'_, K>, order: &[u32]) -> Vec<u32> {
     let mut out = Vec::with_capacity(order.len());
     let mut i = 0;
     while i < order.len() {
