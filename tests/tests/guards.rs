@@ -101,3 +101,34 @@ fn a_translucent_later_copy_hides_nothing() {
     assert_eq!(o.stats.faces_coincident, 0);
     assert!(o.fragments.iter().any(|f| (f.face as usize) < n));
 }
+
+/// Components ordered apart on the pool ([`SortMode::Adaptive`] splits the whole set's
+/// components in detached groups) share one limit: one piece fewer than a run makes is
+/// an error on one thread and on two, and exactly as many finishes with the same result.
+#[test]
+fn components_ordered_apart_share_the_limit() {
+    let case = corpus::soup(2_000, 11, 0.25);
+    let free = order(&case.scene, &case.camera, &OrderOptions::default()).unwrap();
+    assert!(free.stats.components > 20, "{:?}", free.stats);
+    assert!(free.stats.splits > 0, "{:?}", free.stats);
+    for threads in [1, 2] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("thread pool");
+        let with_limit = |limit: usize| {
+            let opts = OrderOptions {
+                max_fragments: Some(limit),
+                ..OrderOptions::default()
+            };
+            pool.install(|| order(&case.scene, &case.camera, &opts))
+        };
+        let made = free.stats.fragments_made;
+        match with_limit(made - 1) {
+            Err(OrderError::TooManyFragments { limit, .. }) => assert_eq!(limit, made - 1),
+            other => panic!("{threads} threads: {:?}", other.map(|o| o.stats)),
+        }
+        let bound = with_limit(made).unwrap();
+        assert_eq!(bound.fragments, free.fragments, "{threads} threads");
+    }
+}
