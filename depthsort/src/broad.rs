@@ -1,11 +1,11 @@
 //! The broad phase: which pieces' screen boxes meet. A uniform grid over the set's extent
-//! where boxes are small against it (meshes, sparse soups); a sweep along x where large
-//! overlapping boxes would crowd the grid's cells (dense soups). Both report every meeting
+//! where boxes are small against it (meshes, sparse soups); a sweep along x in stripes
+//! ([`Stripes`]) where large overlapping boxes would crowd the grid's cells (dense soups). Both report every meeting
 //! pair once, in an order that depends only on the boxes.
 //!
 //! A pair is handed to the caller's test as soon as it is found (while both boxes are
-//! still in cache). Large sets are visited in parallel, a block of grid cells (or of swept
-//! pairs) per task, and the tests' results are put together block by block in the order
+//! still in cache). Large sets are visited in parallel, a block of grid cells (or a
+//! stripe) per task, and the tests' results are put together block by block in the order
 //! of one thread's visit, so they do not depend on the number of threads.
 
 use std::ops::Range;
@@ -15,6 +15,7 @@ use rayon::prelude::*;
 
 use crate::geom::{boxes_meet, Box2};
 use crate::pieces::Ctx;
+use crate::sweep::Stripes;
 
 /// Calls `visit(i, j, out)` (indices into `set`, i ≠ j, each unordered pair once) for
 /// every pair whose screen boxes (grown by the prefilter margin) meet, and returns what
@@ -68,21 +69,23 @@ pub(crate) fn box_pairs<K: Kernel, T: Send>(
             }
         }
         Plan::Sweep { work } if threads && work >= PARALLEL_WORK => {
-            let mut pairs = Vec::new();
-            sweep_pairs(&boxes, |i, j| pairs.push((i as u32, j as u32)));
-            let parts: Vec<Vec<T>> = pairs
-                .par_chunks(PAIRS_PER_TASK)
-                .map(|chunk| {
+            let stripes = Stripes::of(&boxes);
+            let parts: Vec<Vec<T>> = (0..stripes.len())
+                .into_par_iter()
+                .map(|k| {
                     let mut part = Vec::new();
-                    for &(i, j) in chunk {
-                        visit(i as usize, j as usize, &mut part);
-                    }
+                    stripes.pairs_in(&boxes, k, |i, j| visit(i, j, &mut part));
                     part
                 })
                 .collect();
             out = joined(parts);
         }
-        Plan::Sweep { .. } => sweep_pairs(&boxes, |i, j| visit(i, j, &mut out)),
+        Plan::Sweep { .. } => {
+            let stripes = Stripes::of(&boxes);
+            for k in 0..stripes.len() {
+                stripes.pairs_in(&boxes, k, |i, j| visit(i, j, &mut out));
+            }
+        }
     }
     out
 }
@@ -103,9 +106,6 @@ const PARALLEL_WORK: usize = 2048;
 
 /// Grid cells per parallel task, at least.
 const CELLS_PER_TASK: usize = 32;
-
-/// Swept pairs per parallel task.
-const PAIRS_PER_TASK: usize = 256;
 
 /// `0..n` in consecutive blocks of about `per` (at most 256 blocks).
 fn blocks(n: usize, per: usize) -> Vec<Range<usize>> {
@@ -336,7 +336,8 @@ pub(crate) fn estimated_box_pairs<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> u
     (x_overlaps(&boxes) as f64 * (x_overlaps(&turned) as f64 / all)) as usize
 }
 
-/// How many pairs of `boxes` overlap in x (what [`sweep_pairs`] looks at): all pairs
+/// How many pairs of `boxes` overlap in x (what a sweep over the whole set looks at, an
+/// upper bound on what [`Stripes`] look at): all pairs
 /// less those where one box ends before the other begins. Counted in parallel (a count:
 /// the same on any number of threads).
 fn x_overlaps(boxes: &[Box2]) -> usize {
@@ -351,61 +352,18 @@ fn x_overlaps(boxes: &[Box2]) -> usize {
     (n * (n - 1) / 2).saturating_sub(apart)
 }
 
-/// Calls `f(i, j)` (i < j, each pair once) for every pair of `boxes` that meet: boxes in
-/// order of their left sides, each against the earlier ones whose right side it has not
-/// passed. The active boxes are kept side by side (index, right side, y extent) in the
-/// order they became active; one pass drops those that ended and tests the rest in y
-/// (the only test left: an active box began no later and ends no earlier), writing the
-/// boxes met without a branch on the outcome (random outcomes mispredict).
-fn sweep_pairs(boxes: &[Box2], mut f: impl FnMut(usize, usize)) {
-    let mut by_x: Vec<u32> = (0..boxes.len() as u32).collect();
-    by_x.sort_unstable_by(|&a, &b| {
-        boxes[a as usize]
-            .min_x
-            .total_cmp(&boxes[b as usize].min_x)
-            .then(a.cmp(&b))
-    });
-    let mut index: Vec<u32> = Vec::new();
-    let mut right: Vec<f64> = Vec::new();
-    let mut span_y: Vec<[f64; 2]> = Vec::new();
-    let mut met: Vec<u32> = Vec::new();
-    for &i in &by_x {
-        let bi = &boxes[i as usize];
-        let (mut kept, mut hits) = (0, 0);
-        met.resize(index.len(), 0);
-        for k in 0..index.len() {
-            if right[k] < bi.min_x {
-                continue;
-            }
-            let (j, [y0, y1]) = (index[k], span_y[k]);
-            index[kept] = j;
-            right[kept] = right[k];
-            span_y[kept] = [y0, y1];
-            kept += 1;
-            met[hits] = j;
-            hits += usize::from((y0 <= bi.max_y) & (bi.min_y <= y1));
-        }
-        for &j in &met[..hits] {
-            f(i.min(j) as usize, i.max(j) as usize);
-        }
-        index.truncate(kept);
-        right.truncate(kept);
-        span_y.truncate(kept);
-        index.push(i);
-        right.push(bi.max_x);
-        span_y.push([bi.min_y, bi.max_y]);
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn pairs(boxes: &[Box2], sweep: bool) -> Vec<(usize, usize)> {
         let mut v = Vec::new();
-        let push = |i: usize, j: usize| v.push((i.min(j), i.max(j)));
+        let mut push = |i: usize, j: usize| v.push((i.min(j), i.max(j)));
         if sweep {
-            sweep_pairs(boxes, push);
+            let st = Stripes::of(boxes);
+            for k in 0..st.len() {
+                st.pairs_in(boxes, k, &mut push);
+            }
         } else {
             planned_pairs(boxes, push);
         }
@@ -425,7 +383,12 @@ mod tests {
                     g.big_pairs(boxes, k, &mut f);
                 }
             }
-            Plan::Sweep { .. } => sweep_pairs(boxes, f),
+            Plan::Sweep { .. } => {
+                let st = Stripes::of(boxes);
+                for k in 0..st.len() {
+                    st.pairs_in(boxes, k, &mut f);
+                }
+            }
         }
     }
 

@@ -51,6 +51,7 @@ mod rng;
 mod separation;
 mod shadows;
 mod simple;
+mod sweep;
 mod view;
 
 use std::time::Instant;
