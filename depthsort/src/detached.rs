@@ -49,6 +49,7 @@ pub(crate) fn order_apart<'a, K: Kernel>(
     if !group.is_empty() {
         groups.push((group, ctx.next_random()));
     }
+    let count = groups.iter().map(|(comps, _)| comps.len()).sum();
     let counted = Arc::new(AtomicUsize::new(ctx.pieces.len()));
     let shared: &Ctx<'a, K> = ctx;
     let done: Vec<Group<'a, K>> = groups
@@ -56,10 +57,10 @@ pub(crate) fn order_apart<'a, K: Kernel>(
         .map(|(comps, seed)| {
             let mut members: Vec<u32> = comps.iter().flatten().copied().collect();
             members.sort_unstable();
-            let pieces = members
-                .iter()
-                .map(|&p| shared.pieces[p as usize].clone())
-                .collect();
+            // Room for as many pieces again as the splits make (growing the vector would
+            // copy every piece).
+            let mut pieces = Vec::with_capacity(2 * members.len() + 8);
+            pieces.extend(members.iter().map(|&p| shared.pieces[p as usize].clone()));
             let mut local = shared.detached(pieces, seed, Arc::clone(&counted));
             let local_comps = comps
                 .into_iter()
@@ -73,7 +74,7 @@ pub(crate) fn order_apart<'a, K: Kernel>(
             }
         })
         .collect();
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(count);
     for g in done {
         ctx.stats.add_ordering(&g.ctx.stats);
         ctx.exceeded |= g.ctx.exceeded;
