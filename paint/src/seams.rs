@@ -70,7 +70,7 @@ pub fn seam_flaps_indexed(
     // joined outline or its flaps after it: no fragment is copied. Blocks of fragments
     // make their flaps in parallel and the blocks are put together in order, so the
     // output does not depend on the threads.
-    let (flaps, joined): (Vec<Flap>, Vec<(usize, Outline)>) = fragments
+    let parts: Vec<(Vec<Flap>, Vec<(usize, Outline)>)> = fragments
         .par_chunks(FRAGMENTS_PER_TASK)
         .enumerate()
         .map(|(c, block)| {
@@ -88,14 +88,15 @@ pub fn seam_flaps_indexed(
             }
             (flaps, joined)
         })
-        .reduce(
-            || (Vec::new(), Vec::new()),
-            |mut a, b| {
-                a.0.extend(b.0);
-                a.1.extend(b.1);
-                a
-            },
-        );
+        .collect();
+    // Put together once, in vectors of their final size (merging them pairwise grew and
+    // copied them again and again).
+    let mut flaps: Vec<Flap> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
+    let mut joined = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
+    for (mut f, mut j) in parts {
+        flaps.append(&mut f);
+        joined.append(&mut j);
+    }
     // A smooth fragment's flaps wait until the consecutive smooth fragments of its face
     // are out (Phong pieces): a flap between them would split the painters' run of the
     // face. Every later face is painted after that run, so each flap still comes first.
