@@ -45,7 +45,7 @@ impl Library {
     /// The material named `name`.
     #[cfg(test)]
     pub(crate) fn get(&self, name: &str) -> Option<&Material> {
-        self.index(name).map(|i| self.at(i))
+        self.index(name).map(|i| &self.materials[i])
     }
 
     /// The index of the material named `name` (it keeps its index when redefined).
@@ -53,9 +53,16 @@ impl Library {
         self.by_name.get(name).copied()
     }
 
-    /// The material at `index` (from [`Library::index`]).
-    pub(crate) fn at(&self, index: usize) -> &Material {
-        &self.materials[index]
+    /// The number of materials (each name once).
+    pub(crate) fn len(&self) -> usize {
+        self.materials.len()
+    }
+
+    /// Moves the material at `index` (from [`Library::index`]) out, leaving an unnamed
+    /// placeholder: an OBJ takes each library material into its scene once, on first
+    /// use, and never reads that index again (its scene material is remembered).
+    pub(crate) fn take(&mut self, index: usize) -> Material {
+        std::mem::replace(&mut self.materials[index], Material::unlit("", [0.0; 3]))
     }
 }
 

@@ -120,6 +120,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         let (n, line) = next?;
         obj.statement(n, strip_comment(&line))?;
     }
+    obj.scene.materials.shrink_to_fit();
     let s = &obj.scene;
     if s.faces.is_empty() && s.lines.is_empty() && s.points.is_empty() {
         obj.scene
@@ -519,7 +520,13 @@ impl Obj<'_> {
             match self.scene_material[i] {
                 NO_MATERIAL => {
                     check_u32(self.scene.materials.len(), "materials", self.path)?;
-                    let m = self.scene.add_material(self.library.at(i).clone());
+                    // Room for the whole library at its first use (one allocation
+                    // rather than a copy at each doubling); the rest is given back at
+                    // the end of the file.
+                    if self.scene.materials.capacity() == self.scene.materials.len() {
+                        self.scene.materials.reserve(self.library.len());
+                    }
+                    let m = self.scene.add_material(self.library.take(i));
                     self.scene_material[i] = m;
                     m
                 }
