@@ -22,6 +22,7 @@
 mod error;
 mod gltf;
 mod image;
+mod library_loader;
 mod mtl;
 mod obj;
 mod ply;
