@@ -71,6 +71,10 @@ impl LibraryLoader {
         warnings: &mut Vec<String>,
     ) -> Result<(), LoadError> {
         self.wait(warnings)?;
+        // Here, not on the other thread: memory a short-lived thread allocates and this
+        // one frees costs more (the other thread's allocator arena gives it back and
+        // asks for it anew at the next library).
+        self.library.reserve(&bytes);
         if bytes.len() < self.parallel_from {
             return mtl::parse(&bytes, &path, &mut self.library, warnings);
         }

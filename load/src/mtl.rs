@@ -30,7 +30,23 @@ pub(crate) struct Library {
     pub(crate) maps: HashMap<String, MapRef>,
 }
 
+/// At most this many materials are made room for at once by [`Library::reserve`]
+/// (8 MB): a file of many `newmtl` of one name must not reserve for all of them.
+const RESERVE_AT_MOST: usize = 1 << 16;
+
 impl Library {
+    /// Makes room for the materials MTL text `bytes` defines, counted by the word
+    /// `newmtl` (a hint: comments and redefinitions count too, and at most
+    /// [`RESERVE_AT_MOST`] are made room for). One allocation of the right size,
+    /// rather than a copy at each doubling, and on the calling thread.
+    pub(crate) fn reserve(&mut self, bytes: &[u8]) {
+        let count = memchr::memmem::find_iter(bytes, b"newmtl")
+            .take(RESERVE_AT_MOST)
+            .count();
+        self.materials.reserve(count);
+        self.by_name.reserve(count);
+    }
+
     /// Adds `m`, replacing a material of the same name.
     pub(crate) fn insert(&mut self, m: Material) {
         match self.by_name.get(&m.name) {
@@ -106,11 +122,13 @@ pub(crate) fn parse(
             if let Some(m) = current.take() {
                 lib.insert(m);
             }
-            // A redefinition starts without the earlier definition's map.
-            lib.maps.remove(&lossy(rest_after_keyword(line)));
             let name = lossy(rest_after_keyword(line));
             if name.is_empty() {
                 return Err(LoadError::syntax(path, n, "newmtl without a name"));
+            }
+            // A redefinition starts without the earlier definition's map.
+            if !lib.maps.is_empty() {
+                lib.maps.remove(&name);
             }
             let mut m = Material::default_grey();
             m.name = name;
@@ -343,6 +361,25 @@ mod tests {
         assert_eq!(lib.get("a").unwrap().kd, [0.0, 0.0, 1.0]);
         assert_eq!(lib.get("b").unwrap().kd, [0.0, 1.0, 0.0]);
         assert!(lib.get("c").is_none());
+    }
+
+    #[test]
+    fn room_is_made_for_the_materials_defined_but_not_for_any_count() {
+        let mut lib = Library::default();
+        lib.reserve(b"newmtl a\nKd 1 0 0\nnewmtl b\n# newmtl c\n");
+        assert!(lib.materials.capacity() >= 3);
+        let many = "newmtl a\n".repeat(4 * RESERVE_AT_MOST);
+        let mut lib = Library::default();
+        lib.reserve(many.as_bytes());
+        assert!(lib.materials.capacity() < 2 * RESERVE_AT_MOST);
+        parse(
+            many.as_bytes(),
+            Path::new("a.mtl"),
+            &mut lib,
+            &mut Vec::new(),
+        )
+        .unwrap();
+        assert_eq!(lib.len(), 1);
     }
 
     #[test]
