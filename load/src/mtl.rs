@@ -69,6 +69,17 @@ impl Library {
         self.by_name.get(name).copied()
     }
 
+    /// [`Library::index`], trying index `hint` first: a file that names materials in
+    /// the library's order finds each by one comparison of names, without hashing.
+    /// Exact: the material at an index always has the name that leads to that index,
+    /// or the empty name once taken, which no `usemtl` gives.
+    pub(crate) fn index_from(&self, hint: usize, name: &str) -> Option<usize> {
+        match self.materials.get(hint) {
+            Some(m) if !name.is_empty() && m.name == name => Some(hint),
+            _ => self.index(name),
+        }
+    }
+
     /// The number of materials (each name once).
     pub(crate) fn len(&self) -> usize {
         self.materials.len()
@@ -380,6 +391,29 @@ mod tests {
         )
         .unwrap();
         assert_eq!(lib.len(), 1);
+    }
+
+    #[test]
+    fn a_hint_finds_what_the_name_finds() {
+        let mut lib = Library::default();
+        let src = b"newmtl a\nnewmtl b\nnewmtl c\nnewmtl a\nKd 1 0 0\n";
+        parse(src, Path::new("a.mtl"), &mut lib, &mut Vec::new()).unwrap();
+        for name in ["a", "b", "c", "d", ""] {
+            for hint in [0, 1, 2, 3, usize::MAX] {
+                assert_eq!(
+                    lib.index_from(hint, name),
+                    lib.index(name),
+                    "{name} at {hint}"
+                );
+            }
+        }
+        // A material taken keeps its index; its place answers to no name.
+        let b = lib.take(1);
+        assert_eq!(b.name, "b");
+        assert_eq!(lib.index_from(1, "b"), Some(1));
+        assert_eq!(lib.index_from(1, ""), None);
+        assert_eq!(lib.index_from(0, "a"), Some(0));
+        assert_eq!(lib.get("a").unwrap().kd, [1.0, 0.0, 0.0]);
     }
 
     #[test]

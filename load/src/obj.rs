@@ -86,6 +86,9 @@ struct Obj<'a> {
     /// Library material index → index in the scene (added when first used; `NO_MATERIAL`
     /// before).
     scene_material: Vec<u32>,
+    /// The library index of the last material found in the library (the next one is
+    /// tried first).
+    library_index: usize,
     /// Names no library defines → index in the scene (the default grey, once each).
     undefined: HashMap<String, u32>,
     material_name: Option<String>,
@@ -123,6 +126,7 @@ fn parse_with(
         object_name: stem(path),
         object: None,
         scene_material: Vec::new(),
+        library_index: usize::MAX,
         undefined: HashMap::default(),
         material_name: None,
         material_line: 0,
@@ -539,7 +543,8 @@ impl Obj<'_> {
         let library = self.libraries.wait(&mut self.scene.warnings)?;
         let m = if let Some(&m) = self.undefined.get(name) {
             m
-        } else if let Some(i) = library.index(name) {
+        } else if let Some(i) = library.index_from(self.library_index.wrapping_add(1), name) {
+            self.library_index = i;
             if self.scene_material.len() <= i {
                 self.scene_material.resize(i + 1, NO_MATERIAL);
             }
