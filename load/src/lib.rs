@@ -24,6 +24,7 @@ mod gltf;
 mod image;
 mod library_loader;
 mod mtl;
+mod name_table;
 mod obj;
 mod ply;
 mod refs;

@@ -13,6 +13,7 @@
 use rustc_hash::FxHashMap as HashMap;
 use std::path::Path;
 
+use super::name_table::NameTable;
 use super::text::{lossy, number, rest_after_keyword, strip_comment, tokens, Lines};
 use super::{LoadError, Location};
 use limn_scene::Material;
@@ -24,7 +25,7 @@ use limn_scene::Material;
 #[derive(Debug, Default)]
 pub(crate) struct Library {
     materials: Vec<Material>,
-    by_name: HashMap<String, usize>,
+    by_name: NameTable,
     /// The `map_Kd` of each material that has one, by material name. The image is read
     /// only when a face with texture coordinates uses the material.
     pub(crate) maps: HashMap<String, MapRef>,
@@ -50,9 +51,9 @@ impl Library {
     /// Adds `m`, replacing a material of the same name.
     pub(crate) fn insert(&mut self, m: Material) {
         match self.by_name.get(&m.name) {
-            Some(&i) => self.materials[i] = m,
+            Some(i) => self.materials[i] = m,
             None => {
-                self.by_name.insert(m.name.clone(), self.materials.len());
+                self.by_name.insert(&m.name, self.materials.len());
                 self.materials.push(m);
             }
         }
@@ -66,7 +67,7 @@ impl Library {
 
     /// The index of the material named `name` (it keeps its index when redefined).
     pub(crate) fn index(&self, name: &str) -> Option<usize> {
-        self.by_name.get(name).copied()
+        self.by_name.get(name)
     }
 
     /// [`Library::index`], trying index `hint` first: a file that names materials in
