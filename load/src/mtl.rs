@@ -19,9 +19,9 @@ use super::{LoadError, Location};
 use limn_scene::Material;
 
 /// Materials by name, in the order of definition (later definitions replace earlier
-/// ones of the same name). Kept in a vector with a small table of names beside it: an
-/// OBJ with one material per face looks a name up for each, and the table's entries stay
-/// few cache lines.
+/// ones of the same name). Kept in a vector with a [`NameTable`] beside it: an OBJ with
+/// one material per face looks a name up for each, and such a lookup reads the table and
+/// one buffer of names, not the material.
 #[derive(Debug, Default)]
 pub(crate) struct Library {
     materials: Vec<Material>,
