@@ -704,4 +704,45 @@ mod tests {
         let e = both_ways(&files, &format!("{TRI}f 1 2 9\nmtllib bad.mtl\n")).unwrap_err();
         assert!(e.starts_with("m.obj:4:"), "{e}");
     }
+
+    /// Statements an OBJ of the generated tests is made of: vertices, faces, marks,
+    /// material names defined, redefined, undefined and used before their library, the
+    /// libraries (one with warnings, one failing at its line 3, one missing), errors.
+    const STATEMENTS: &[&str] = &[
+        "v 0 0 0\nv 1 0 0\nv 0 1 0",
+        "f 1 2 3",
+        "f -1 -2 -3",
+        "l 1 2",
+        "p 1",
+        "usemtl a",
+        "usemtl b",
+        "usemtl t",
+        "usemtl late",
+        "usemtl gone",
+        "mtllib a.mtl",
+        "mtllib late.mtl",
+        "mtllib bad.mtl",
+        "mtllib nowhere.mtl late.mtl",
+        "f 1 2 99",
+        "vt 0.5 0.5\nf 1/1 2/1 3/1",
+    ];
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+
+        #[test]
+        fn any_obj_loads_the_same_with_libraries_on_another_thread(
+            picks in proptest::collection::vec(0..STATEMENTS.len(), 0..24)
+        ) {
+            let bad = "newmtl a\nKd 1 0 0\nKd 1 x 0\n";
+            let files = [("a.mtl", A), ("late.mtl", LATE), ("bad.mtl", bad)];
+            let mut obj = String::new();
+            for i in picks {
+                obj += STATEMENTS[i];
+                obj.push('\n');
+            }
+            // `both_ways` asserts that both ways agree.
+            let _ = both_ways(&files, &obj);
+        }
+    }
 }
