@@ -6,7 +6,12 @@
 //! * `soup10k.obj`, `soup10k-lib.obj` and `soup10k-mtl.obj`: the same 10,000 random
 //!   triangles (edges up to 0.08 in a 2 × 2 × 2 cube): without materials; with a library
 //!   of 10,000 materials (`soup10k-mtl.mtl`) and one `usemtl` before all faces; with the
-//!   same library and one `usemtl` per face, each naming another material.
+//!   same library and one `usemtl` per face, each naming another material;
+//! * what those 10,000 `usemtl` lines cost, each file of the same size as
+//!   `soup10k-mtl.obj`: `soup10k-shuf.obj` names the materials in another order (face `i`
+//!   uses `m<7919·i mod 10,000>`, so that the library's order does not help);
+//!   `soup10k-same.obj` names `m0` on every such line (padded with spaces to the same
+//!   length); `soup10k-comment.obj` has a comment line of the same length instead.
 //!
 //! ```text
 //! cargo run --release -p limn-load --example large_scenes -- FOLDER
@@ -29,6 +34,12 @@ enum Materials {
     One,
     /// The library, and `usemtl m<i>` before face `i`.
     PerFace,
+    /// The library, and `usemtl m<7919 i mod n>` before face `i` of `n`.
+    Scattered,
+    /// The library, and `usemtl m0` before each face, as long as `usemtl m<i>`.
+    SameName,
+    /// The library, and a comment before each face, as long as `usemtl m<i>`.
+    Comments,
 }
 
 /// Writes the vertices and faces of `scene` as OBJ, with `mtllib soup10k-mtl.mtl` and
@@ -45,8 +56,13 @@ fn write_obj(scene: &Scene, path: &Path, materials: Materials) -> std::io::Resul
         writeln!(out, "v {} {} {}", v.x, v.y, v.z)?;
     }
     for (i, f) in scene.faces.iter().enumerate() {
-        if materials == Materials::PerFace {
-            writeln!(out, "usemtl m{i}")?;
+        let width = format!("usemtl m{i}").len();
+        match materials {
+            Materials::PerFace => writeln!(out, "usemtl m{i}")?,
+            Materials::Scattered => writeln!(out, "usemtl m{}", i * 7919 % scene.faces.len())?,
+            Materials::SameName => writeln!(out, "{:width$}", "usemtl m0")?,
+            Materials::Comments => writeln!(out, "#{}", "x".repeat(width - 1))?,
+            Materials::None | Materials::One => {}
         }
         write!(out, "f")?;
         for v in &f.vertices {
@@ -100,6 +116,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     write_obj(&soup, &dir.join("soup10k.obj"), Materials::None)?;
     write_obj(&soup, &dir.join("soup10k-lib.obj"), Materials::One)?;
     write_obj(&soup, &dir.join("soup10k-mtl.obj"), Materials::PerFace)?;
+    write_obj(&soup, &dir.join("soup10k-shuf.obj"), Materials::Scattered)?;
+    write_obj(&soup, &dir.join("soup10k-same.obj"), Materials::SameName)?;
+    write_obj(&soup, &dir.join("soup10k-comment.obj"), Materials::Comments)?;
     write_mtl(soup.faces.len(), &dir.join("soup10k-mtl.mtl"))?;
     Ok(())
 }

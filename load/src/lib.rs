@@ -22,7 +22,9 @@
 mod error;
 mod gltf;
 mod image;
+mod library_loader;
 mod mtl;
+mod name_table;
 mod obj;
 mod ply;
 mod refs;

@@ -13,30 +13,47 @@
 use rustc_hash::FxHashMap as HashMap;
 use std::path::Path;
 
+use super::name_table::NameTable;
 use super::text::{lossy, number, rest_after_keyword, strip_comment, tokens, Lines};
 use super::{LoadError, Location};
 use limn_scene::Material;
 
 /// Materials by name, in the order of definition (later definitions replace earlier
-/// ones of the same name). Kept in a vector with a small table of names beside it: an
-/// OBJ with one material per face looks a name up for each, and the table's entries stay
-/// few cache lines.
+/// ones of the same name). Kept in a vector with a [`NameTable`] beside it: an OBJ with
+/// one material per face looks a name up for each, and such a lookup reads the table and
+/// one buffer of names, not the material.
 #[derive(Debug, Default)]
 pub(crate) struct Library {
     materials: Vec<Material>,
-    by_name: HashMap<String, usize>,
+    by_name: NameTable,
     /// The `map_Kd` of each material that has one, by material name. The image is read
     /// only when a face with texture coordinates uses the material.
     pub(crate) maps: HashMap<String, MapRef>,
 }
 
+/// At most this many materials are made room for at once by [`Library::reserve`]
+/// (8 MB): a file of many `newmtl` of one name must not reserve for all of them.
+const RESERVE_AT_MOST: usize = 1 << 16;
+
 impl Library {
+    /// Makes room for the materials MTL text `bytes` defines, counted by the word
+    /// `newmtl` (a hint: comments and redefinitions count too, and at most
+    /// [`RESERVE_AT_MOST`] are made room for). One allocation of the right size,
+    /// rather than a copy at each doubling, and on the calling thread.
+    pub(crate) fn reserve(&mut self, bytes: &[u8]) {
+        let count = memchr::memmem::find_iter(bytes, b"newmtl")
+            .take(RESERVE_AT_MOST)
+            .count();
+        self.materials.reserve(count);
+        self.by_name.reserve(count);
+    }
+
     /// Adds `m`, replacing a material of the same name.
     pub(crate) fn insert(&mut self, m: Material) {
         match self.by_name.get(&m.name) {
-            Some(&i) => self.materials[i] = m,
+            Some(i) => self.materials[i] = m,
             None => {
-                self.by_name.insert(m.name.clone(), self.materials.len());
+                self.by_name.insert(&m.name, self.materials.len());
                 self.materials.push(m);
             }
         }
@@ -45,17 +62,35 @@ impl Library {
     /// The material named `name`.
     #[cfg(test)]
     pub(crate) fn get(&self, name: &str) -> Option<&Material> {
-        self.index(name).map(|i| self.at(i))
+        self.index(name).map(|i| &self.materials[i])
     }
 
     /// The index of the material named `name` (it keeps its index when redefined).
     pub(crate) fn index(&self, name: &str) -> Option<usize> {
-        self.by_name.get(name).copied()
+        self.by_name.get(name)
     }
 
-    /// The material at `index` (from [`Library::index`]).
-    pub(crate) fn at(&self, index: usize) -> &Material {
-        &self.materials[index]
+    /// [`Library::index`], trying index `hint` first: a file that names materials in
+    /// the library's order finds each by one comparison of names, without hashing.
+    /// Exact: the material at an index always has the name that leads to that index,
+    /// or the empty name once taken, which no `usemtl` gives.
+    pub(crate) fn index_from(&self, hint: usize, name: &str) -> Option<usize> {
+        match self.materials.get(hint) {
+            Some(m) if !name.is_empty() && m.name == name => Some(hint),
+            _ => self.index(name),
+        }
+    }
+
+    /// The number of materials (each name once).
+    pub(crate) fn len(&self) -> usize {
+        self.materials.len()
+    }
+
+    /// Moves the material at `index` (from [`Library::index`]) out, leaving an unnamed
+    /// placeholder: an OBJ takes each library material into its scene once, on first
+    /// use, and never reads that index again (its scene material is remembered).
+    pub(crate) fn take(&mut self, index: usize) -> Material {
+        std::mem::replace(&mut self.materials[index], Material::unlit("", [0.0; 3]))
     }
 }
 
@@ -99,11 +134,13 @@ pub(crate) fn parse(
             if let Some(m) = current.take() {
                 lib.insert(m);
             }
-            // A redefinition starts without the earlier definition's map.
-            lib.maps.remove(&lossy(rest_after_keyword(line)));
             let name = lossy(rest_after_keyword(line));
             if name.is_empty() {
                 return Err(LoadError::syntax(path, n, "newmtl without a name"));
+            }
+            // A redefinition starts without the earlier definition's map.
+            if !lib.maps.is_empty() {
+                lib.maps.remove(&name);
             }
             let mut m = Material::default_grey();
             m.name = name;
@@ -336,6 +373,48 @@ mod tests {
         assert_eq!(lib.get("a").unwrap().kd, [0.0, 0.0, 1.0]);
         assert_eq!(lib.get("b").unwrap().kd, [0.0, 1.0, 0.0]);
         assert!(lib.get("c").is_none());
+    }
+
+    #[test]
+    fn room_is_made_for_the_materials_defined_but_not_for_any_count() {
+        let mut lib = Library::default();
+        lib.reserve(b"newmtl a\nKd 1 0 0\nnewmtl b\n# newmtl c\n");
+        assert!(lib.materials.capacity() >= 3);
+        let many = "newmtl a\n".repeat(4 * RESERVE_AT_MOST);
+        let mut lib = Library::default();
+        lib.reserve(many.as_bytes());
+        assert!(lib.materials.capacity() < 2 * RESERVE_AT_MOST);
+        parse(
+            many.as_bytes(),
+            Path::new("a.mtl"),
+            &mut lib,
+            &mut Vec::new(),
+        )
+        .unwrap();
+        assert_eq!(lib.len(), 1);
+    }
+
+    #[test]
+    fn a_hint_finds_what_the_name_finds() {
+        let mut lib = Library::default();
+        let src = b"newmtl a\nnewmtl b\nnewmtl c\nnewmtl a\nKd 1 0 0\n";
+        parse(src, Path::new("a.mtl"), &mut lib, &mut Vec::new()).unwrap();
+        for name in ["a", "b", "c", "d", ""] {
+            for hint in [0, 1, 2, 3, usize::MAX] {
+                assert_eq!(
+                    lib.index_from(hint, name),
+                    lib.index(name),
+                    "{name} at {hint}"
+                );
+            }
+        }
+        // A material taken keeps its index; its place answers to no name.
+        let b = lib.take(1);
+        assert_eq!(b.name, "b");
+        assert_eq!(lib.index_from(1, "b"), Some(1));
+        assert_eq!(lib.index_from(1, ""), None);
+        assert_eq!(lib.index_from(0, "a"), Some(0));
+        assert_eq!(lib.get("a").unwrap().kd, [1.0, 0.0, 0.0]);
     }
 
     #[test]

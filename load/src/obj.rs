@@ -18,6 +18,10 @@
 //! (see [`crate::image`]). Smoothing groups and the free-form geometry statements are
 //! accepted and ignored; any other statement is an error (so
 //! binary garbage is reported, not silently dropped).
+//!
+//! A large MTL library is parsed on another thread while the lines below its `mtllib`
+//! are read (see [`crate::library_loader`]); the scene, its warnings and the first error
+//! are those of reading the library at its line.
 
 use rustc_hash::FxHashMap as HashMap;
 use std::path::{Path, PathBuf};
@@ -25,7 +29,7 @@ use std::sync::Arc;
 
 use glam::DVec3;
 
-use super::mtl::{self, Library};
+use super::library_loader::{LibraryLoader, PARALLEL_FROM};
 use super::text::{lossy, number, parse_i64, rest_after_keyword, strip_comment, tokens, Lines};
 use super::{check_u32, refs, stem, LoadError, LoadOptions, Location};
 use limn_scene::{Face, Material, PointMark, Polyline, Scene, Texture};
@@ -73,7 +77,8 @@ struct Obj<'a> {
     path: &'a Path,
     opts: &'a LoadOptions,
     scene: Scene,
-    library: Library,
+    /// The `mtllib` libraries, possibly still being parsed on another thread.
+    libraries: LibraryLoader,
     /// Object name → index, so that `g a … g b … g a` continues object `a`.
     objects: HashMap<String, u32>,
     object_name: String,
@@ -81,6 +86,9 @@ struct Obj<'a> {
     /// Library material index → index in the scene (added when first used; `NO_MATERIAL`
     /// before).
     scene_material: Vec<u32>,
+    /// The library index of the last material found in the library (the next one is
+    /// tried first).
+    library_index: usize,
     /// Names no library defines → index in the scene (the default grey, once each).
     undefined: HashMap<String, u32>,
     material_name: Option<String>,
@@ -96,17 +104,29 @@ struct Obj<'a> {
     moved: HashMap<(u32, u32), u32>,
 }
 
-/// Parses an OBJ file (and the MTL libraries it names).
+/// Parses an OBJ file (and the MTL libraries it names, large ones on another thread
+/// while the OBJ is read).
 pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Scene, LoadError> {
+    parse_with(bytes, path, opts, PARALLEL_FROM)
+}
+
+/// [`parse`], with libraries of `parallel_from` bytes or more parsed on another thread.
+fn parse_with(
+    bytes: &[u8],
+    path: &Path,
+    opts: &LoadOptions,
+    parallel_from: usize,
+) -> Result<Scene, LoadError> {
     let mut obj = Obj {
         path,
         opts,
         scene: Scene::default(),
-        library: Library::default(),
+        libraries: LibraryLoader::new(parallel_from),
         objects: HashMap::default(),
         object_name: stem(path),
         object: None,
         scene_material: Vec::new(),
+        library_index: usize::MAX,
         undefined: HashMap::default(),
         material_name: None,
         material_line: 0,
@@ -115,11 +135,11 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         textured: HashMap::default(),
         moved: HashMap::default(),
     };
-    let mut lines = Lines::new(bytes, path, true);
-    while let Some(next) = lines.next_line() {
-        let (n, line) = next?;
-        obj.statement(n, strip_comment(&line))?;
-    }
+    let read = obj.statements(bytes);
+    // A library's error comes first: it was named above any line the OBJ failed at.
+    obj.libraries.wait(&mut obj.scene.warnings)?;
+    read?;
+    obj.scene.materials.shrink_to_fit();
     let s = &obj.scene;
     if s.faces.is_empty() && s.lines.is_empty() && s.points.is_empty() {
         obj.scene
@@ -130,6 +150,15 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
 }
 
 impl Obj<'_> {
+    fn statements(&mut self, bytes: &[u8]) -> Result<(), LoadError> {
+        let mut lines = Lines::new(bytes, self.path, true);
+        while let Some(next) = lines.next_line() {
+            let (n, line) = next?;
+            self.statement(n, strip_comment(&line))?;
+        }
+        Ok(())
+    }
+
     fn statement(&mut self, n: u64, line: &[u8]) -> Result<(), LoadError> {
         let mut toks = tokens(line);
         let Some(key) = toks.next() else {
@@ -340,7 +369,8 @@ impl Obj<'_> {
     /// is not the identity.
     fn read_map(&mut self, material: u32) -> Result<Option<UvTransform>, LoadError> {
         let name = self.material_name.clone().unwrap_or_default();
-        let Some(map) = self.library.maps.get(&name).cloned() else {
+        let library = self.libraries.wait(&mut self.scene.warnings)?;
+        let Some(map) = library.maps.get(&name).cloned() else {
             return Ok(None);
         };
         let file = refs::resolve(&map.file, &map.at, self.opts)?;
@@ -510,16 +540,24 @@ impl Obj<'_> {
         let name = self.material_name.as_deref().unwrap_or("");
         // The default grey is keyed by the empty name, which no usemtl can give.
         // A name first used while no library defined it stays the default grey.
+        let library = self.libraries.wait(&mut self.scene.warnings)?;
         let m = if let Some(&m) = self.undefined.get(name) {
             m
-        } else if let Some(i) = self.library.index(name) {
+        } else if let Some(i) = library.index_from(self.library_index.wrapping_add(1), name) {
+            self.library_index = i;
             if self.scene_material.len() <= i {
                 self.scene_material.resize(i + 1, NO_MATERIAL);
             }
             match self.scene_material[i] {
                 NO_MATERIAL => {
                     check_u32(self.scene.materials.len(), "materials", self.path)?;
-                    let m = self.scene.add_material(self.library.at(i).clone());
+                    // Room for the whole library at its first use (one allocation
+                    // rather than a copy at each doubling); the rest is given back at
+                    // the end of the file.
+                    if self.scene.materials.capacity() == self.scene.materials.len() {
+                        self.scene.materials.reserve(library.len());
+                    }
+                    let m = self.scene.add_material(library.take(i));
                     self.scene_material[i] = m;
                     m
                 }
@@ -560,10 +598,12 @@ impl Obj<'_> {
         };
         for name in names {
             let file = refs::resolve(&name, &at, self.opts)?;
+            // The libraries named before come first (their warnings too).
+            self.libraries.wait(&mut self.scene.warnings)?;
             match std::fs::read(&file) {
                 Ok(bytes) => {
                     self.scene.files.push(file.clone());
-                    mtl::parse(&bytes, &file, &mut self.library, &mut self.scene.warnings)?
+                    self.libraries.add(bytes, file, &mut self.scene.warnings)?
                 }
                 Err(e) => self.scene.warnings.push(format!(
                     "{}:{n}: cannot read material library {}: {e}; using default materials",
@@ -574,5 +614,135 @@ impl Obj<'_> {
         }
         // Materials already resolved keep what they were; later faces see the new ones.
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Loads `obj` (written with `files` beside it) with every library parsed in
+    /// line and with every library parsed on another thread; both must agree.
+    fn both_ways(files: &[(&str, &str)], obj: &str) -> Result<Scene, String> {
+        let dir = tempfile::tempdir().unwrap();
+        for (name, text) in files {
+            std::fs::write(dir.path().join(name), text).unwrap();
+        }
+        let path = dir.path().join("m.obj");
+        let opts = LoadOptions::default();
+        let run = |from| {
+            parse_with(obj.as_bytes(), &path, &opts, from).map_err(|e| {
+                // Messages name the temporary folder: keep the part after it.
+                let msg = e.to_string();
+                msg.rsplit('/').next().unwrap_or(&msg).to_string()
+            })
+        };
+        let (here, threaded) = (run(usize::MAX), run(0));
+        assert_eq!(here, threaded, "in line and on another thread differ");
+        here
+    }
+
+    const A: &str =
+        "newmtl a\nKd 1 0 0\nnewmtl b\nKd 0 1 2\nmap_Ks x.png\nnewmtl t\nmap_Kd t.png\n";
+    const LATE: &str = "newmtl late\nKd 0 0 1\nnewmtl a\nKd 1 1 1\n";
+    const TRI: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+    #[test]
+    fn libraries_on_another_thread_give_the_same_scene() {
+        let files = [("a.mtl", A), ("late.mtl", LATE)];
+        let obj = format!(
+            "mtllib a.mtl\n{TRI}usemtl b\nf 1 2 3\nusemtl a\nf 1 2 3\nusemtl late\nf 1 2 3\n\
+             mtllib nowhere.mtl late.mtl\nusemtl late\nf 1 2 3\nusemtl a\nl 1 2\n\
+             usemtl t\nf 1 2 3\nusemtl gone\np 3\n"
+        );
+        let s = both_ways(&files, &obj).unwrap();
+        let names: Vec<&str> = s.materials.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["b", "a", "default", "t", "default"]);
+        assert_eq!(s.materials[1].kd, [1.0, 0.0, 0.0], "a as first defined");
+        let w = s.warnings.join("\n");
+        // In the sequential order: a.mtl's clamp and texture warnings, then the OBJ's.
+        let order = [
+            "a.mtl:4: colour",
+            "a.mtl:5: texture",
+            "m.obj:9: material \"late\"",
+            "nowhere.mtl",
+            "m.obj:18: material \"gone\"",
+        ];
+        let at: Vec<usize> = order
+            .iter()
+            .map(|o| w.find(o).unwrap_or(usize::MAX))
+            .collect();
+        assert!(at.windows(2).all(|p| p[0] < p[1]), "{w}");
+        assert_eq!(s.warnings.len(), order.len(), "{w}");
+        // The libraries stay among the files read.
+        assert_eq!(s.files.len(), 2);
+    }
+
+    #[test]
+    fn a_library_waited_for_only_at_the_end_still_warns() {
+        let s = both_ways(&[("a.mtl", A)], &format!("mtllib a.mtl\n{TRI}f 1 2 3\n")).unwrap();
+        assert_eq!(s.warnings.len(), 2, "{:?}", s.warnings);
+        assert_eq!(s.materials, vec![Material::default_grey()]);
+    }
+
+    #[test]
+    fn a_library_error_comes_before_later_errors_of_the_obj() {
+        let bad = "newmtl a\nKd 1 0 0\nKd 1 x 0\n";
+        let files = [("bad.mtl", bad), ("a.mtl", A)];
+        // An OBJ error below the `mtllib`, before and after a `usemtl` would need it.
+        for tail in [
+            "f 1 2 9\n",
+            "usemtl a\nf 1 2 3\nf 1 2 9\n",
+            "mtllib a.mtl\nf 1 2 9\n",
+            "",
+        ] {
+            let obj = format!("mtllib bad.mtl\n{TRI}{tail}");
+            let e = both_ways(&files, &obj).unwrap_err();
+            assert!(e.starts_with("bad.mtl:3:"), "{tail:?}: {e}");
+        }
+        // An OBJ error above the `mtllib` comes first.
+        let e = both_ways(&files, &format!("{TRI}f 1 2 9\nmtllib bad.mtl\n")).unwrap_err();
+        assert!(e.starts_with("m.obj:4:"), "{e}");
+    }
+
+    /// Statements an OBJ of the generated tests is made of: vertices, faces, marks,
+    /// material names defined, redefined, undefined and used before their library, the
+    /// libraries (one with warnings, one failing at its line 3, one missing), errors.
+    const STATEMENTS: &[&str] = &[
+        "v 0 0 0\nv 1 0 0\nv 0 1 0",
+        "f 1 2 3",
+        "f -1 -2 -3",
+        "l 1 2",
+        "p 1",
+        "usemtl a",
+        "usemtl b",
+        "usemtl t",
+        "usemtl late",
+        "usemtl gone",
+        "mtllib a.mtl",
+        "mtllib late.mtl",
+        "mtllib bad.mtl",
+        "mtllib nowhere.mtl late.mtl",
+        "f 1 2 99",
+        "vt 0.5 0.5\nf 1/1 2/1 3/1",
+    ];
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+
+        #[test]
+        fn any_obj_loads_the_same_with_libraries_on_another_thread(
+            picks in proptest::collection::vec(0..STATEMENTS.len(), 0..24)
+        ) {
+            let bad = "newmtl a\nKd 1 0 0\nKd 1 x 0\n";
+            let files = [("a.mtl", A), ("late.mtl", LATE), ("bad.mtl", bad)];
+            let mut obj = String::new();
+            for i in picks {
+                obj += STATEMENTS[i];
+                obj.push('\n');
+            }
+            // `both_ways` asserts that both ways agree.
+            let _ = both_ways(&files, &obj);
+        }
     }
 }

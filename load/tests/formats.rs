@@ -163,6 +163,68 @@ fn obj_materials_are_added_once_each_in_order_of_first_use() {
     assert!(undefined[0].contains("m.obj:11") && undefined[1].contains("m.obj:18"));
 }
 
+/// The material a library of `n` gives name `k` (every field differs between names).
+fn numbered_material(k: usize, n: usize) -> Material {
+    let f = k as f64 / n as f64;
+    Material {
+        name: format!("m{k}"),
+        kd: [f, 1.0 - f, 0.5],
+        ks: [0.25, f, 0.0],
+        ns: k as f64,
+        opacity: 1.0 - f / 2.0,
+        illum: (k % 3) as u8,
+        ..Material::default_grey()
+    }
+}
+
+#[test]
+fn obj_materials_are_the_library_definitions_in_order_of_first_use() {
+    let n = 40;
+    let d = dir();
+    let mut mtl = String::new();
+    for k in 0..n {
+        let m = numbered_material(k, n);
+        mtl += &format!(
+            "newmtl {}\nKd {} {} {}\nKs {} {} {}\nNs {}\nd {}\nillum {}\n",
+            m.name, m.kd[0], m.kd[1], m.kd[2], m.ks[0], m.ks[1], m.ks[2], m.ns, m.opacity, m.illum
+        );
+    }
+    write(d.path(), "many.mtl", &mtl);
+    // Used from the last to the first, every third name twice in a row and every name
+    // again afterwards (found in the scene, not taken from the library again).
+    let mut src = String::from("mtllib many.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    for k in (0..n).rev().chain(0..n) {
+        src += &format!("usemtl m{k}\nf 1 2 3\n");
+        if k % 3 == 0 {
+            src += &format!("usemtl m{k}\nf 1 2 3\n");
+        }
+    }
+    let s = ok(&write(d.path(), "many.obj", &src));
+    let want: Vec<Material> = (0..n).rev().map(|k| numbered_material(k, n)).collect();
+    assert_eq!(s.materials, want);
+    let used: Vec<u32> = s.faces.iter().map(|f| f.material).collect();
+    let mut expected = Vec::new();
+    for k in (0..n).rev().chain(0..n) {
+        let m = (n - 1 - k) as u32;
+        expected.push(m);
+        if k % 3 == 0 {
+            expected.push(m);
+        }
+    }
+    assert_eq!(used, expected);
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+
+    // One name of the library used: the scene keeps room for about one material, not
+    // for the whole library.
+    let one = ok(&write(
+        d.path(),
+        "one.obj",
+        "mtllib many.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m7\nf 1 2 3\n",
+    ));
+    assert_eq!(one.materials, vec![numbered_material(7, n)]);
+    assert!(one.materials.capacity() < n, "{}", one.materials.capacity());
+}
+
 #[test]
 fn obj_mtllib_inside_a_subfolder_is_fine() {
     let d = dir();
