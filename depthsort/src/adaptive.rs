@@ -91,7 +91,8 @@ fn order_set<K: Kernel>(
         );
         ws.tested = box_pairs(shared, &set, |i, j, out: &mut Vec<(u32, u32, Pair)>| {
             let (p, q) = (set[i], set[j]);
-            if !shared.apart_by_construction(p, q) && !axes.disjoint(i, j) {
+            // The axes first: they are read from one table, the pieces from all over.
+            if !axes.disjoint(i, j) && !shared.apart_by_construction(p, q) {
                 out.push((i as u32, j as u32, shared.pair(p, q)));
             }
         });
@@ -184,10 +185,10 @@ const PROBE_SAMPLE: usize = 64;
 /// when a piece is in conflict with one other piece or more on average, the conflicts
 /// form a giant connected part, as in a random graph of that mean degree, and so does the
 /// occlusion graph's largest component. The mean is measured on [`PROBE_SAMPLE`] evenly
-/// spaced members against the whole set, [`PROBE_BLOCK`] members at a time (in parallel),
-/// spread over the set in bit-reversed order; the count stops as soon as it reaches the
-/// answer, which is the same as counting them all (the count only grows), on any number
-/// of threads.
+/// spaced members against the whole set, [`PROBE_BLOCK`] members at a time (the set read
+/// in parallel chunks, once per block), spread over the set in bit-reversed order; the
+/// count stops as soon as it reaches the answer, which is the same as counting them all
+/// (the count only grows), on any number of threads.
 fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
     let n = set.len();
     let m = ctx.margin;
@@ -195,33 +196,45 @@ fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
         .iter()
         .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
         .collect();
-    let conflicts_of = |k: usize| {
-        let a = k * n / PROBE_SAMPLE;
-        let (p, bp) = (set[a], &boxes[a]);
-        let pp = &ctx.pieces[p as usize];
+    // The conflicts of the members of a block with every piece, the set read once per
+    // block (each piece against the block's members) rather than once per member.
+    let conflicts_in = |members: &[usize; PROBE_BLOCK]| -> usize {
         (0..n)
-            .filter(|&b| {
-                let q = set[b];
-                b != a
-                    && boxes_meet(bp, &boxes[b], 0.0)
-                    && !convex_disjoint(&pp.pts, &ctx.pieces[q as usize].pts, m)
-                    && ctx.pair(p, q) == Pair::Conflict
+            .into_par_iter()
+            .with_min_len(PROBE_CHUNK)
+            .map(|b| {
+                let (q, bq) = (set[b], &boxes[b]);
+                members
+                    .iter()
+                    .filter(|&&a| {
+                        let p = set[a];
+                        a != b
+                            && boxes_meet(&boxes[a], bq, 0.0)
+                            && !convex_disjoint(
+                                &ctx.pieces[p as usize].pts,
+                                &ctx.pieces[q as usize].pts,
+                                m,
+                            )
+                            && ctx.pair(p, q) == Pair::Conflict
+                    })
+                    .count()
             })
-            .count()
+            .sum()
     };
     let spread = |j: usize| j.reverse_bits() >> (usize::BITS - PROBE_SAMPLE.trailing_zeros());
     let mut conflicts = 0;
     for block in (0..PROBE_SAMPLE).step_by(PROBE_BLOCK) {
-        conflicts += (block..block + PROBE_BLOCK)
-            .into_par_iter()
-            .map(|j| conflicts_of(spread(j)))
-            .sum::<usize>();
+        let members = std::array::from_fn(|t| spread(block + t) * n / PROBE_SAMPLE);
+        conflicts += conflicts_in(&members);
         if conflicts >= PROBE_SAMPLE {
             return true;
         }
     }
     false
 }
+
+/// Pieces per parallel task of the probe.
+const PROBE_CHUNK: usize = 1024;
 
 /// Members of the probe of [`cycles_everywhere`] tested between two looks at the count.
 const PROBE_BLOCK: usize = 8;
