@@ -70,7 +70,7 @@ pub fn seam_flaps_indexed(
     // joined outline or its flaps after it: no fragment is copied. Blocks of fragments
     // make their flaps in parallel and the blocks are put together in order, so the
     // output does not depend on the threads.
-    let parts: Vec<(Vec<Flap>, Vec<(usize, Outline)>)> = fragments
+    let parts: Vec<BlockFlaps> = fragments
         .par_chunks(FRAGMENTS_PER_TASK)
         .enumerate()
         .map(|(c, block)| {
@@ -133,6 +133,10 @@ pub fn seam_flaps_indexed(
 
 /// A flap and the index of the fragment it is painted after.
 type Flap = (usize, PaintFragment);
+
+/// What a block of fragments makes: its flaps, and its fragments' joined outlines (with
+/// their indices).
+type BlockFlaps = (Vec<Flap>, Vec<(usize, Outline)>);
 
 /// A fragment's new corners and which of its edges are original.
 type Outline = (Vec<[f64; 2]>, Vec<bool>);
