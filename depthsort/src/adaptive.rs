@@ -319,12 +319,17 @@ pub(crate) fn adaptive<K: Kernel>(
     let mut steps = Vec::with_capacity(top.len());
     for t in top.into_iter().rev() {
         match t {
-            Task::Emit(run) => steps.push(Ok(run)),
+            Task::Emit(alone) => steps.push(Ok(alone)),
             Task::Split(c) => {
                 steps.push(Err(comps.len()));
                 comps.push(c);
             }
-            Task::Order(_) | Task::Deep(..) => unreachable!("order_set makes no such task"),
+            // Not made by `order_set`; ordered here all the same (its pieces are its own).
+            other => {
+                let mut o = Vec::new();
+                run(ctx, other, candidates, &mut ws, &mut o);
+                steps.push(Ok(o));
+            }
         }
     }
     let orders = order_apart(ctx, comps, |local, comps| {
@@ -340,7 +345,7 @@ pub(crate) fn adaptive<K: Kernel>(
     });
     for step in steps {
         match step {
-            Ok(run) => out.extend(run),
+            Ok(pieces) => out.extend(pieces),
             Err(k) => out.extend_from_slice(&orders[k]),
         }
     }
