@@ -1,6 +1,8 @@
 //! Convex polygons as a supporting plane plus one bounding plane per edge, and their
 //! classification and splitting by a plane.
 
+use std::borrow::Cow;
+
 use smallvec::SmallVec;
 
 use crate::plane::Plane;
@@ -140,22 +142,26 @@ impl ExactPolygon {
     /// plane's dominant exact axis, as [`crate::face`] defines it. Panics if `i` is out
     /// of range.
     fn input_edge(&self, i: usize) -> Plane {
-        let n = self.corners.len();
-        let (p, q) = (self.corners[i].pos, self.corners[(i + 1) % n].pos);
-        let (k, flip) = input_edge_axis(&self.support);
-        Plane::edge(p, q, k, flip)
+        self.input_edge_along(i, input_edge_axis(&self.support))
     }
 
-    /// Every edge plane, made now for an input polygon.
-    fn edge_planes(&self) -> SmallVec<[Plane; INLINE]> {
-        if !self.edges.is_empty() {
-            return self.edges.clone();
-        }
-        let (k, flip) = input_edge_axis(&self.support);
+    /// [`ExactPolygon::input_edge`] with the axis and orientation already found.
+    fn input_edge_along(&self, i: usize, (k, flip): (usize, bool)) -> Plane {
         let n = self.corners.len();
-        (0..n)
-            .map(|i| Plane::edge(self.corners[i].pos, self.corners[(i + 1) % n].pos, k, flip))
-            .collect()
+        Plane::edge(self.corners[i].pos, self.corners[(i + 1) % n].pos, k, flip)
+    }
+
+    /// Every edge plane: the stored ones, or made now for an input polygon.
+    fn edge_planes(&self) -> Cow<'_, [Plane]> {
+        if !self.edges.is_empty() {
+            return Cow::Borrowed(&self.edges);
+        }
+        let axis = input_edge_axis(&self.support);
+        Cow::Owned(
+            (0..self.corners.len())
+                .map(|i| self.input_edge_along(i, axis))
+                .collect(),
+        )
     }
 
     /// The stored planes of the edges before and at vertex `i`, a vertex that is not an
