@@ -3,6 +3,7 @@
 
 use limn_depthsort::Ordered;
 use limn_scene::Scene;
+use rayon::prelude::*;
 
 /// Per fragment of `ordered` (which must come from `scene`), the projected outline of its
 /// whole input face when the fragment is the first painted of a face that takes part
@@ -23,15 +24,26 @@ pub fn covers(scene: &Scene, ordered: &Ordered) -> Vec<Option<Vec<[f64; 2]>>> {
     }
     let cam = &ordered.camera;
     let vp = cam.view_projection(ordered.near, ordered.far);
+    // Which fragments are first of their face in one pass; the outlines projected in
+    // parallel.
     let mut covered = vec![false; faces];
-    ordered
+    let first: Vec<bool> = ordered
         .fragments
         .iter()
         .map(|frag| {
             let f = frag.face as usize;
             let whole = ordered.whole_faces.get(f).copied().unwrap_or(false);
-            (whole && per_face[f] > 1 && !std::mem::replace(&mut covered[f], true)).then(|| {
-                scene.faces[f]
+            whole && per_face[f] > 1 && !std::mem::replace(&mut covered[f], true)
+        })
+        .collect();
+    ordered
+        .fragments
+        .par_iter()
+        .zip(first)
+        .with_min_len(FRAGMENTS_PER_TASK)
+        .map(|(frag, first)| {
+            first.then(|| {
+                scene.faces[frag.face as usize]
                     .vertices
                     .iter()
                     .map(|&v| {
@@ -43,3 +55,6 @@ pub fn covers(scene: &Scene, ordered: &Ordered) -> Vec<Option<Vec<[f64; 2]>>> {
         })
         .collect()
 }
+
+/// Fragments per parallel task of [`covers`].
+const FRAGMENTS_PER_TASK: usize = 4096;

@@ -1,6 +1,8 @@
 //! Seam flaps: closing the hairlines viewers leave between adjacent fills without moving
 //! any boundary of the picture.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use rayon::prelude::*;
 
 use crate::PaintFragment;
@@ -65,12 +67,9 @@ pub fn seam_flaps_indexed(
     join: FlapJoin,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let later = LaterNeighbours::new(&fragments);
-    // The flaps first (they read the later fragments as they are), in the order of the
-    // fragments they follow; then the fragments moved into the output, each with its
-    // joined outline or its flaps after it: no fragment is copied. Blocks of fragments
-    // make their flaps in parallel and the blocks are put together in order, so the
-    // output does not depend on the threads.
-    let parts: Vec<BlockFlaps> = fragments
+    // The flaps first (they read the later fragments as they are), in blocks of fragments
+    // in parallel, in the order of the fragments they follow.
+    let mut parts: Vec<BlockFlaps> = fragments
         .par_chunks(FRAGMENTS_PER_TASK)
         .enumerate()
         .map(|(c, block)| {
@@ -89,45 +88,74 @@ pub fn seam_flaps_indexed(
             (flaps, joined)
         })
         .collect();
-    // Put together once, in vectors of their final size (merging them pairwise grew and
-    // copied them again and again).
-    let mut flaps: Vec<Flap> = Vec::with_capacity(parts.iter().map(|p| p.0.len()).sum());
-    let mut joined = Vec::with_capacity(parts.iter().map(|p| p.1.len()).sum());
-    for (mut f, mut j) in parts {
-        flaps.append(&mut f);
-        joined.append(&mut j);
-    }
-    // A smooth fragment's flaps wait until the consecutive smooth fragments of its face
-    // are out (Phong pieces): a flap between them would split the painters' run of the
-    // face. Every later face is painted after that run, so each flap still comes first.
-    let mut out = Vec::with_capacity(fragments.len() + flaps.len());
-    let mut at = Vec::with_capacity(fragments.len());
-    let mut waiting: Vec<PaintFragment> = Vec::new();
-    let mut flaps = flaps.into_iter().peekable();
-    let mut joined = joined.into_iter().peekable();
-    for (i, mut f) in fragments.into_iter().enumerate() {
-        if let Some((_, (points, original_edges))) = joined.next_if(|(k, _)| *k == i) {
-            f.points = points;
-            f.original_edges = original_edges;
-        }
-        let smooth_run = out
-            .last()
-            .is_some_and(|l: &PaintFragment| l.face == f.face && l.vertex_colors.is_some());
-        if !(smooth_run && f.vertex_colors.is_some()) {
-            out.append(&mut waiting);
-        }
-        let smooth = f.vertex_colors.is_some();
-        at.push(out.len());
-        out.push(f);
-        while let Some((_, fl)) = flaps.next_if(|(k, _)| *k == i) {
-            if smooth {
-                waiting.push(fl);
-            } else {
-                out.push(fl);
+    // Joined outlines replace their fragments' own in place, block by block (the blocks
+    // of the flaps): no fragment is moved.
+    let mut fragments = fragments;
+    fragments
+        .par_chunks_mut(FRAGMENTS_PER_TASK)
+        .zip(parts.par_iter_mut())
+        .for_each(|(block, (_, joined))| {
+            for (i, (points, original_edges)) in joined.drain(..) {
+                let f = &mut block[i % FRAGMENTS_PER_TASK];
+                f.points = points;
+                f.original_edges = original_edges;
             }
-        }
+        });
+    let separate = parts.iter().map(|p| p.0.len()).sum::<usize>();
+    if separate == 0 {
+        let at = (0..fragments.len()).collect();
+        return (fragments, at);
     }
-    out.append(&mut waiting);
+    // Flaps of their own are put in after their fragments. A smooth fragment's flaps
+    // wait until the consecutive smooth fragments of its face are out (Phong pieces): a
+    // flap between them would split the painters' run of the face. Every later face is
+    // painted after that run, so each flap still comes first.
+    let n = fragments.len();
+    let mut flaps: Vec<Flap> = Vec::with_capacity(separate);
+    for (mut f, _) in parts {
+        flaps.append(&mut f);
+    }
+    // The flaps come in order of their fragments: a run's end is found once.
+    let mut run_end = None;
+    for flap in &mut flaps {
+        let i = flap.0;
+        if fragments[i].vertex_colors.is_none() {
+            continue;
+        }
+        let end = match run_end {
+            Some(end) if i <= end => end,
+            _ => {
+                let face = fragments[i].face;
+                let mut end = i;
+                while end + 1 < n
+                    && fragments[end + 1].face == face
+                    && fragments[end + 1].vertex_colors.is_some()
+                {
+                    end += 1;
+                }
+                end
+            }
+        };
+        run_end = Some(end);
+        flap.0 = end;
+    }
+    // The fragments moved over in stretches between the flaps (in order of where they
+    // go; a smooth fragment's flaps after those of the run's earlier fragments).
+    flaps.sort_by_key(|f| f.0);
+    let mut out = Vec::with_capacity(n + separate);
+    let mut at = Vec::with_capacity(n);
+    let mut rest = fragments.into_iter();
+    let mut moved = 0;
+    for (after, flap) in flaps {
+        if after + 1 > moved {
+            at.extend(out.len()..out.len() + (after + 1 - moved));
+            out.extend(rest.by_ref().take(after + 1 - moved));
+            moved = after + 1;
+        }
+        out.push(flap);
+    }
+    at.extend(out.len()..out.len() + (n - moved));
+    out.extend(rest);
     (out, at)
 }
 
@@ -293,15 +321,16 @@ fn opaque(f: &PaintFragment) -> bool {
 struct LaterNeighbours {
     /// Where fragment `i`'s edges start in `first_later`.
     starts: Vec<usize>,
-    /// Per edge: the fragment found, or `usize::MAX`.
-    first_later: Vec<usize>,
+    /// Per edge: the fragment found, or `usize::MAX` (written by the parallel scan of
+    /// the sorted edges, each by the one task that holds its edge).
+    first_later: Vec<AtomicUsize>,
 }
 
 impl LaterNeighbours {
     fn new(fragments: &[PaintFragment]) -> Self {
-        let key = |j: usize, e: usize| {
+        let key = |j: usize, e: u32| {
             let p = &fragments[j].points;
-            edge_key(p[e], p[(e + 1) % p.len()])
+            edge_key(p[e as usize], p[(e as usize + 1) % p.len()])
         };
         let mut starts = Vec::with_capacity(fragments.len() + 1);
         let mut count = 0;
@@ -312,30 +341,39 @@ impl LaterNeighbours {
             }
         }
         starts.push(count);
-        // Each edge as (hash of its key, fragment, edge): a third of the bytes of the
-        // key itself to sort. A total order, so the same result from any sort; edges
-        // with equal hashes are told apart by their keys below.
-        let mut edges: Vec<(u64, usize, u32)> = Vec::with_capacity(count);
+        // Each edge as (hash of its key, fragment, edge, face): smaller than the key
+        // itself to sort, and the face at hand. A total order (fragment and edge are
+        // unique), so the same result from any sort; edges with equal hashes are told
+        // apart by their keys below.
+        let mut edges: Vec<(u64, usize, u32, u32)> = Vec::with_capacity(count);
         for (j, f) in fragments.iter().enumerate() {
             if opaque(f) {
-                edges.extend((0..f.points.len()).map(|e| (key_hash(&key(j, e)), j, e as u32)));
+                edges.extend(
+                    (0..f.points.len() as u32).map(|e| (key_hash(&key(j, e)), j, e, f.face)),
+                );
             }
         }
         edges.par_sort_unstable();
-        let mut first_later = vec![usize::MAX; count];
-        for group in edges.chunk_by(|a, b| a.0 == b.0) {
-            if group.len() < 2 {
-                continue;
-            }
-            for &(_, i, e) in group {
-                let (face, k) = (fragments[i].face, key(i, e as usize));
-                if let Some(&(_, j, _)) = group.iter().find(|&&(_, j, f)| {
-                    j > i && fragments[j].face != face && key(j, f as usize) == k
-                }) {
-                    first_later[starts[i] + e as usize] = j;
+        let first_later: Vec<AtomicUsize> = std::iter::repeat_with(|| AtomicUsize::new(usize::MAX))
+            .take(count)
+            .collect();
+        // Groups of one hash, in parallel. A fragment's key is read only when a later
+        // fragment of another face has the same hash (in a mesh, one of an edge's two
+        // fragments), and the candidates' keys only then.
+        edges
+            .par_chunk_by(|a, b| a.0 == b.0)
+            .filter(|group| group.len() >= 2)
+            .for_each(|group| {
+                for (g, &(_, i, e, face)) in group.iter().enumerate() {
+                    let mut own = None;
+                    let found = group[g + 1..].iter().find(|&&(_, j, f, other)| {
+                        j > i && other != face && *own.get_or_insert_with(|| key(i, e)) == key(j, f)
+                    });
+                    if let Some(&(_, j, _, _)) = found {
+                        first_later[starts[i] + e as usize].store(j, Ordering::Relaxed);
+                    }
                 }
-            }
-        }
+            });
         LaterNeighbours {
             starts,
             first_later,
@@ -344,7 +382,7 @@ impl LaterNeighbours {
 
     /// The first later fragment of another face sharing edge `e` of fragment `i`.
     fn of(&self, i: usize, e: usize) -> Option<usize> {
-        let j = self.first_later[self.starts[i] + e];
+        let j = self.first_later[self.starts[i] + e].load(Ordering::Relaxed);
         (j != usize::MAX).then_some(j)
     }
 }
