@@ -33,7 +33,7 @@ pub fn run(a: LargeArgs) -> Result<String> {
     let timeout = a.limits.time_bound();
     let startup = peers::startup_times(&gl2ps, work.path(), timeout, a.limits.mem_mb)?;
     let mut out = format!(
-        "Medians of {} runs on {} threads; limn: exact adaptive, order + SVG in process; \
+        "Medians of {} runs on {} threads; limn: exact adaptive, order + SVG file in process; \
          gl2ps: the whole process less its time on an empty scene.\n\n\
          | scene | program | sort | ms | primitives | bytes | time / limn's |\n\
          |---|---|---|---:|---:|---:|---:|\n",

@@ -201,7 +201,7 @@ fn main() -> Result<()> {
     }
     let mut text = String::new();
     text += &format!(
-        "Pictures {}×{}; medians of {runs} runs; limn rows: order + SVG in process; peer rows: \
+        "Pictures {}×{}; medians of {runs} runs; limn rows: order + SVG file in process; peer rows: \
          the whole process minus its time on an empty scene; wrong pixels: the SVG rasterised \
          without anti-aliasing, outside a {BAND_PX} px band around true edges, against exact \
          ray casting (for limn, in parentheses: the picture before writing, outside a \
