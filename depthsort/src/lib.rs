@@ -215,12 +215,6 @@ fn ordered<K: Kernel>(
         Some(parts) => shadowed_fragments(&mut ctx, &order, parts),
     };
     let t3 = Instant::now();
-    // The pieces are many small allocations (a polygon, its points, shared planes each):
-    // freed on every core.
-    std::mem::take(&mut ctx.pieces)
-        .into_par_iter()
-        .with_min_len(PIECES_PER_DROP)
-        .for_each(drop);
     let mut stats = ctx.stats;
     stats.fragments_out = fragments.len();
     stats.filter_fallbacks = kernel.fallbacks() - fallbacks0;
@@ -298,9 +292,6 @@ fn fragments<K: Kernel>(
 /// Fragments built by one parallel task at least (smaller tasks cost more to hand out
 /// than they save).
 const FRAGMENTS_PER_TASK: usize = 1024;
-
-/// Pieces freed by one parallel task at least.
-const PIECES_PER_DROP: usize = 4096;
 
 /// [`fragments`] with each piece of `order` replaced by its shadow parts (in order).
 fn shadowed_fragments<K: Kernel>(
