@@ -176,7 +176,8 @@ const CROWDED: f64 = 8.0;
 
 /// Sets larger than this are probed ([`cycles_everywhere`]) before being analysed.
 const PROBE_MIN: usize = 256;
-/// Members of a set probed by [`cycles_everywhere`] (a power of two).
+/// Members of a set probed by [`cycles_everywhere`] (a power of two, at most 64: one bit
+/// each in a mask).
 const PROBE_SAMPLE: usize = 64;
 
 /// Whether the occlusion graph of `set` is, as measured on a sample, certain to be one
@@ -192,40 +193,60 @@ const PROBE_SAMPLE: usize = 64;
 fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
     let n = set.len();
     let m = ctx.margin;
+    let spread = |j: usize| j.reverse_bits() >> (usize::BITS - PROBE_SAMPLE.trailing_zeros());
+    let members: [usize; PROBE_SAMPLE] = std::array::from_fn(|t| spread(t) * n / PROBE_SAMPLE);
+    // The members' boxes (grown by the margin) side by side, coordinate by coordinate: a
+    // piece's box is tested against a whole block of them in one loop without branches,
+    // and only the members it meets are looked at further.
+    // Every box once, side by side (the pieces are large: reading their boxes twice from
+    // them cost more than this copy).
     let boxes: Vec<Box2> = set
-        .iter()
+        .par_iter()
+        .with_min_len(PROBE_CHUNK)
         .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
         .collect();
-    // The conflicts of the members of a block with every piece, the set read once per
-    // block (each piece against the block's members) rather than once per member.
-    let conflicts_in = |members: &[usize]| -> usize {
+    let grown = members.map(|a| boxes[a]);
+    let (min_x, max_x) = (grown.map(|b| b.min_x), grown.map(|b| b.max_x));
+    let (min_y, max_y) = (grown.map(|b| b.min_y), grown.map(|b| b.max_y));
+    // The conflicts of the members `block` with every piece, the set read once per block
+    // (each piece against the block's members) rather than once per member.
+    let conflicts_in = |block: std::ops::Range<usize>| -> usize {
         (0..n)
             .into_par_iter()
             .with_min_len(PROBE_CHUNK)
             .map(|b| {
                 let (q, bq) = (set[b], &boxes[b]);
-                members
-                    .iter()
-                    .filter(|&&a| {
-                        let p = set[a];
-                        a != b
-                            && boxes_meet(&boxes[a], bq, 0.0)
-                            && !convex_disjoint(
-                                &ctx.pieces[p as usize].pts,
-                                &ctx.pieces[q as usize].pts,
-                                m,
-                            )
-                            && ctx.pair(p, q) == Pair::Conflict
-                    })
-                    .count()
+                let mut met = 0u64;
+                for t in block.clone() {
+                    let meets = (min_x[t] <= bq.max_x)
+                        & (bq.min_x <= max_x[t])
+                        & (min_y[t] <= bq.max_y)
+                        & (bq.min_y <= max_y[t]);
+                    met |= u64::from(meets) << t;
+                }
+                let mut count = 0;
+                while met != 0 {
+                    let t = met.trailing_zeros() as usize;
+                    met &= met - 1;
+                    let (a, p) = (members[t], set[members[t]]);
+                    if a != b
+                        && !convex_disjoint(
+                            &ctx.pieces[p as usize].pts,
+                            &ctx.pieces[q as usize].pts,
+                            m,
+                        )
+                        && ctx.pair(p, q) == Pair::Conflict
+                    {
+                        count += 1;
+                    }
+                }
+                count
             })
             .sum()
     };
-    let spread = |j: usize| j.reverse_bits() >> (usize::BITS - PROBE_SAMPLE.trailing_zeros());
     let mut conflicts = 0;
-    let members: [usize; PROBE_SAMPLE] = std::array::from_fn(|t| spread(t) * n / PROBE_SAMPLE);
     for block in [0..PROBE_FIRST, PROBE_FIRST..PROBE_SAMPLE] {
-        conflicts += conflicts_in(&members[block]);
+        conflicts += conflicts_in(block);
         if conflicts >= PROBE_SAMPLE {
             return true;
         }
