@@ -5,6 +5,8 @@
 //! `convex_disjoint`, in the same order, so the answers are the same bit for bit (a unit
 //! test compares them).
 
+use crate::geom::{higher, lower};
+
 /// The edge axes of a set of convex polygons, side by side.
 pub(crate) struct SeparatingAxes {
     /// Every polygon's corners, polygon after polygon.
@@ -49,8 +51,8 @@ impl SeparatingAxes {
                 let (mut amin, mut amax) = (f64::INFINITY, f64::NEG_INFINITY);
                 for v in a {
                     let d = v[0] * nx + v[1] * ny;
-                    amin = amin.min(d);
-                    amax = amax.max(d);
+                    amin = lower(d, amin);
+                    amax = higher(d, amax);
                 }
                 s.axes.push([nx, ny, margin * len, amin, amax]);
             }
@@ -74,8 +76,8 @@ impl SeparatingAxes {
             let (mut bmin, mut bmax) = (f64::INFINITY, f64::NEG_INFINITY);
             for v in pts {
                 let d = v[0] * nx + v[1] * ny;
-                bmin = bmin.min(d);
-                bmax = bmax.max(d);
+                bmin = lower(d, bmin);
+                bmax = higher(d, bmax);
             }
             amax + m < bmin || bmax + m < amin
         })
