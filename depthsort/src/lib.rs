@@ -39,6 +39,7 @@ mod components;
 mod detached;
 mod feature_edges;
 mod geom;
+mod interval;
 mod marks;
 mod merge;
 mod newell;

@@ -233,4 +233,13 @@ impl Kernel for ExactKernel {
         let scale = c[0].abs().max(c[1].abs()).max(c[2].abs());
         (err <= 1e-9 * scale).then(|| DVec3::from_array(c))
     }
+
+    fn vertex_world_bounded(&self, poly: &ExactPolygon, i: usize) -> Option<(DVec3, f64)> {
+        let (c, err) = poly.vertex_approx(i);
+        err.is_finite().then(|| (DVec3::from_array(c), err))
+    }
+
+    fn vertex_heights(&self, poly: &ExactPolygon, plane: &Plane, out: &mut [(f64, f64)]) -> bool {
+        poly.heights(plane, out)
+    }
 }

@@ -405,4 +405,25 @@ impl Kernel for FloatKernel {
     fn vertex_world_approx(&self, poly: &FloatPolygon, i: usize) -> Option<DVec3> {
         poly.vertices().nth(i)
     }
+
+    /// Signed distances, with the kernel's epsilon as their bound (its own sides).
+    fn vertex_heights(
+        &self,
+        poly: &FloatPolygon,
+        plane: &FloatPlane,
+        out: &mut [(f64, f64)],
+    ) -> bool {
+        if out.len() < poly.corners.len() {
+            return false;
+        }
+        for (o, c) in out.iter_mut().zip(&poly.corners) {
+            *o = (plane.distance(c.p), self.eps);
+        }
+        true
+    }
+
+    /// The float kernel's vertices are its polygons: each is exactly itself.
+    fn vertex_world_bounded(&self, poly: &FloatPolygon, i: usize) -> Option<(DVec3, f64)> {
+        poly.vertices().nth(i).map(|v| (v, 0.0))
+    }
 }

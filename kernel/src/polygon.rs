@@ -260,6 +260,22 @@ impl ExactPolygon {
 
     /// Classification against `h` when the filters and shortcuts decide it (`None` when
     /// some vertex needs exact evaluation and the answer is still open).
+    /// [`crate::Kernel::vertex_heights`]: the filter's values and bounds of `h` at the
+    /// cached vertex positions.
+    pub(crate) fn heights(&self, h: &Plane, out: &mut [(f64, f64)]) -> bool {
+        if out.len() < self.corners.len() {
+            return false;
+        }
+        let hf = PlaneF::new(h);
+        for (o, c) in out.iter_mut().zip(&self.corners) {
+            *o = hf.height(&c.pos, c.err as f64);
+            if !(o.0.is_finite() && o.1.is_finite()) {
+                return false;
+            }
+        }
+        true
+    }
+
     pub(crate) fn classify_filtered(&self, h: &Plane) -> Option<PolygonSide> {
         let hf = PlaneF::new(h);
         let coarse = self.coarse_bound(&hf);

@@ -99,10 +99,10 @@ impl PlaneF {
             * SAFETY
     }
 
-    /// The filtered side of an approximate point with error bound `err`, or `None` when
-    /// the filter cannot decide.
+    /// The plane's equation at an approximate point with error bound `err`, and a bound
+    /// on its distance from the exact equation's value at the exact point.
     #[inline]
-    pub(crate) fn side(&self, x: &[f64; 3], err: f64) -> Option<Side> {
+    pub(crate) fn height(&self, x: &[f64; 3], err: f64) -> (f64, f64) {
         let t0 = self.n[0] * x[0];
         let t1 = self.n[1] * x[1];
         let t2 = self.n[2] * x[2];
@@ -112,6 +112,14 @@ impl PlaneF {
         let bound =
             (mag * FILTER_REL + self.err_n * (xs + 3.0 * err) + self.nsum * err + self.err_d + ETA)
                 * SAFETY;
+        (v, bound)
+    }
+
+    /// The filtered side of an approximate point with error bound `err`, or `None` when
+    /// the filter cannot decide.
+    #[inline]
+    pub(crate) fn side(&self, x: &[f64; 3], err: f64) -> Option<Side> {
+        let (v, bound) = self.height(x, err);
         if v > bound {
             Some(Side::Front)
         } else if v < -bound {

@@ -136,4 +136,23 @@ pub trait Kernel: Sync {
     /// A cheap world position of vertex `i`, within a relative 1e-9 of the true one,
     /// when the kernel has it at hand (for float prefilters only; never for decisions).
     fn vertex_world_approx(&self, poly: &Self::Polygon, i: usize) -> Option<DVec3>;
+
+    /// A world position of vertex `i` and a proven bound on the error of each of its
+    /// coordinates (0 when it is the vertex exactly), when the kernel has them at hand:
+    /// the true vertex lies in the box of that half-width around the position. For float
+    /// computations that must hold for the true vertex (interval filters).
+    fn vertex_world_bounded(&self, poly: &Self::Polygon, i: usize) -> Option<(DVec3, f64)>;
+
+    /// For every vertex of `poly`, in `out` (which must hold them all), the value `v` of
+    /// `plane`'s equation there and a bound `e` with the exact value within `e` of `v`:
+    /// one equation for all vertices (values on one scale, positive in front), so `v > e`
+    /// proves a vertex in front and ratios of values are ratios of distances. `false`
+    /// when `out` is too short or some bound is not finite. For float filters that must
+    /// hold exactly (in the float kernel, the bound is its epsilon).
+    fn vertex_heights(
+        &self,
+        poly: &Self::Polygon,
+        plane: &Self::Plane,
+        out: &mut [(f64, f64)],
+    ) -> bool;
 }

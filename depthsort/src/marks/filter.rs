@@ -8,6 +8,8 @@ use std::cmp::Ordering;
 
 use limn_kernel::{ExactPolygon, Plane, Side};
 
+use crate::interval::Interval;
+
 /// A closed interval `[lo, hi]` that holds an exact value, with that value's sign when it
 /// is known exactly (from the kernel's exact plane sides); non-finite ends make every
 /// test on the bounds undecided.
@@ -41,23 +43,22 @@ impl Iv {
         }
     }
 
-    fn mul(self, o: Iv) -> Iv {
-        let p = [
-            self.lo * o.lo,
-            self.lo * o.hi,
-            self.hi * o.lo,
-            self.hi * o.hi,
-        ];
-        if p.iter().any(|x| x.is_nan()) {
-            return Iv::new(f64::NEG_INFINITY, f64::INFINITY);
+    /// The enclosure without the sign.
+    fn interval(self) -> Interval {
+        Interval {
+            lo: self.lo,
+            hi: self.hi,
         }
-        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Iv::new(lo.next_down(), hi.next_up())
+    }
+
+    fn mul(self, o: Iv) -> Iv {
+        let r = self.interval() * o.interval();
+        Iv::new(r.lo, r.hi)
     }
 
     fn sub(self, o: Iv) -> Iv {
-        Iv::new((self.lo - o.hi).next_down(), (self.hi - o.lo).next_up())
+        let r = self.interval() - o.interval();
+        Iv::new(r.lo, r.hi)
     }
 
     fn neg(self) -> Iv {

@@ -1,0 +1,231 @@
+//! Closed intervals of reals with float ends, for float computations whose results must
+//! hold for the exact values: every operation rounds its ends outward, so the exact
+//! result of the same operation on any values inside the operands lies inside the result.
+//! A round-to-nearest result lies within half a step (`ulp`) of the exact one, and a step
+//! is at most 2⁻⁵² of the result's size (or the smallest subnormal below 2⁻¹⁰²²): moving
+//! it by 2⁻⁵¹ of its size plus two smallest subnormals, rounded to nearest again, lands at
+//! least one step past it, whatever its sign. Three float operations and no branch, where
+//! `f64::next_up` branches on the sign (which a soup's coordinates change at random).
+//! An infinite end stays infinite, and an infinite end times zero gives the whole line.
+
+use std::ops::{Add, Mul, Sub};
+
+/// How far a rounded end is moved outward, relative to its size.
+const WIDEN_REL: f64 = 1.0 / (1u64 << 51) as f64;
+/// How far a rounded end is moved outward at least (two smallest subnormals).
+const WIDEN_ABS: f64 = 2.0 * f64::from_bits(1);
+
+/// A float at least the exact value that rounded to `x` (see the module's documentation);
+/// an infinite `x` stays as it is (a select, not a branch).
+#[inline(always)]
+fn up(x: f64) -> f64 {
+    let w = x + (x.abs() * WIDEN_REL + WIDEN_ABS);
+    if x.is_finite() {
+        w
+    } else {
+        x
+    }
+}
+
+/// A float at most the exact value that rounded to `x`.
+#[inline(always)]
+fn down(x: f64) -> f64 {
+    let w = x - (x.abs() * WIDEN_REL + WIDEN_ABS);
+    if x.is_finite() {
+        w
+    } else {
+        x
+    }
+}
+
+/// The reals from `lo` to `hi` (`lo <= hi`; a NaN end makes every comparison fail, so
+/// nothing is ever certified from it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Interval {
+    pub lo: f64,
+    pub hi: f64,
+}
+
+impl Interval {
+    /// The reals within `err` of `x`.
+    pub fn around(x: f64, err: f64) -> Interval {
+        Interval {
+            lo: down(x - err),
+            hi: up(x + err),
+        }
+    }
+
+    /// The one real `x` (a float is a real exactly).
+    pub fn exactly(x: f64) -> Interval {
+        Interval { lo: x, hi: x }
+    }
+
+    /// The products of its reals with the float `k` (a real exactly).
+    pub fn times(self, k: f64) -> Interval {
+        let (a, b) = (self.lo * k, self.hi * k);
+        Interval {
+            lo: down(a.min(b)),
+            hi: up(a.max(b)),
+        }
+    }
+
+    /// Whether every real in it is above zero.
+    pub fn positive(self) -> bool {
+        self.lo > 0.0
+    }
+
+    /// Whether every real in it is below zero.
+    pub fn negative(self) -> bool {
+        self.hi < 0.0
+    }
+
+    /// The absolute values of the reals of an interval that lies on one side of zero.
+    fn abs_one_sided(self) -> Interval {
+        if self.hi < 0.0 {
+            Interval {
+                lo: -self.hi,
+                hi: -self.lo,
+            }
+        } else {
+            self
+        }
+    }
+
+    /// `a / (a + b)` for every `a` in `self` and `b` in `other`, both positive: where
+    /// along a segment its ends' distances `a` and `b` from a plane put the crossing.
+    /// Increasing in `a`, decreasing in `b`, and within [0, 1].
+    pub fn share_of(self, other: Interval) -> Interval {
+        let (a, b) = (self.abs_one_sided(), other.abs_one_sided());
+        let lo = down(a.lo / up(a.lo + b.hi));
+        // The sum rounded down stays positive unless both are next to the smallest
+        // subnormal; then 1 bounds the share.
+        let den = down(a.hi + b.lo);
+        let hi = if den > 0.0 { up(a.hi / den) } else { 1.0 };
+        Interval {
+            lo: lo.max(0.0),
+            hi: hi.min(1.0),
+        }
+    }
+}
+
+impl Add for Interval {
+    type Output = Interval;
+    fn add(self, o: Interval) -> Interval {
+        Interval {
+            lo: down(self.lo + o.lo),
+            hi: up(self.hi + o.hi),
+        }
+    }
+}
+
+impl Sub for Interval {
+    type Output = Interval;
+    fn sub(self, o: Interval) -> Interval {
+        Interval {
+            lo: down(self.lo - o.hi),
+            hi: up(self.hi - o.lo),
+        }
+    }
+}
+
+impl Mul for Interval {
+    type Output = Interval;
+    fn mul(self, o: Interval) -> Interval {
+        let p = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        // An infinite end times zero: nothing is known.
+        if p.iter().any(|x| x.is_nan()) {
+            return Interval {
+                lo: f64::NEG_INFINITY,
+                hi: f64::INFINITY,
+            };
+        }
+        Interval {
+            lo: down(p[0].min(p[1]).min(p[2]).min(p[3])),
+            hi: up(p[0].max(p[1]).max(p[2]).max(p[3])),
+        }
+    }
+}
+
+/// A point or vector whose coordinates are intervals.
+pub(crate) type Interval3 = [Interval; 3];
+
+/// The dot product with a float vector (exact as it stands).
+pub(crate) fn dot3_exact(a: &Interval3, k: [f64; 3]) -> Interval {
+    a[0].times(k[0]) + a[1].times(k[1]) + a[2].times(k[2])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational as R;
+
+    fn exact(x: f64) -> R {
+        R::from_float(x).expect("finite")
+    }
+
+    fn holds(i: Interval, x: &R) -> bool {
+        exact(i.lo) <= *x && *x <= exact(i.hi)
+    }
+
+    #[test]
+    fn results_hold_the_exact_results_of_their_operands_ends() {
+        let mut r = crate::rng::SplitMix::new(3);
+        let mut u = || {
+            let m = (r.next_u64() >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            m * [1e-9, 1.0, 3.0, 1e12][(r.next_u64() % 4) as usize]
+        };
+        for _ in 0..2000 {
+            let (x, y, e) = (u(), u(), u().abs() * 1e-3);
+            let (a, b) = (Interval::around(x, e), Interval::exactly(y));
+            // The interval's ends and the middle stand for the reals inside.
+            for xa in [a.lo, x, a.hi] {
+                let (ea, eb) = (exact(xa), exact(y));
+                assert!(holds(a + b, &(&ea + &eb)));
+                assert!(holds(a - b, &(&ea - &eb)));
+                assert!(holds(b - a, &(&eb - &ea)));
+                assert!(holds(a * b, &(&ea * &eb)));
+                assert!(holds(a * a, &(&ea * &ea)));
+            }
+            // Distances on either side of a plane: intervals clear of zero.
+            let (dp, dq) = (x.abs().max(1e-6), y.abs().max(1e-6));
+            let (p, q) = (
+                Interval::around(dp, dp * 1e-3),
+                Interval::around(-dq, dq * 0.5),
+            );
+            assert!(p.positive() && q.negative());
+            for (xp, xq) in [(p.lo, q.hi), (p.hi, q.lo), (p.lo, q.lo), (p.hi, q.hi)] {
+                let (ep, eq) = (exact(xp), -exact(xq));
+                let t = &ep / (&ep + &eq);
+                assert!(holds(p.share_of(q), &t), "{p:?} {q:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn infinite_ends_stay_infinite_and_unknown_products_are_the_whole_line() {
+        let half_line = Interval {
+            lo: f64::NEG_INFINITY,
+            hi: 1.0,
+        };
+        let sum = half_line + Interval::exactly(2.0);
+        assert_eq!(sum.lo, f64::NEG_INFINITY);
+        assert!(sum.hi >= 3.0 && sum.hi.is_finite());
+        let product = half_line * Interval::exactly(0.0);
+        assert_eq!((product.lo, product.hi), (f64::NEG_INFINITY, f64::INFINITY));
+        assert!(!product.positive() && !product.negative());
+    }
+
+    #[test]
+    fn signs_are_told_only_when_the_interval_is_clear_of_zero() {
+        assert!(Interval::around(1.0, 0.5).positive());
+        assert!(!Interval::around(1.0, 1.0).positive());
+        assert!(Interval::around(-1.0, 0.5).negative());
+        assert!(!Interval::exactly(0.0).positive() && !Interval::exactly(0.0).negative());
+        assert!(!Interval::exactly(f64::NAN).positive());
+    }
+}
