@@ -17,15 +17,49 @@ pub struct LargeArgs {
     runs: usize,
     #[command(flatten)]
     limits: peers::PeerLimits,
-    /// Only the scenes whose name contains this text (e.g. `soup`).
+    /// Only the scenes whose name contains this text (e.g. `soup`; the name is followed
+    /// by " (", so `10k (` picks the sparse soup alone).
     #[arg(long)]
     only: Option<String>,
+    /// Measure limn alone on the scene of this name and print `ms primitives bytes`: the
+    /// process each of limn's rows is measured in.
+    #[arg(long, hide = true)]
+    limn_row: Option<String>,
+}
+
+/// limn's row for the scene `name`, measured in a process of its own (this program run
+/// with `--limn-row`), as each peer is: a scene measured after another one in the same
+/// process ran in the memory that one left (the 10k soup after the surfaces took 39–42 ms
+/// instead of 31–34).
+fn limn_row(name: &str, runs: usize) -> Result<(f64, usize, usize)> {
+    let out = std::process::Command::new(std::env::current_exe()?)
+        .args(["large", "--runs", &runs.to_string(), "--limn-row", name])
+        .stderr(std::process::Stdio::inherit())
+        .output()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let fields: Vec<&str> = text.split_whitespace().collect();
+    match (out.status.success(), fields.as_slice()) {
+        (true, [ms, primitives, bytes]) => Ok((ms.parse()?, primitives.parse()?, bytes.parse()?)),
+        _ => anyhow::bail!("limn's row of {name} failed ({}): {text}", out.status),
+    }
+}
+
+/// The child's side of [`limn_row`]: builds scene `name`, measures and prints.
+fn limn_row_here(name: &str, runs: usize) -> Result<String> {
+    let Some((_, build)) = scenes::large().into_iter().find(|(n, _)| *n == name) else {
+        anyhow::bail!("no large scene named {name}");
+    };
+    let m = limn_runs::measure(&build(), SortMode::Adaptive, Arith::Exact, runs)?;
+    Ok(format!("{} {} {}\n", m.ms, m.primitives, m.bytes))
 }
 
 /// The table (Markdown): per scene, limn exact adaptive (order + SVG in this process, on
 /// every core) and gl2ps's sorts (the whole process less its time on an empty scene), with
 /// each peer's time over limn's.
 pub fn run(a: LargeArgs) -> Result<String> {
+    if let Some(name) = &a.limn_row {
+        return limn_row_here(name, a.runs);
+    }
     let dir = a.limits.dir();
     let (found, _) = peers::find(&dir);
     let gl2ps: Vec<_> = found.into_iter().filter(|p| p.name == "gl2ps").collect();
@@ -33,8 +67,9 @@ pub fn run(a: LargeArgs) -> Result<String> {
     let timeout = a.limits.time_bound();
     let startup = peers::startup_times(&gl2ps, work.path(), timeout, a.limits.mem_mb)?;
     let mut out = format!(
-        "Medians of {} runs on {} threads; limn: exact adaptive, order + SVG file in process; \
-         gl2ps: the whole process less its time on an empty scene.\n\n\
+        "Medians of {} runs on {} threads; limn: exact adaptive, order + SVG file in a \
+         process of its own per scene; gl2ps: the whole process less its time on an empty \
+         scene.\n\n\
          | scene | program | sort | ms | primitives | bytes | time / limn's |\n\
          |---|---|---|---:|---:|---:|---:|\n",
         a.runs.max(1),
@@ -46,15 +81,18 @@ pub fn run(a: LargeArgs) -> Result<String> {
             dir.display()
         );
     }
-    let chosen = scenes::large()
-        .into_iter()
-        .filter(|s| a.only.as_ref().is_none_or(|o| s.name.contains(o.as_str())));
-    for s in chosen {
-        eprintln!("limn-bench: {}", s.name);
-        let m = limn_runs::measure(&s, SortMode::Adaptive, Arith::Exact, a.runs)?;
+    let chosen = scenes::large().into_iter().filter(|(name, _)| {
+        a.only
+            .as_ref()
+            .is_none_or(|o| format!("{name} (").contains(o.as_str()))
+    });
+    for (name, build) in chosen {
+        eprintln!("limn-bench: {name}");
+        let (ms, primitives, bytes) = limn_row(name, a.runs)?;
+        let s = build();
         out += &format!(
-            "| {} | limn | adaptive | {:.0} | {} | {} | 1 |\n",
-            s.name, m.ms, m.primitives, m.bytes
+            "| {} | limn | adaptive | {ms:.0} | {primitives} | {bytes} | 1 |\n",
+            s.name
         );
         if gl2ps.is_empty() {
             continue;
@@ -77,7 +115,7 @@ pub fn run(a: LargeArgs) -> Result<String> {
                     g.ms,
                     g.primitives,
                     g.bytes,
-                    g.ms / m.ms
+                    g.ms / ms
                 ),
                 Outcome::Timeout => format!("> {} s | – | – | –", a.limits.timeout),
                 Outcome::Failed(why) => format!("failed: {} | – | – | –", why.replace('|', "/")),

@@ -113,13 +113,21 @@ fn surfaces(n: usize) -> Scene {
     })
 }
 
+/// A scene's name and the function that builds it.
+pub type LargeScene = (&'static str, fn() -> BenchScene);
+
 /// The large scenes timed against gl2ps alone (`limn-bench large`): two intersecting
-/// 300 × 300 height fields and the two soups of 10,000 triangles.
-pub fn large() -> Vec<BenchScene> {
+/// 300 × 300 height fields and the two soups of 10,000 triangles, each built only when
+/// it is measured.
+pub fn large() -> Vec<LargeScene> {
     vec![
-        framed("surfaces 2×300²", surfaces(300)),
-        framed("soup 10k", soup(10_000, 0.14)),
-        framed("soup 10k dense", soup(10_000, 0.3)),
+        ("surfaces 2×300²", || {
+            framed("surfaces 2×300²", surfaces(300))
+        }),
+        ("soup 10k", || framed("soup 10k", soup(10_000, 0.14))),
+        ("soup 10k dense", || {
+            framed("soup 10k dense", soup(10_000, 0.3))
+        }),
     ]
 }
 
