@@ -60,15 +60,6 @@ impl Interval {
         Interval { lo: x, hi: x }
     }
 
-    /// The products of its reals with the float `k` (a real exactly).
-    pub fn times(self, k: f64) -> Interval {
-        let (a, b) = (self.lo * k, self.hi * k);
-        Interval {
-            lo: down(a.min(b)),
-            hi: up(a.max(b)),
-        }
-    }
-
     /// Whether every real in it is above zero.
     pub fn positive(self) -> bool {
         self.lo > 0.0
@@ -151,12 +142,22 @@ impl Mul for Interval {
     }
 }
 
-/// A point or vector whose coordinates are intervals.
-pub(crate) type Interval3 = [Interval; 3];
-
-/// The dot product with a float vector (exact as it stands).
-pub(crate) fn dot3_exact(a: &Interval3, k: [f64; 3]) -> Interval {
-    a[0].times(k[0]) + a[1].times(k[1]) + a[2].times(k[2])
+/// `x · d` for every point `x` within `err` of `c` in each coordinate, `d` a float vector
+/// (exact as it stands): the float dot product and a bound on its distance from every
+/// such value (`err·Σ|dᵢ|` for the point, at most `3u·Σ|cᵢdᵢ|` for three roundings, `4u`
+/// taken, and subnormal products' absolute errors), itself rounded up by a margin far
+/// above its own few roundings.
+pub(crate) fn dot_near(c: [f64; 3], err: f64, d: [f64; 3]) -> Interval {
+    let (p0, p1, p2) = (c[0] * d[0], c[1] * d[1], c[2] * d[2]);
+    let v = p0 + p1 + p2;
+    let mag = p0.abs() + p1.abs() + p2.abs();
+    let spread = d[0].abs() + d[1].abs() + d[2].abs();
+    const U4: f64 = 4.0 / (1u64 << 53) as f64;
+    let bound = (err * spread + U4 * mag) * (1.0 + U4) + 8.0 * f64::from_bits(1);
+    Interval {
+        lo: down(v - bound),
+        hi: up(v + bound),
+    }
 }
 
 #[cfg(test)]
@@ -202,6 +203,28 @@ mod tests {
                 let (ep, eq) = (exact(xp), -exact(xq));
                 let t = &ep / (&ep + &eq);
                 assert!(holds(p.share_of(q), &t), "{p:?} {q:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_dot_product_near_a_point_holds_the_exact_ones() {
+        let mut r = crate::rng::SplitMix::new(9);
+        let mut u = || {
+            let m = (r.next_u64() >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            m * [1e-300, 1e-9, 1.0, 1e12][(r.next_u64() % 4) as usize]
+        };
+        for _ in 0..3000 {
+            let (c, d, e) = ([u(), u(), u()], [u(), u(), u()], u().abs() * 1e-6);
+            let got = dot_near(c, e, d);
+            // The corners of the box stand for the points in it.
+            for k in 0..8 {
+                let x: [R; 3] = std::array::from_fn(|i| {
+                    let s = if k >> i & 1 == 1 { e } else { -e };
+                    exact(c[i]) + exact(s)
+                });
+                let v = &x[0] * exact(d[0]) + &x[1] * exact(d[1]) + &x[2] * exact(d[2]);
+                assert!(holds(got, &v), "{c:?} {d:?} {e}");
             }
         }
     }

@@ -12,7 +12,7 @@
 use glam::DVec3;
 use limn_kernel::Kernel;
 
-use crate::interval::{dot3_exact, Interval, Interval3};
+use crate::interval::{dot_near, Interval};
 use crate::pieces::Ctx;
 
 /// Corners of a piece the test looks at, at most (pieces of a soup have three to six).
@@ -21,10 +21,11 @@ const MAX_CORNERS: usize = 12;
 /// Largest coordinate (plus its error bound) the test takes: no interval end overflows.
 const MAX_COORDINATE: f64 = 1e75;
 
-/// A piece as the test sees it: its corners as boxes, the other piece's plane's
-/// equation at each with its error bound, and how many corners there are.
+/// A piece as the test sees it: its corners (each within its bound of the true one in
+/// every coordinate), the other piece's plane's equation at each with its error bound,
+/// and how many corners there are.
 struct Seen {
-    corners: [Interval3; MAX_CORNERS],
+    corners: [([f64; 3], f64); MAX_CORNERS],
     heights: [(f64, f64); MAX_CORNERS],
     n: usize,
 }
@@ -64,7 +65,7 @@ fn seen<K: Kernel>(k: &K, poly: &K::Polygon, plane: &K::Plane) -> Option<Seen> {
         return None;
     }
     let mut s = Seen {
-        corners: [[Interval::exactly(0.0); 3]; MAX_CORNERS],
+        corners: [([0.0; 3], 0.0); MAX_CORNERS],
         heights: [(0.0, 0.0); MAX_CORNERS],
         n,
     };
@@ -79,7 +80,7 @@ fn seen<K: Kernel>(k: &K, poly: &K::Polygon, plane: &K::Plane) -> Option<Seen> {
         if !(v.is_finite() && v.abs().max_element() + err <= MAX_COORDINATE) {
             return None;
         }
-        *c = v.to_array().map(|x| Interval::around(x, err));
+        *c = (v.to_array(), err);
     }
     Some(s)
 }
@@ -104,12 +105,12 @@ fn pierce(a: &Seen, b: &Seen) -> bool {
     a0.max(b0) < a1.min(b1)
 }
 
-/// A float normal of a polygon from the middles of its corners' boxes (Newell's).
+/// A float normal of a polygon from its corners' positions (Newell's).
 fn normal(s: &Seen) -> DVec3 {
-    let mid = |c: &Interval3| DVec3::from_array(c.map(|x| 0.5 * x.lo + 0.5 * x.hi));
+    let at = |c: &([f64; 3], f64)| DVec3::from_array(c.0);
     let mut n = DVec3::ZERO;
     for i in 0..s.n {
-        let (a, b) = (mid(&s.corners[i]), mid(&s.corners[(i + 1) % s.n]));
+        let (a, b) = (at(&s.corners[i]), at(&s.corners[(i + 1) % s.n]));
         n += DVec3::new(
             (a.y - b.y) * (a.z + b.z),
             (a.z - b.z) * (a.x + b.x),
@@ -139,10 +140,8 @@ fn cut(s: &Seen, dir: [f64; 3]) -> Option<(f64, f64)> {
         }
         // The crossing a + t (b − a), t = |ha| / (|ha| + |hb|), along `dir`.
         let t = h[i].share_of(h[j]);
-        let (sa, sb) = (
-            dot3_exact(&s.corners[i], dir),
-            dot3_exact(&s.corners[j], dir),
-        );
+        let along = |c: &([f64; 3], f64)| dot_near(c.0, c.1, dir);
+        let (sa, sb) = (along(&s.corners[i]), along(&s.corners[j]));
         let at = sa + t * (sb - sa);
         lo_hi = lo_hi.min(at.hi);
         hi_lo = hi_lo.max(at.lo);
