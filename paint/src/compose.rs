@@ -134,7 +134,10 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
                 out
             })
             .collect();
-        let mut fragments = Vec::with_capacity(chunks.iter().map(Vec::len).sum());
+        // Room for the seam flaps that stay fragments of their own, so that they are put
+        // in without moving the fragments to fresh memory (see `seam_flaps_indexed`).
+        let count: usize = chunks.iter().map(Vec::len).sum();
+        let mut fragments = Vec::with_capacity(count + count / FLAP_ROOM + 16);
         for chunk in chunks {
             fragments.extend(chunk);
         }
@@ -157,6 +160,10 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         textures: textures.list,
     }
 }
+
+/// One place kept free per this many fragments for separate seam flaps (the 300² height
+/// fields have one per 1,500).
+const FLAP_ROOM: usize = 64;
 
 /// Fragments composed by one parallel task at least.
 const FRAGMENTS_PER_TASK: usize = 1024;
