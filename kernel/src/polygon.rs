@@ -258,8 +258,6 @@ impl ExactPolygon {
         None
     }
 
-    /// Classification against `h` when the filters and shortcuts decide it (`None` when
-    /// some vertex needs exact evaluation and the answer is still open).
     /// [`crate::Kernel::vertex_heights`]: the filter's values and bounds of `h` at the
     /// cached vertex positions.
     pub(crate) fn heights(&self, h: &Plane, out: &mut [(f64, f64)]) -> bool {
@@ -276,6 +274,8 @@ impl ExactPolygon {
         true
     }
 
+    /// Classification against `h` when the filters and shortcuts decide it (`None` when
+    /// some vertex needs exact evaluation and the answer is still open).
     pub(crate) fn classify_filtered(&self, h: &Plane) -> Option<PolygonSide> {
         let hf = PlaneF::new(h);
         let coarse = self.coarse_bound(&hf);
