@@ -62,7 +62,7 @@ pub enum FlapJoin {
 /// fragment went in the output (so that marks placed among the fragments can follow
 /// them).
 pub fn seam_flaps_indexed(
-    fragments: Vec<PaintFragment>,
+    mut fragments: Vec<PaintFragment>,
     width: f64,
     join: FlapJoin,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
@@ -90,7 +90,6 @@ pub fn seam_flaps_indexed(
         .collect();
     // Joined outlines replace their fragments' own in place, block by block (the blocks
     // of the flaps): no fragment is moved.
-    let mut fragments = fragments;
     fragments
         .par_chunks_mut(FRAGMENTS_PER_TASK)
         .zip(parts.par_iter_mut())
@@ -142,38 +141,24 @@ pub fn seam_flaps_indexed(
     // In order of where they go (a smooth fragment's flaps after those of the run's
     // earlier fragments).
     flaps.sort_by_key(|f| f.0);
-    if fragments.capacity() - n >= separate {
-        return flaps_in_place(fragments, flaps);
-    }
-    // The fragments moved over in stretches between the flaps.
-    let mut out = Vec::with_capacity(n + separate);
-    let mut at = Vec::with_capacity(n);
-    let mut rest = fragments.into_iter();
-    let mut moved = 0;
-    for (after, flap) in flaps {
-        if after + 1 > moved {
-            at.extend(out.len()..out.len() + (after + 1 - moved));
-            out.extend(rest.by_ref().take(after + 1 - moved));
-            moved = after + 1;
-        }
-        out.push(flap);
-    }
-    at.extend(out.len()..out.len() + (n - moved));
-    out.extend(rest);
-    (out, at)
+    flaps_in_place(fragments, flaps)
 }
 
 /// The flaps (each with the index of the fragment it goes after, in order) put into
-/// `fragments`, which has room for them all: from the back, each fragment is swapped
-/// once into its final place, without fresh memory (a new vector of a large picture's
-/// fragments cost more in page faults than the moves: 118–156 ms of a cold run on the
-/// 300² height fields). Also returns where each fragment went.
+/// `fragments`: from the back, each fragment is swapped once into its final place. The
+/// composed picture leaves room for them (see `compose.rs`), so that the fragments stay
+/// where they are: a new vector of a large picture's fragments cost more in fresh pages
+/// than the moves (118–156 ms of a cold run on the 300² height fields). Also returns
+/// where each fragment went.
 fn flaps_in_place(
     mut fragments: Vec<PaintFragment>,
     flaps: Vec<Flap>,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let n = fragments.len();
     let mut at: Vec<usize> = (0..n).collect();
+    // Exactly the room needed when there is none (growing by doubling would hold twice
+    // the fragments' memory).
+    fragments.reserve_exact(flaps.len());
     fragments.resize_with(n + flaps.len(), PaintFragment::default);
     // Places `write..` are final, `read..write` hold empty fragments, `..read` the
     // fragments not moved yet.
@@ -583,8 +568,8 @@ mod tests {
         for seed in 0..20 {
             let frags = grid_fragments(seed);
             let want = seam_flaps_reference(frags.clone(), 0.5);
-            // Without room the fragments move to a new vector; with room for every flap
-            // they stay and the flaps go in among them.
+            // Without room the vector grows first; with room for every flap the
+            // fragments stay where they are.
             let (out, at) = seam_flaps_indexed(frags.clone(), 0.5, FlapJoin::Separate);
             assert!(out.len() > frags.len(), "seed {seed}: some flaps");
             assert_eq!((out, at), want, "seed {seed}");
