@@ -195,16 +195,16 @@ fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
     let m = ctx.margin;
     let spread = |j: usize| j.reverse_bits() >> (usize::BITS - PROBE_SAMPLE.trailing_zeros());
     let members: [usize; PROBE_SAMPLE] = std::array::from_fn(|t| spread(t) * n / PROBE_SAMPLE);
-    // The members' boxes (grown by the margin) side by side, coordinate by coordinate: a
-    // piece's box is tested against a whole block of them in one loop without branches,
-    // and only the members it meets are looked at further.
-    // Every box once, side by side (the pieces are large: reading their boxes twice from
-    // them cost more than this copy).
+    // Every box (grown by the margin) once, side by side: the pieces are large, and
+    // reading their boxes twice from them cost more than this copy.
     let boxes: Vec<Box2> = set
         .par_iter()
         .with_min_len(PROBE_CHUNK)
         .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
         .collect();
+    // The members' boxes coordinate by coordinate: a piece's box is tested against a
+    // whole block of them in one loop without branches, and only the members it meets
+    // are looked at further.
     let grown = members.map(|a| boxes[a]);
     let (min_x, max_x) = (grown.map(|b| b.min_x), grown.map(|b| b.max_x));
     let (min_y, max_y) = (grown.map(|b| b.min_y), grown.map(|b| b.max_y));

@@ -45,7 +45,7 @@ impl Stripes {
             y0: u.min_y,
             h: tall / count as f64,
             lists: vec![Vec::new(); count],
-            bottom: Vec::with_capacity(n),
+            bottom: Vec::new(),
         };
         let mut by_x: Vec<u32> = (0..n as u32).collect();
         by_x.sort_unstable_by(|&a, &b| {
