@@ -30,7 +30,7 @@ pub struct LargeArgs {
 /// limn's row for the scene `name`, measured in a process of its own (this program run
 /// with `--limn-row`), as each peer is: a scene measured after another one in the same
 /// process ran in the memory that one left (the 10k soup after the surfaces took 39–42 ms
-/// instead of 31–34).
+/// instead of 30–34).
 fn limn_row(name: &str, runs: usize) -> Result<(f64, usize, usize)> {
     let out = std::process::Command::new(std::env::current_exe()?)
         .args(["large", "--runs", &runs.to_string(), "--limn-row", name])
