@@ -179,6 +179,7 @@ const PROBE_MIN: usize = 256;
 /// Members of a set probed by [`cycles_everywhere`] (a power of two, at most 64: one bit
 /// each in a mask).
 const PROBE_SAMPLE: usize = 64;
+const _: () = assert!(PROBE_SAMPLE.is_power_of_two() && PROBE_SAMPLE <= u64::BITS as usize);
 
 /// Whether the occlusion graph of `set` is, as measured on a sample, certain to be one
 /// cycle nearly everywhere, so that analysing the whole set would be wasted. Pieces that
