@@ -4,28 +4,59 @@
 //! cannot show. Dropping such faces before ordering keeps many copies of one mesh linear
 //! instead of quadratic in the number of copies (every pair of copies overlaps).
 
+use std::collections::HashMap;
+use std::hash::BuildHasher;
+
+use glam::DVec3;
 use limn_scene::Scene;
 use rayon::prelude::*;
+use rustc_hash::FxBuildHasher;
 
-/// Canonical vertex ids: vertices at the same position (bit for bit) share the id of one
-/// of them.
+/// Canonical vertex ids: vertices at the same position (bit for bit) share the id of the
+/// first of them. The positions are hashed; the vertices are split by hash into shards,
+/// each read in order into a table of its own (in parallel), so the answer does not
+/// depend on the threads.
 pub(crate) fn canonical_vertices(scene: &Scene) -> Vec<u32> {
-    let key = |v: usize| {
-        let p = scene.vertices[v];
-        [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()]
-    };
-    let mut by_pos: Vec<u32> = (0..scene.vertices.len() as u32).collect();
-    by_pos.par_sort_unstable_by_key(|&v| (key(v as usize), v));
-    let mut canon = vec![0u32; scene.vertices.len()];
-    for (i, &v) in by_pos.iter().enumerate() {
-        canon[v as usize] = if i > 0 && key(by_pos[i - 1] as usize) == key(v as usize) {
-            canon[by_pos[i - 1] as usize]
-        } else {
-            v
-        };
+    let n = scene.vertices.len();
+    let key = |p: &DVec3| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()];
+    let hashes: Vec<u64> = scene
+        .vertices
+        .par_iter()
+        .with_min_len(VERTICES_PER_TASK)
+        .map(|p| FxBuildHasher.hash_one(key(p)))
+        .collect();
+    let shards = (n / VERTICES_PER_TASK).clamp(1, MAX_SHARDS);
+    let parts: Vec<Vec<(u32, u32)>> = (0..shards)
+        .into_par_iter()
+        .map(|s| {
+            // Shard `s` holds the hashes whose top bits, scaled to the shards, are `s`.
+            let mine = |h: u64| ((u128::from(h) * shards as u128) >> 64) as usize == s;
+            let mut first: HashMap<[u64; 3], u32, FxBuildHasher> =
+                HashMap::with_capacity_and_hasher(2 * n / shards, FxBuildHasher);
+            let mut out = Vec::new();
+            for (v, &h) in hashes.iter().enumerate() {
+                if mine(h) {
+                    let c = *first.entry(key(&scene.vertices[v])).or_insert(v as u32);
+                    if c != v as u32 {
+                        out.push((v as u32, c));
+                    }
+                }
+            }
+            out
+        })
+        .collect();
+    let mut canon: Vec<u32> = (0..n as u32).collect();
+    for (v, c) in parts.into_iter().flatten() {
+        canon[v as usize] = c;
     }
     canon
 }
+
+/// Vertices per parallel task of [`canonical_vertices`], about.
+const VERTICES_PER_TASK: usize = 16384;
+
+/// Shards of [`canonical_vertices`] at most.
+const MAX_SHARDS: usize = 16;
 
 /// Per face: whether a later face with the same corners in the same cyclic order, an
 /// opaque material and the same culling (`culled_object`) draws over all of it.
@@ -71,4 +102,55 @@ pub(crate) fn hidden_by_later_copies(
         g = e;
     }
     hidden
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The first vertex at each position, found by comparing every vertex with the
+    /// earlier ones' positions (kept in a map, by bits).
+    fn first_at_each_position(scene: &Scene) -> Vec<u32> {
+        let mut seen = std::collections::BTreeMap::new();
+        (0..scene.vertices.len() as u32)
+            .map(|v| {
+                let p = scene.vertices[v as usize];
+                *seen
+                    .entry([p.x.to_bits(), p.y.to_bits(), p.z.to_bits()])
+                    .or_insert(v)
+            })
+            .collect()
+    }
+
+    /// Sets small (one shard) and large (several), with repeated positions near and far
+    /// apart in the list, signed zeros (different bits, so different positions) and NaN.
+    #[test]
+    fn canonical_ids_are_the_first_vertex_at_each_position() {
+        let mut r = crate::rng::SplitMix::new(11);
+        for n in [0, 1, 7, 1000, 70_000] {
+            let mut s = Scene::default();
+            let distinct = (n / 3).max(1);
+            for _ in 0..n {
+                let k = (r.next_u64() % distinct as u64) as f64;
+                let p = match r.next_u64() % 50 {
+                    0 => DVec3::new(0.0, -0.0, k),
+                    1 => DVec3::new(-0.0, 0.0, k),
+                    2 => DVec3::new(f64::NAN, 1.0, 2.0),
+                    _ => DVec3::new(k, k * 0.5, -k),
+                };
+                s.vertices.push(p);
+            }
+            let got = canonical_vertices(&s);
+            assert_eq!(got, first_at_each_position(&s), "{n} vertices");
+            if n >= 1000 {
+                assert!(
+                    got.iter()
+                        .enumerate()
+                        .filter(|&(v, &c)| c != v as u32)
+                        .count()
+                        > n / 2
+                );
+            }
+        }
+    }
 }
