@@ -12,6 +12,8 @@ use limn_scene::Scene;
 use rayon::prelude::*;
 use rustc_hash::FxBuildHasher;
 
+use crate::by_vertex::ByVertex;
+
 /// Canonical vertex ids: vertices at the same position (bit for bit) share the id of the
 /// first of them. The positions are hashed; the vertices are split by hash into shards,
 /// each read in order into a table of its own (in parallel), so the answer does not
@@ -66,7 +68,6 @@ pub(crate) fn hidden_by_later_copies(
     culled_object: &[bool],
 ) -> Vec<bool> {
     let n = scene.faces.len();
-    let mut hidden = vec![false; n];
     // Key of a face: its canonical corner ids rotated to start at the smallest, stored
     // one after another in `keys` (face `i` at `at[i]..at[i + 1]`).
     let mut at = Vec::with_capacity(n + 1);
@@ -81,25 +82,38 @@ pub(crate) fn hidden_by_later_copies(
         at.push(keys.len());
     }
     let key = |i: u32| &keys[at[i as usize]..at[i as usize + 1]];
-    // Faces grouped by key, each group in input order (a total order, so the result
-    // does not depend on the sort or on threads).
-    let mut by_key: Vec<u32> = (0..n as u32).collect();
-    by_key.par_sort_unstable_by(|&a, &b| key(a).cmp(key(b)).then(a.cmp(&b)));
-    let mut g = 0;
-    while g < n {
-        let mut e = g + 1;
-        while e < n && key(by_key[e]) == key(by_key[g]) {
-            e += 1;
+    // Faces by the first id of their key (its smallest), each group in input order; a
+    // face with no corners is nobody's copy.
+    let mut by_first = ByVertex::new(scene.vertices.len(), |put| {
+        for i in 0..n as u32 {
+            if let Some(&first) = key(i).first() {
+                put(first, i);
+            }
         }
-        // Whether an opaque later copy was seen, per culling flag.
-        let mut seen = [false; 2];
-        for &i in by_key[g..e].iter().rev() {
-            let f = &scene.faces[i as usize];
-            let cull = culled_object[f.object as usize] as usize;
-            hidden[i as usize] = seen[cull];
-            seen[cull] |= scene.materials[f.material as usize].is_opaque();
+    });
+    let copies = by_first.flat_map_groups(|group, hidden: &mut Vec<u32>| {
+        if group.len() < 2 {
+            return;
         }
-        g = e;
+        // Faces of one key together, in input order (a total order, so the result does
+        // not depend on the sort or on threads).
+        group.sort_unstable_by(|&a, &b| key(a).cmp(key(b)).then(a.cmp(&b)));
+        for copies in group.chunk_by(|&a, &b| key(a) == key(b)) {
+            // Whether an opaque later copy was seen, per culling flag.
+            let mut seen = [false; 2];
+            for &i in copies.iter().rev() {
+                let f = &scene.faces[i as usize];
+                let cull = culled_object[f.object as usize] as usize;
+                if seen[cull] {
+                    hidden.push(i);
+                }
+                seen[cull] |= scene.materials[f.material as usize].is_opaque();
+            }
+        }
+    });
+    let mut hidden = vec![false; n];
+    for i in copies {
+        hidden[i as usize] = true;
     }
     hidden
 }
@@ -150,6 +164,86 @@ mod tests {
                         .count()
                         > n / 2
                 );
+            }
+        }
+    }
+
+    /// Whether each face has a later copy (same canonical corners in the same cyclic
+    /// order) that is opaque and culled alike: every later face compared.
+    fn hidden_by_comparing_all(scene: &Scene, canon: &[u32], culled: &[bool]) -> Vec<bool> {
+        let corners = |i: usize| -> Vec<u32> {
+            scene.faces[i]
+                .vertices
+                .iter()
+                .map(|&v| canon[v as usize])
+                .collect()
+        };
+        let same_cycle = |a: &[u32], b: &[u32]| {
+            a.len() == b.len()
+                && (0..a.len()).any(|r| (0..a.len()).all(|k| a[(k + r) % a.len()] == b[k]))
+        };
+        (0..scene.faces.len())
+            .map(|i| {
+                let (fi, ci) = (&scene.faces[i], corners(i));
+                (i + 1..scene.faces.len()).any(|j| {
+                    let fj = &scene.faces[j];
+                    culled[fi.object as usize] == culled[fj.object as usize]
+                        && scene.materials[fj.material as usize].is_opaque()
+                        && same_cycle(&corners(j), &ci)
+                })
+            })
+            .collect()
+    }
+
+    /// Random faces over few positions (many copies, turned, reversed, of other objects
+    /// and materials, some translucent), two vertices at each position.
+    #[test]
+    fn copies_are_found_as_by_comparing_every_pair() {
+        use limn_scene::{Face, Material};
+        let mut r = crate::rng::SplitMix::new(3);
+        for round in 0..40 {
+            let mut s = Scene::default();
+            let mut glass = Material::diffuse("glass", [0.5; 3]);
+            glass.opacity = 0.5;
+            s.add_material(Material::diffuse("paint", [0.5; 3]));
+            s.add_material(glass);
+            s.add_object("a");
+            s.add_object("b");
+            let positions = 4 + round % 5;
+            for k in 0..2 * positions {
+                s.vertices
+                    .push(DVec3::new((k % positions) as f64, 0.0, 1.0));
+            }
+            for _ in 0..60 {
+                let m = 3 + (r.next_u64() % 2) as usize;
+                // Distinct positions (a face through one position twice has no single
+                // starting corner), either vertex at each.
+                let mut vertices: Vec<u32> = Vec::new();
+                while vertices.len() < m {
+                    let p = (r.next_u64() % positions as u64) as u32;
+                    if !vertices.iter().any(|&v| v % positions as u32 == p) {
+                        vertices.push(p + positions as u32 * (r.next_u64() % 2) as u32);
+                    }
+                }
+                s.faces.push(Face {
+                    vertices,
+                    material: u32::from(r.next_u64().is_multiple_of(5)),
+                    object: (r.next_u64() % 2) as u32,
+                    normals: None,
+                    texcoords: None,
+                });
+            }
+            let canon = canonical_vertices(&s);
+            for culled in [[false, false], [true, false], [true, true]] {
+                let got = hidden_by_later_copies(&s, &canon, &culled);
+                assert_eq!(
+                    got,
+                    hidden_by_comparing_all(&s, &canon, &culled),
+                    "round {round}"
+                );
+                if round == 0 {
+                    assert!(got.iter().any(|&h| h) && got.iter().any(|&h| !h));
+                }
             }
         }
     }

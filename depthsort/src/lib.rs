@@ -34,6 +34,7 @@
 mod adaptive;
 mod broad;
 mod bsp;
+mod by_vertex;
 mod coincident;
 mod components;
 mod detached;

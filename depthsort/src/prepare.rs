@@ -9,6 +9,7 @@ use limn_kernel::Kernel;
 use limn_kernel::{PolygonSide, Side};
 use limn_scene::Scene;
 
+use crate::by_vertex::ByVertex;
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
 use crate::options::{CullMode, OrderError};
 use crate::pieces::{Ctx, Piece, NONE};
@@ -17,42 +18,43 @@ use rayon::prelude::*;
 
 /// For each object: is it a closed surface whose materials are all opaque? Every edge
 /// (between vertex positions) must be used exactly once in each direction within the
-/// object. The edges are sorted once by (object, undirected edge, direction): every group
-/// of one undirected edge must then be exactly its two directions.
+/// object. The edges are grouped by their lower end ([`ByVertex`]); within a group, sorted
+/// by (upper end, object, direction), every run of one edge of one object must then be
+/// exactly its two directions.
 pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
     let n = scene.objects.len();
     let mut ok = vec![true; n];
     let mut has_faces = vec![false; n];
-    // Edges (object, lower end, upper end, direction).
-    let mut edges: Vec<(u32, u32, u32, bool)> =
-        Vec::with_capacity(scene.faces.iter().map(|f| f.vertices.len()).sum());
     for f in &scene.faces {
         let o = f.object as usize;
         has_faces[o] = true;
         if !scene.materials[f.material as usize].is_opaque() {
             ok[o] = false;
         }
-        let m = f.vertices.len();
-        for i in 0..m {
-            let a = canon[f.vertices[i] as usize];
-            let b = canon[f.vertices[(i + 1) % m] as usize];
-            if a != b {
-                edges.push((f.object, a.min(b), a.max(b), a > b));
+    }
+    // Every edge at its lower end: (upper end, object, direction).
+    let mut edges = ByVertex::new(scene.vertices.len(), |put| {
+        for f in &scene.faces {
+            let m = f.vertices.len();
+            for i in 0..m {
+                let a = canon[f.vertices[i] as usize];
+                let b = canon[f.vertices[(i + 1) % m] as usize];
+                if a != b {
+                    put(a.min(b), (a.max(b), f.object, a > b));
+                }
             }
         }
-    }
-    edges.par_sort_unstable();
-    let mut i = 0;
-    while i < edges.len() {
-        let (o, a, b, _) = edges[i];
-        let mut j = i + 1;
-        while j < edges.len() && (edges[j].0, edges[j].1, edges[j].2) == (o, a, b) {
-            j += 1;
+    });
+    let open = edges.flat_map_groups(|group, open: &mut Vec<u32>| {
+        group.sort_unstable();
+        for run in group.chunk_by(|x, y| (x.0, x.1) == (y.0, y.1)) {
+            if !matches!(run, [x, y] if x.2 != y.2) {
+                open.push(run[0].1);
+            }
         }
-        if j - i != 2 || edges[i].3 == edges[i + 1].3 {
-            ok[o as usize] = false;
-        }
-        i = j;
+    });
+    for o in open {
+        ok[o as usize] = false;
     }
     for o in 0..n {
         ok[o] &= has_faces[o];
