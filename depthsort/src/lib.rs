@@ -35,6 +35,7 @@ mod adaptive;
 mod broad;
 mod bsp;
 mod by_vertex;
+mod chunked;
 mod coincident;
 mod components;
 mod detached;
