@@ -43,6 +43,7 @@ pub fn measure(
     let dir = tempfile::tempdir()?;
     let path = dir.path().join("limn.svg");
     for _ in 0..runs.max(1) {
+        crate::settle::settle();
         let t0 = Instant::now();
         let ordered = order(&s.scene, &s.camera, &opts)?;
         let pic = picture(&s.scene, &ordered, &Style::default());

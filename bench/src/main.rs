@@ -12,6 +12,7 @@ mod lines_bench;
 mod peers;
 mod raster;
 mod scenes;
+mod settle;
 mod shadow_costs;
 
 use std::path::PathBuf;

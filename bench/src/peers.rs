@@ -207,6 +207,7 @@ fn once(
         line += &format!(" '{a}'");
     }
     line += &format!(" '{}' '{}'", input.display(), out.display());
+    crate::settle::settle();
     let t0 = Instant::now();
     let mut child = Command::new("sh")
         .args(["-c", &line])
