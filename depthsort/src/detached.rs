@@ -12,7 +12,6 @@ use std::sync::Arc;
 use limn_kernel::Kernel;
 use rayon::prelude::*;
 
-use crate::chunked::Chunked;
 use crate::pieces::{Ctx, NONE};
 
 /// Pieces in a group, at least (the last group may have fewer): enough that copying them
@@ -58,12 +57,10 @@ pub(crate) fn order_apart<'a, K: Kernel>(
         .map(|(comps, seed)| {
             let mut members: Vec<u32> = comps.iter().flatten().copied().collect();
             members.sort_unstable();
-            // Room for as many pieces again as the splits make (growing the first chunk
-            // would copy every piece).
-            let mut pieces = Chunked::with_capacity(2 * members.len() + 8);
-            for &p in &members {
-                pieces.push(shared.pieces[p as usize].clone());
-            }
+            // Room for as many pieces again as the splits make (growing the vector would
+            // copy every piece).
+            let mut pieces = Vec::with_capacity(2 * members.len() + 8);
+            pieces.extend(members.iter().map(|&p| shared.pieces[p as usize].clone()));
             let mut local = shared.detached(pieces, seed, Arc::clone(&counted));
             let local_comps = comps
                 .into_iter()
@@ -88,13 +85,13 @@ pub(crate) fn order_apart<'a, K: Kernel>(
             l if (l as usize) < m => g.members[l as usize],
             l => base + (l - m as u32),
         };
-        for (l, mut piece) in g.ctx.pieces.into_iter().enumerate() {
-            if l < m {
-                if piece.kids != [NONE, NONE] {
-                    ctx.pieces[g.members[l] as usize].kids = piece.kids.map(global);
-                }
-                continue;
+        let mut pieces = g.ctx.pieces;
+        for (l, piece) in pieces.iter().enumerate().take(m) {
+            if piece.kids != [NONE, NONE] {
+                ctx.pieces[g.members[l] as usize].kids = piece.kids.map(global);
             }
+        }
+        for mut piece in pieces.drain(m..) {
             piece.parent = global(piece.parent);
             piece.kids = piece.kids.map(global);
             ctx.push(piece);

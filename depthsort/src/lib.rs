@@ -35,7 +35,6 @@ mod adaptive;
 mod broad;
 mod bsp;
 mod by_vertex;
-mod chunked;
 mod coincident;
 mod components;
 mod detached;

@@ -9,7 +9,6 @@ use glam::{DMat4, DVec3};
 use limn_kernel::{Kernel, PolygonSide, Side};
 use limn_scene::Camera;
 
-use crate::chunked::Chunked;
 use crate::geom::{bbox, Box2};
 use crate::options::Stats;
 use crate::rng::SplitMix;
@@ -62,8 +61,7 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     pub eye: Eye<K::Point>,
     pub vp: DMat4,
     pub camera: Camera,
-    /// Every piece, by id (in chunks: a piece never moves once made).
-    pub pieces: Chunked<Piece<K>>,
+    pub pieces: Vec<Piece<K>>,
     pub stats: Stats,
     /// Pixel margin of the float prefilters.
     pub margin: f64,
@@ -99,7 +97,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             eye,
             vp,
             camera,
-            pieces: Chunked::default(),
+            pieces: Vec::new(),
             stats: Stats::default(),
             margin: 1e-7 * size + 1e-9,
             dmargin: 1e-9 * far.abs().max(1e-300),
@@ -126,12 +124,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
     /// seeded with `seed`, and no counts: it orders apart from this one while this one is
     /// only read. Its splits count against the limit in `counted`, shared by every
     /// detached context and started at this context's pieces.
-    pub fn detached(
-        &self,
-        pieces: Chunked<Piece<K>>,
-        seed: u64,
-        counted: Arc<AtomicUsize>,
-    ) -> Self {
+    pub fn detached(&self, pieces: Vec<Piece<K>>, seed: u64, counted: Arc<AtomicUsize>) -> Self {
         let mut d = self.reader();
         d.pieces = pieces;
         d.limit = self.limit;
