@@ -8,7 +8,8 @@ use rayon::prelude::*;
 /// Items in groups by vertex: group `v` is `items[start[v]..start[v + 1]]`, its items in
 /// the order they were given.
 pub(crate) struct ByVertex<T> {
-    start: Vec<u32>,
+    /// Offsets (`usize`: a huge mesh can have more edges than `u32` counts).
+    start: Vec<usize>,
     items: Vec<T>,
 }
 
@@ -17,16 +18,16 @@ impl<T: Copy + Default + Send + Sync> ByVertex<T> {
     /// `each` is called twice with a callback: once to count the items at each vertex,
     /// once to place them; it must give the same items both times.
     pub(crate) fn new(vertices: usize, each: impl Fn(&mut dyn FnMut(u32, T))) -> Self {
-        let mut start = vec![0u32; vertices + 1];
+        let mut start = vec![0usize; vertices + 1];
         each(&mut |v, _| start[v as usize + 1] += 1);
         for v in 1..start.len() {
             start[v] += start[v - 1];
         }
-        let mut items = vec![T::default(); start[vertices] as usize];
+        let mut items = vec![T::default(); start[vertices]];
         let mut fill = start.clone();
         each(&mut |v, item| {
             let at = &mut fill[v as usize];
-            items[*at as usize] = item;
+            items[*at] = item;
             *at += 1;
         });
         ByVertex { start, items }
@@ -46,7 +47,7 @@ impl<T: Copy + Default + Send + Sync> ByVertex<T> {
         let mut rest = self.items.as_mut_slice();
         for first in (0..vertices).step_by(per) {
             let end = (first + per).min(vertices);
-            let len = (self.start[end] - self.start[first]) as usize;
+            let len = self.start[end] - self.start[first];
             let (block, after) = rest.split_at_mut(len);
             blocks.push((first..end, block));
             rest = after;
@@ -58,8 +59,7 @@ impl<T: Copy + Default + Send + Sync> ByVertex<T> {
                 let mut out = Vec::new();
                 let base = start[vs.start];
                 for v in vs {
-                    let group =
-                        &mut block[(start[v] - base) as usize..(start[v + 1] - base) as usize];
+                    let group = &mut block[start[v] - base..start[v + 1] - base];
                     if !group.is_empty() {
                         check(group, &mut out);
                     }
