@@ -134,6 +134,20 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         d
     }
 
+    /// Makes room, before the `faces` of a scene are added, for every piece the limit
+    /// allows: as address space, which is given memory only page by page as pieces are
+    /// written, so that the vector never moves. Growing it by doubling copied every piece
+    /// into fresh memory at each step (the dense 10k soup's 187,000 pieces of 352 bytes:
+    /// a seventh of its ordering time). Where the system refuses that much address space
+    /// (a limit on it, strict overcommit, a 32-bit target), room for a piece per face and
+    /// as many again (quads as two triangles, splits).
+    pub fn make_room(&mut self, faces: usize) {
+        let wanted = self.limit.saturating_sub(self.pieces.len());
+        if self.pieces.try_reserve_exact(wanted).is_err() {
+            self.pieces.reserve(faces.saturating_mul(2));
+        }
+    }
+
     /// Whether two more pieces stay within the limit (counted across the detached
     /// contexts for one of them: a refused split of any is over the limit in any order
     /// the contexts run in, since none is refused while all of them together fit).

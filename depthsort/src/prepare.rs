@@ -86,9 +86,7 @@ pub(crate) fn prepare<K: Kernel>(
     // block at a time (so that the pieces waiting to be added stay few); their pieces are
     // then added in face order, so ids do not depend on the threads.
     let mut items = Vec::with_capacity(scene.faces.len());
-    // Room for a piece per face and as many again (quads as two triangles, splits): the
-    // pieces are large, and growing the vector copies them all.
-    ctx.pieces.reserve(2 * scene.faces.len());
+    ctx.make_room(scene.faces.len());
     let mut quad_halves = vec![false; scene.faces.len()];
     // Block k + 1 is prepared on the pool while block k's pieces are added (by a reader
     // with the same view and no pieces of its own).
