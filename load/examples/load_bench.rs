@@ -13,6 +13,11 @@ use std::time::{Duration, Instant};
 
 use limn_load::{load, LoadOptions};
 
+/// The allocator of the `limn` binary, so that loading is measured as `limn render`
+/// loads (glibc's gives memory back between loads and faults it in again).
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 const RINGS: usize = 1000;
 const SIDES: usize = 500;
 
