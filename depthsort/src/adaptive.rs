@@ -13,6 +13,7 @@ use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
 use crate::pieces::Ctx;
 use crate::separation::SeparatingAxes;
+use crate::split_apart::{split_apart, APART_FROM};
 
 /// Parts of a split component up to this size are always analysed again (the analysis
 /// of a small set is cheap whatever its density).
@@ -332,8 +333,11 @@ pub(crate) fn adaptive<K: Kernel>(
 ) -> Vec<u32> {
     let mut out = Vec::with_capacity(set.len());
     let mut ws = Workspace::default();
-    if set.len() <= 1 || (set.len() > PROBE_MIN && cycles_everywhere(ctx, &set)) {
-        run(ctx, Task::Order(set), candidates, &mut ws, &mut out);
+    if set.len() <= 1 {
+        return set;
+    }
+    if set.len() > PROBE_MIN && cycles_everywhere(ctx, &set) {
+        run(ctx, Task::Split(set), candidates, &mut ws, &mut out);
         return out;
     }
     // The tasks of the whole set, popped in order: runs of pieces alone in their
@@ -347,7 +351,7 @@ pub(crate) fn adaptive<K: Kernel>(
             Task::Emit(alone) => steps.push(Ok(alone)),
             Task::Split(c) => {
                 steps.push(Err(comps.len()));
-                comps.push(c);
+                comps.push((c, ()));
             }
             // Not made by `order_set`; ordered here all the same (its pieces are its own).
             other => {
@@ -361,7 +365,7 @@ pub(crate) fn adaptive<K: Kernel>(
         let mut ws = Workspace::default();
         comps
             .into_iter()
-            .map(|c| {
+            .map(|(c, ())| {
                 let mut o = Vec::with_capacity(c.len());
                 run(local, Task::Split(c), candidates, &mut ws, &mut o);
                 o
@@ -397,6 +401,39 @@ fn run<K: Kernel>(
                 } else {
                     order_set(ctx, s, &mut stack, ws);
                 }
+            }
+            Task::Split(s) if s.len() >= APART_FROM => {
+                out.extend(split_apart(
+                    ctx,
+                    s,
+                    f64::INFINITY,
+                    candidates,
+                    |ctx, part, density, depth| {
+                        if depth == 0 {
+                            // The component itself: always split.
+                            return Some(f64::INFINITY);
+                        }
+                        let (pays, density) = analysis_pays(ctx, part, candidates, density);
+                        (!pays).then_some(density)
+                    },
+                    |local, parts| {
+                        let mut ws = Workspace::default();
+                        parts
+                            .into_iter()
+                            .map(|(part, density)| {
+                                let mut o = Vec::with_capacity(part.len());
+                                run(
+                                    local,
+                                    Task::Deep(part, density),
+                                    candidates,
+                                    &mut ws,
+                                    &mut o,
+                                );
+                                o
+                            })
+                            .collect()
+                    },
+                ));
             }
             Task::Split(s) => {
                 let sp = choose_splitter(ctx, &s, candidates);

@@ -5,6 +5,7 @@ use limn_kernel::Kernel;
 
 use crate::occlusion::Rel;
 use crate::pieces::Ctx;
+use crate::split_apart::{split_apart, APART_FROM};
 
 /// How many pieces a splitter candidate is scored against, at most.
 pub(crate) const SCORE_SAMPLE: usize = 512;
@@ -119,7 +120,8 @@ pub(crate) fn push_parts_as(
 }
 
 /// The Fuchs–Kedem–Naylor BSP order of `set`: split by a splitter, recurse on both
-/// sides, paint far side, splitter plane, near side.
+/// sides, paint far side, splitter plane, near side. Sets of [`APART_FROM`] pieces or
+/// more are split on every core ([`split_apart`]).
 pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: usize) -> Vec<u32> {
     let mut out = Vec::with_capacity(set.len());
     let mut stack = vec![Task::Order(set)];
@@ -129,6 +131,22 @@ pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: us
             Task::Order(s) | Task::Split(s) | Task::Deep(s, _) => {
                 if s.len() <= 1 {
                     out.extend(s);
+                    continue;
+                }
+                if s.len() >= APART_FROM {
+                    out.extend(split_apart(
+                        ctx,
+                        s,
+                        (),
+                        candidates,
+                        |_, _, (), _| Some(()),
+                        |local, parts| {
+                            parts
+                                .into_iter()
+                                .map(|(part, ())| bsp(local, part, candidates))
+                                .collect()
+                        },
+                    ));
                     continue;
                 }
                 let sp = choose_splitter(ctx, &s, candidates);

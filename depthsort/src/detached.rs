@@ -6,7 +6,7 @@
 //! alone and each draws its random numbers from a source seeded in group order, so the
 //! result is the same on any number of threads.
 
-use std::sync::atomic::AtomicUsize;
+use std::sync::atomic::Ordering;
 use std::sync::Arc;
 
 use limn_kernel::Kernel;
@@ -18,6 +18,9 @@ use crate::pieces::{Ctx, NONE};
 /// and starting a task costs little against ordering them.
 const GROUP_PIECES: usize = 512;
 
+/// Components to order apart, each with what its ordering needs to know of it.
+type Components<T> = Vec<(Vec<u32>, T)>;
+
 /// One group ordered apart: its context, the shared ids of the pieces copied into it (its
 /// first ids, in increasing order), and the order of each of its components.
 struct Group<'a, K: Kernel> {
@@ -27,19 +30,22 @@ struct Group<'a, K: Kernel> {
 }
 
 /// Orders `comps` (sets of pieces of `ctx` that can be ordered independently of each
-/// other) on the pool: `order` orders the components of one group in its own context and
-/// returns their orders. Returns the orders of all components in the order given, in ids
-/// of `ctx`, to which the pieces made meanwhile are added (in group order).
-pub(crate) fn order_apart<'a, K: Kernel>(
+/// other, each with what its ordering needs to know of it) on the pool: `order` orders
+/// the components of one group in its own context and returns their orders. Returns the
+/// orders of all components in the order given, in ids of `ctx`, to which the pieces made
+/// meanwhile are added (in group order). `ctx` may itself be a detached context: its
+/// groups then count their splits where it counts its own.
+pub(crate) fn order_apart<'a, K: Kernel, T: Send>(
     ctx: &mut Ctx<'a, K>,
-    comps: Vec<Vec<u32>>,
-    order: impl Fn(&mut Ctx<'a, K>, Vec<Vec<u32>>) -> Vec<Vec<u32>> + Sync,
+    comps: Vec<(Vec<u32>, T)>,
+    order: impl Fn(&mut Ctx<'a, K>, Vec<(Vec<u32>, T)>) -> Vec<Vec<u32>> + Sync,
 ) -> Vec<Vec<u32>> {
-    let mut groups: Vec<(Vec<Vec<u32>>, u64)> = Vec::new();
+    // Each group's components and the seed of its random source.
+    let mut groups: Vec<(Components<T>, u64)> = Vec::new();
     let mut group = Vec::new();
     let mut size = 0;
     for c in comps {
-        size += c.len();
+        size += c.0.len();
         group.push(c);
         if size >= GROUP_PIECES {
             groups.push((std::mem::take(&mut group), ctx.next_random()));
@@ -50,21 +56,34 @@ pub(crate) fn order_apart<'a, K: Kernel>(
         groups.push((group, ctx.next_random()));
     }
     let count = groups.iter().map(|(comps, _)| comps.len()).sum();
-    let counted = Arc::new(AtomicUsize::new(ctx.pieces.len()));
+    let counted = ctx.split_counter();
+    // Each group's share of the pieces the limit still allows, by its members.
+    let free = ctx.limit.saturating_sub(counted.load(Ordering::Relaxed));
+    let total: usize = groups
+        .iter()
+        .flat_map(|(comps, _)| comps)
+        .map(|c| c.0.len())
+        .sum();
     let shared: &Ctx<'a, K> = ctx;
     let done: Vec<Group<'a, K>> = groups
         .into_par_iter()
         .map(|(comps, seed)| {
-            let mut members: Vec<u32> = comps.iter().flatten().copied().collect();
+            let mut members: Vec<u32> = comps.iter().flat_map(|c| &c.0).copied().collect();
             members.sort_unstable();
-            // Room for as many pieces again as the splits make (growing the vector would
-            // copy every piece).
-            let mut pieces = Vec::with_capacity(2 * members.len() + 8);
+            // Room for the group's share of the limit, as address space (see
+            // `Ctx::make_room`): growing the vector would copy every piece into fresh
+            // memory. Where that is refused, room for as many pieces again.
+            let m = members.len();
+            let share = (free as u128 * m as u128 / total.max(1) as u128) as usize;
+            let mut pieces = Vec::new();
+            if pieces.try_reserve_exact(m.saturating_add(share)).is_err() {
+                pieces.reserve(2 * m + 8);
+            }
             pieces.extend(members.iter().map(|&p| shared.pieces[p as usize].clone()));
             let mut local = shared.detached(pieces, seed, Arc::clone(&counted));
             let local_comps = comps
                 .into_iter()
-                .map(|c| c.iter().map(|&p| local_id(&members, p)).collect())
+                .map(|(c, with)| (c.iter().map(|&p| local_id(&members, p)).collect(), with))
                 .collect();
             let orders = order(&mut local, local_comps);
             Group {

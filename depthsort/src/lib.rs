@@ -53,6 +53,7 @@ mod rng;
 mod separation;
 mod shadows;
 mod simple;
+mod split_apart;
 mod sweep;
 mod view;
 

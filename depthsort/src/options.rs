@@ -198,6 +198,10 @@ pub struct Stats {
     pub largest_component: usize,
     /// Polygon splits, near-plane clipping included.
     pub splits: usize,
+    /// Parts that large sets (BSP's, or the adaptive ordering's large components) were
+    /// split into on one thread and then ordered on every core; 0 when no set was that
+    /// large.
+    pub parts_apart: usize,
     /// Fragments in the order before merging.
     pub fragments_before_merge: usize,
     /// Fragments out.
@@ -232,6 +236,7 @@ impl Stats {
         self.components += other.components;
         self.largest_component = self.largest_component.max(other.largest_component);
         self.splits += other.splits;
+        self.parts_apart += other.parts_apart;
     }
 }
 

@@ -134,6 +134,16 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         d
     }
 
+    /// The count of pieces that the splits of contexts detached from this one are
+    /// counted in against the limit: this context's own when it is detached itself,
+    /// otherwise a new one starting at its pieces.
+    pub fn split_counter(&self) -> Arc<AtomicUsize> {
+        match &self.counted {
+            Some(c) => Arc::clone(c),
+            None => Arc::new(AtomicUsize::new(self.pieces.len())),
+        }
+    }
+
     /// Makes room, before the `faces` of a scene are added, for every piece the limit
     /// allows: as address space, which is given memory only page by page as pieces are
     /// written, so that the vector never moves. Growing it by doubling copied every piece

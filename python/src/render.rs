@@ -139,6 +139,7 @@ pub(crate) fn stats_dict<'py>(
         ("components", s.components),
         ("largest_component", s.largest_component),
         ("splits", s.splits),
+        ("parts_apart", s.parts_apart),
         ("fragments_before_merge", s.fragments_before_merge),
         ("fragments_out", s.fragments_out),
         ("fragments_made", s.fragments_made),

@@ -1,7 +1,8 @@
 //! The output does not depend on the number of threads: every ordering, both arithmetics
 //! and every writer give the same bytes on one thread as on two and three. The scenes
 //! are large enough to take every parallel path (face preparation, candidate-pair tests
-//! handed out in tasks, the probe of dense sets, the sweep broad phase), and lines,
+//! handed out in tasks, the probe of dense sets, the sweep broad phase, large sets split
+//! on one thread and their parts ordered on the pool), and lines,
 //! markers and labels hidden in parallel tasks give the same visible marks and bytes.
 
 use glam::DVec3;
@@ -87,6 +88,41 @@ fn every_writer_and_ordering_gives_the_same_bytes_on_any_number_of_threads() {
                         );
                     }
                 }
+            }
+        }
+    }
+}
+
+#[test]
+fn large_sets_split_on_every_core_give_the_same_bytes_on_any_number_of_threads() {
+    // Dense enough that BSP, and the adaptive ordering (which finds cycles nearly
+    // everywhere), split it on one thread and order the parts on the pool.
+    let scene = soup(2600, 0.45);
+    let camera = Camera::framing(&scene, 240, 180).expect("camera");
+    for sort in [SortMode::Bsp, SortMode::Adaptive] {
+        let stats = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("thread pool");
+            let opts = OrderOptions {
+                sort,
+                ..OrderOptions::default()
+            };
+            pool.install(|| order(&scene, &camera, &opts).expect("orderable").stats)
+        };
+        let one = stats(1);
+        assert!(one.parts_apart >= 2, "{}: {one:?}", sort.name());
+        let one_bytes = outputs(&scene, &camera, sort, Arith::Exact, 1);
+        for threads in [2, 3] {
+            let many = outputs(&scene, &camera, sort, Arith::Exact, threads);
+            for (f, (a, b)) in Format::ALL.iter().zip(one_bytes.iter().zip(&many)) {
+                assert!(
+                    a == b,
+                    "{}, {}: 1 thread and {threads} differ",
+                    sort.name(),
+                    f.name()
+                );
             }
         }
     }
