@@ -104,17 +104,20 @@ pub(crate) fn order_apart<'a, K: Kernel, T: Send>(
             l if (l as usize) < m => g.members[l as usize],
             l => base + (l - m as u32),
         };
-        let mut pieces = g.ctx.pieces;
+        let pieces = g.ctx.pieces;
         for (l, piece) in pieces.iter().enumerate().take(m) {
             if piece.kids != [NONE, NONE] {
                 ctx.pieces[g.members[l] as usize].kids = piece.kids.map(global);
             }
         }
-        for mut piece in pieces.drain(m..) {
-            piece.parent = global(piece.parent);
-            piece.kids = piece.kids.map(global);
-            ctx.push(piece);
-        }
+        // Moved on every core, each to its place: the shared vector's memory is new
+        // there, and touching it for the first time is most of the cost.
+        ctx.pieces
+            .par_extend(pieces.into_par_iter().skip(m).map(|mut piece| {
+                piece.parent = global(piece.parent);
+                piece.kids = piece.kids.map(global);
+                piece
+            }));
         out.extend(
             g.orders
                 .into_iter()
