@@ -403,37 +403,7 @@ fn run<K: Kernel>(
                 }
             }
             Task::Split(s) if s.len() >= APART_FROM => {
-                out.extend(split_apart(
-                    ctx,
-                    s,
-                    f64::INFINITY,
-                    candidates,
-                    |ctx, part, density, depth| {
-                        if depth == 0 {
-                            // The component itself: always split.
-                            return Some(f64::INFINITY);
-                        }
-                        let (pays, density) = analysis_pays(ctx, part, candidates, density);
-                        (!pays).then_some(density)
-                    },
-                    |local, parts| {
-                        let mut ws = Workspace::default();
-                        parts
-                            .into_iter()
-                            .map(|(part, density)| {
-                                let mut o = Vec::with_capacity(part.len());
-                                run(
-                                    local,
-                                    Task::Deep(part, density),
-                                    candidates,
-                                    &mut ws,
-                                    &mut o,
-                                );
-                                o
-                            })
-                            .collect()
-                    },
-                ));
+                split_on_every_core(ctx, s, f64::INFINITY, candidates, out);
             }
             Task::Split(s) => {
                 let sp = choose_splitter(ctx, &s, candidates);
@@ -450,10 +420,60 @@ fn run<K: Kernel>(
                     order_set(ctx, s, &mut stack, ws);
                     continue;
                 }
+                if s.len() >= APART_FROM {
+                    split_on_every_core(ctx, s, density, candidates, out);
+                    continue;
+                }
                 let sp = choose_splitter(ctx, &s, candidates);
                 let (far, cop, near) = partition(ctx, &s, sp);
                 push_parts_as(&mut stack, far, cop, near, |v| Task::Deep(v, density));
             }
         }
     }
+}
+
+/// Orders `s`, a set to split rather than analyse (a component, or a part where the
+/// analysis does not pay) whose parts inherit `density`, appending the order to `out`:
+/// its top levels are split on this thread and the parts below them ordered on every
+/// core ([`split_apart`]), each part analysed when that pays and split further
+/// otherwise, as a [`Task::Deep`] part is. The order emitted here is the whole order of
+/// `s`, at the place of its task.
+fn split_on_every_core<K: Kernel>(
+    ctx: &mut Ctx<'_, K>,
+    s: Vec<u32>,
+    density: f64,
+    candidates: usize,
+    out: &mut Vec<u32>,
+) {
+    out.extend(split_apart(
+        ctx,
+        s,
+        density,
+        candidates,
+        |ctx, part, density, depth| {
+            if depth == 0 {
+                // `s` itself: known to be split.
+                return Some(density);
+            }
+            let (pays, density) = analysis_pays(ctx, part, candidates, density);
+            (!pays).then_some(density)
+        },
+        |local, parts| {
+            let mut ws = Workspace::default();
+            parts
+                .into_iter()
+                .map(|(part, density)| {
+                    let mut o = Vec::with_capacity(part.len());
+                    run(
+                        local,
+                        Task::Deep(part, density),
+                        candidates,
+                        &mut ws,
+                        &mut o,
+                    );
+                    o
+                })
+                .collect()
+        },
+    ));
 }
