@@ -126,7 +126,7 @@ pub(crate) fn stats_dict<'py>(
     if s.faces_culled > 0 {
         effects.push("backface-culling");
     }
-    let counts: [(&str, usize); 17] = [
+    let counts: [(&str, usize); 18] = [
         ("faces_in", s.faces_in),
         ("faces_culled", s.faces_culled),
         ("faces_degenerate", s.faces_degenerate),
