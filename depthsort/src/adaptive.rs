@@ -402,7 +402,7 @@ fn run<K: Kernel>(
                     order_set(ctx, s, &mut stack, ws);
                 }
             }
-            Task::Split(s) if s.len() >= APART_FROM => {
+            Task::Split(s) if s.len() >= APART_FROM && ctx.may_split_apart() => {
                 split_on_every_core(ctx, s, f64::INFINITY, candidates, out);
             }
             Task::Split(s) => {
@@ -420,7 +420,7 @@ fn run<K: Kernel>(
                     order_set(ctx, s, &mut stack, ws);
                     continue;
                 }
-                if s.len() >= APART_FROM {
+                if s.len() >= APART_FROM && ctx.may_split_apart() {
                     split_on_every_core(ctx, s, density, candidates, out);
                     continue;
                 }

@@ -133,7 +133,7 @@ pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: us
                     out.extend(s);
                     continue;
                 }
-                if s.len() >= APART_FROM {
+                if s.len() >= APART_FROM && ctx.may_split_apart() {
                     out.extend(split_apart(
                         ctx,
                         s,

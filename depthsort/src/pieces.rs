@@ -78,9 +78,17 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     /// For a detached context ([`Ctx::detached`]): the pieces of the whole ordering,
     /// counted across every detached context, against `limit`.
     counted: Option<Arc<AtomicUsize>>,
+    /// How many contexts this one is detached from, counting up through their own: a
+    /// large set is split apart only a few levels deep ([`Ctx::may_split_apart`]).
+    detached_depth: u32,
     rng: SplitMix,
     scratch: Vec<DVec3>,
 }
+
+/// Contexts detached one from another, counting the whole ordering's, in which large
+/// sets are split apart (see [`Ctx::may_split_apart`]): a split apart's parts, the large
+/// components and parts found inside them, and one level more.
+const APART_DEPTH: u32 = 3;
 
 impl<'a, K: Kernel> Ctx<'a, K> {
     pub fn new(
@@ -105,6 +113,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             exceeded: false,
             quad_halves: Arc::from([]),
             counted: None,
+            detached_depth: 0,
             rng: SplitMix::new(seed),
             scratch: Vec::new(),
         }
@@ -130,6 +139,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         d.limit = self.limit;
         d.quad_halves = Arc::clone(&self.quad_halves);
         d.counted = Some(counted);
+        d.detached_depth = self.detached_depth + 1;
         d.rng = SplitMix::new(seed);
         d
     }
@@ -142,6 +152,16 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             Some(c) => Arc::clone(c),
             None => Arc::new(AtomicUsize::new(self.pieces.len())),
         }
+    }
+
+    /// Whether a large set ordered in this context may be split apart
+    /// (`split_apart.rs`): in the whole ordering's context and in contexts detached from
+    /// it fewer than [`APART_DEPTH`] times. A split apart orders its parts through a
+    /// call, not on a stack of tasks, so without this bound a set that splitting does not
+    /// shrink (a float kernel far from the origin) would nest calls until the thread's
+    /// stack ran out; below the bound sets are split on the task stacks as before.
+    pub fn may_split_apart(&self) -> bool {
+        self.detached_depth < APART_DEPTH
     }
 
     /// Makes room, before the `faces` of a scene are added, for every piece the limit
