@@ -18,8 +18,9 @@ use crate::pieces::{Ctx, NONE};
 /// and starting a task costs little against ordering them.
 const GROUP_PIECES: usize = 512;
 
-/// Components to order apart, each with what its ordering needs to know of it.
-type Components<T> = Vec<(Vec<u32>, T)>;
+/// Sets to order apart (components, or the parts of a split apart), each with what its
+/// ordering needs to know of it. Not `components.rs`'s strongly connected components.
+type Sets<T> = Vec<(Vec<u32>, T)>;
 
 /// One group ordered apart: its context, the shared ids of the pieces copied into it (its
 /// first ids, in increasing order), and the order of each of its components.
@@ -41,7 +42,7 @@ pub(crate) fn order_apart<'a, K: Kernel, T: Send>(
     order: impl Fn(&mut Ctx<'a, K>, Vec<(Vec<u32>, T)>) -> Vec<Vec<u32>> + Sync,
 ) -> Vec<Vec<u32>> {
     // Each group's components and the seed of its random source.
-    let mut groups: Vec<(Components<T>, u64)> = Vec::new();
+    let mut groups: Vec<(Sets<T>, u64)> = Vec::new();
     let mut group = Vec::new();
     let mut size = 0;
     for c in comps {
