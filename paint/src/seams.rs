@@ -1,7 +1,7 @@
 //! Seam flaps: closing the hairlines viewers leave between adjacent fills without moving
 //! any boundary of the picture.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicU32, Ordering};
 
 use rayon::prelude::*;
 
@@ -82,7 +82,13 @@ pub fn seam_flaps_indexed(
                     if let Some(outline) = joined_outline(f, &flaps[start..]) {
                         flaps.truncate(start);
                         joined.push((i, outline));
+                        continue;
                     }
+                }
+                // Flaps that stay fragments of their own: none of their edges is
+                // original.
+                for (_, flap) in &mut flaps[start..] {
+                    flap.original_edges = vec![false; flap.points.len()];
                 }
             }
             (flaps, joined)
@@ -308,7 +314,6 @@ fn flaps_after(
             }
             _ => f.fill,
         };
-        let original_edges = vec![false; points.len()];
         out.push((
             i,
             PaintFragment {
@@ -320,7 +325,8 @@ fn flaps_after(
                 texture: f.texture,
                 face: f.face,
                 object: f.object,
-                original_edges,
+                // Made for the flaps that are not joined (see `seam_flaps_indexed`).
+                original_edges: Vec::new(),
             },
         ));
     }
@@ -338,18 +344,27 @@ fn opaque(f: &PaintFragment) -> bool {
 struct LaterNeighbours {
     /// Where fragment `i`'s edges start in `first_later`.
     starts: Vec<usize>,
-    /// Per edge: the fragment found, or `usize::MAX` (written by the parallel scan of
+    /// Per edge: the fragment found, or [`NO_FRAGMENT`] (written by the parallel scan of
     /// the sorted edges, each by the one task that holds its edge).
-    first_later: Vec<AtomicUsize>,
+    first_later: Vec<AtomicU32>,
 }
 
+/// No later fragment (in [`LaterNeighbours`]).
+const NO_FRAGMENT: u32 = u32::MAX;
+
+/// An edge to sort: the hash of its key, its fragment and its place in the fragment.
+type HashedEdge = (u64, u32, u32);
+
 impl LaterNeighbours {
+    /// The neighbours of `fragments`. Fragments are counted in `u32`: a picture of
+    /// `u32::MAX` fragments or more (hundreds of gigabytes) gets no flaps.
     fn new(fragments: &[PaintFragment]) -> Self {
+        let n = fragments.len();
         let key = |j: usize, e: u32| {
             let p = &fragments[j].points;
             edge_key(p[e as usize], p[(e as usize + 1) % p.len()])
         };
-        let mut starts = Vec::with_capacity(fragments.len() + 1);
+        let mut starts = Vec::with_capacity(n + 1);
         let mut count = 0;
         for f in fragments {
             starts.push(count);
@@ -358,35 +373,61 @@ impl LaterNeighbours {
             }
         }
         starts.push(count);
-        // Each edge as (hash of its key, fragment, edge, face): smaller than the key
-        // itself to sort, and the face at hand. A total order (fragment and edge are
-        // unique), so the same result from any sort; edges with equal hashes are told
-        // apart by their keys below.
-        let mut edges: Vec<(u64, usize, u32, u32)> = Vec::with_capacity(count);
-        for (j, f) in fragments.iter().enumerate() {
-            if opaque(f) {
-                edges.extend(
-                    (0..f.points.len() as u32).map(|e| (key_hash(&key(j, e)), j, e, f.face)),
-                );
-            }
-        }
-        edges.par_sort_unstable();
-        let first_later: Vec<AtomicUsize> = std::iter::repeat_with(|| AtomicUsize::new(usize::MAX))
-            .take(count)
+        let first_later: Vec<AtomicU32> = (0..count)
+            .into_par_iter()
+            .with_min_len(EDGES_PER_TASK)
+            .map(|_| AtomicU32::new(NO_FRAGMENT))
             .collect();
-        // Groups of one hash, in parallel. A fragment's key is read only when a later
-        // fragment of another face has the same hash (in a mesh, one of an edge's two
-        // fragments), and the candidates' keys only then.
+        if u32::try_from(n).is_err() {
+            return LaterNeighbours {
+                starts,
+                first_later,
+            };
+        }
+        // Each edge as (hash of its key, fragment, edge): smaller than the key itself
+        // to sort. A total order (fragment and edge are unique), so the same result
+        // from any sort; edges with equal hashes are told apart by their keys below.
+        // Written in blocks of fragments in parallel, each block into its own places.
+        let mut edges: Vec<HashedEdge> = vec![(0, 0, 0); count];
+        let mut blocks = Vec::with_capacity(n.div_ceil(FRAGMENTS_PER_TASK));
+        let mut rest = edges.as_mut_slice();
+        for b in (0..n).step_by(FRAGMENTS_PER_TASK) {
+            let end = (b + FRAGMENTS_PER_TASK).min(n);
+            let (mine, more) = std::mem::take(&mut rest).split_at_mut(starts[end] - starts[b]);
+            blocks.push((b..end, mine));
+            rest = more;
+        }
+        blocks.into_par_iter().for_each(|(block, out)| {
+            let mut places = out.iter_mut();
+            for j in block {
+                if !opaque(&fragments[j]) {
+                    continue;
+                }
+                for (e, place) in (0..fragments[j].points.len() as u32).zip(&mut places) {
+                    *place = (key_hash(&key(j, e)), j as u32, e);
+                }
+            }
+        });
+        edges.par_sort_unstable();
+        // Groups of one hash, in parallel. A fragment's key and face are read only when
+        // a later fragment has the same hash (in a mesh, one of an edge's two
+        // fragments), and the candidates' only then.
         edges
             .par_chunk_by(|a, b| a.0 == b.0)
             .filter(|group| group.len() >= 2)
             .for_each(|group| {
-                for (g, &(_, i, e, face)) in group.iter().enumerate() {
+                for (g, &(_, i, e)) in group.iter().enumerate() {
+                    let i = i as usize;
                     let mut own = None;
-                    let found = group[g + 1..].iter().find(|&&(_, j, f, other)| {
-                        j > i && other != face && *own.get_or_insert_with(|| key(i, e)) == key(j, f)
+                    let found = group[g + 1..].iter().find(|&&(_, j, f)| {
+                        let j = j as usize;
+                        if j <= i {
+                            return false;
+                        }
+                        let (face, k) = *own.get_or_insert_with(|| (fragments[i].face, key(i, e)));
+                        fragments[j].face != face && k == key(j, f)
                     });
-                    if let Some(&(_, j, _, _)) = found {
+                    if let Some(&(_, j, _)) = found {
                         first_later[starts[i] + e as usize].store(j, Ordering::Relaxed);
                     }
                 }
@@ -400,9 +441,12 @@ impl LaterNeighbours {
     /// The first later fragment of another face sharing edge `e` of fragment `i`.
     fn of(&self, i: usize, e: usize) -> Option<usize> {
         let j = self.first_later[self.starts[i] + e].load(Ordering::Relaxed);
-        (j != usize::MAX).then_some(j)
+        (j != NO_FRAGMENT).then_some(j as usize)
     }
 }
+
+/// Edges per parallel task of [`LaterNeighbours::new`], at least.
+const EDGES_PER_TASK: usize = 8192;
 
 /// The part of `poly` within `width` of the line through `a` and `b` (on `poly`'s side),
 /// by clipping `poly` with one half-plane; `None` when it is degenerate.
