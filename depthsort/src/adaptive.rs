@@ -3,7 +3,6 @@
 //! strongly connected components (cycles and interpenetrations), recursively.
 
 use limn_kernel::Kernel;
-use rayon::prelude::*;
 
 use crate::broad::{box_pairs, estimated_box_pairs};
 use crate::bsp::{choose_splitter, partition, push_parts_as, Task, SCORE_SAMPLE};
@@ -12,6 +11,7 @@ use crate::detached::order_apart;
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
 use crate::pieces::Ctx;
+use crate::probe::{cycles_everywhere, PROBE_MIN};
 use crate::separation::SeparatingAxes;
 use crate::split_apart::{split_apart, APART_FROM};
 
@@ -174,96 +174,6 @@ fn crowded<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
 
 /// Other boxes met per box, expected, from which a set is [`crowded`].
 const CROWDED: f64 = 8.0;
-
-/// Sets larger than this are probed ([`cycles_everywhere`]) before being analysed.
-const PROBE_MIN: usize = 256;
-/// Members of a set probed by [`cycles_everywhere`] (a power of two, at most 64: one bit
-/// each in a mask).
-const PROBE_SAMPLE: usize = 64;
-const _: () = assert!(PROBE_SAMPLE.is_power_of_two() && PROBE_SAMPLE <= u64::BITS as usize);
-
-/// Whether the occlusion graph of `set` is, as measured on a sample, certain to be one
-/// cycle nearly everywhere, so that analysing the whole set would be wasted. Pieces that
-/// pierce each other (a conflict: each must be painted before the other) form two-cycles;
-/// when a piece is in conflict with one other piece or more on average, the conflicts
-/// form a giant connected part, as in a random graph of that mean degree, and so does the
-/// occlusion graph's largest component. The mean is measured on [`PROBE_SAMPLE`] evenly
-/// spaced members against the whole set, spread over the set in bit-reversed order: the
-/// first [`PROBE_FIRST`] of them, then the rest (the set read in parallel chunks, once for
-/// each block); the count stops as soon as it reaches the answer, which is the same as
-/// counting them all (the count only grows), on any number of threads.
-fn cycles_everywhere<K: Kernel>(ctx: &Ctx<'_, K>, set: &[u32]) -> bool {
-    let n = set.len();
-    let m = ctx.margin;
-    let spread = |j: usize| j.reverse_bits() >> (usize::BITS - PROBE_SAMPLE.trailing_zeros());
-    let members: [usize; PROBE_SAMPLE] = std::array::from_fn(|t| spread(t) * n / PROBE_SAMPLE);
-    // Every box (grown by the margin) once, side by side: the pieces are large, and
-    // reading their boxes twice from them cost more than this copy.
-    let boxes: Vec<Box2> = set
-        .par_iter()
-        .with_min_len(PROBE_CHUNK)
-        .map(|&p| ctx.pieces[p as usize].bbox.grown(m))
-        .collect();
-    // The members' boxes coordinate by coordinate: a piece's box is tested against a
-    // whole block of them in one loop without branches, and only the members it meets
-    // are looked at further.
-    let grown = members.map(|a| boxes[a]);
-    let (min_x, max_x) = (grown.map(|b| b.min_x), grown.map(|b| b.max_x));
-    let (min_y, max_y) = (grown.map(|b| b.min_y), grown.map(|b| b.max_y));
-    // The conflicts of the members `block` with every piece, the set read once per block
-    // (each piece against the block's members) rather than once per member.
-    let conflicts_in = |block: std::ops::Range<usize>| -> usize {
-        (0..n)
-            .into_par_iter()
-            .with_min_len(PROBE_CHUNK)
-            .map(|b| {
-                let (q, bq) = (set[b], &boxes[b]);
-                let mut met = 0u64;
-                for t in block.clone() {
-                    let meets = (min_x[t] <= bq.max_x)
-                        & (bq.min_x <= max_x[t])
-                        & (min_y[t] <= bq.max_y)
-                        & (bq.min_y <= max_y[t]);
-                    met |= u64::from(meets) << t;
-                }
-                let mut count = 0;
-                while met != 0 {
-                    let t = met.trailing_zeros() as usize;
-                    met &= met - 1;
-                    let (a, p) = (members[t], set[members[t]]);
-                    if a != b
-                        && !convex_disjoint(
-                            &ctx.pieces[p as usize].pts,
-                            &ctx.pieces[q as usize].pts,
-                            m,
-                        )
-                        && ctx.pair(p, q) == Pair::Conflict
-                    {
-                        count += 1;
-                    }
-                }
-                count
-            })
-            .sum()
-    };
-    let mut conflicts = 0;
-    for block in [0..PROBE_FIRST, PROBE_FIRST..PROBE_SAMPLE] {
-        conflicts += conflicts_in(block);
-        if conflicts >= PROBE_SAMPLE {
-            return true;
-        }
-    }
-    false
-}
-
-/// Pieces per parallel task of the probe.
-const PROBE_CHUNK: usize = 1024;
-
-/// Members of the probe of [`cycles_everywhere`] tested before the first look at the
-/// count: a dense set answers on them alone; any other set is read once more, for the
-/// rest of the sample together (once per eight members cost a soup of 10,000 pieces
-/// 0.6 ms of its 2 ms probe).
-const PROBE_FIRST: usize = 8;
 
 /// Whether analysing `set`, a part of a split component (testing its candidate pairs), is
 /// expected to cost less than finishing it by BSP, and the density of candidate pairs

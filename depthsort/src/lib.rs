@@ -49,6 +49,7 @@ mod options;
 mod pieces;
 mod piercing;
 mod prepare;
+mod probe;
 mod rng;
 mod separation;
 mod shadows;
