@@ -43,6 +43,7 @@ mod geom;
 mod interval;
 mod marks;
 mod merge;
+mod meshed;
 mod newell;
 mod occlusion;
 mod options;

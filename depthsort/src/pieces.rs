@@ -75,6 +75,11 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     /// Per input face: whether it is a quad given as two triangles that share a diagonal
     /// (a quad not exactly planar as given, or not convex).
     pub quad_halves: Arc<[bool]>,
+    /// Per input face: the faces it meets at its corners ([`faces_met_at_corners`]);
+    /// empty where no scene was prepared (read as none).
+    ///
+    /// [`faces_met_at_corners`]: crate::meshed::faces_met_at_corners
+    pub faces_met: Arc<[u8]>,
     /// For a detached context ([`Ctx::detached`]): the pieces of the whole ordering,
     /// counted across every detached context, against `limit`.
     counted: Option<Arc<AtomicUsize>>,
@@ -112,6 +117,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             limit: usize::MAX,
             exceeded: false,
             quad_halves: Arc::from([]),
+            faces_met: Arc::from([]),
             counted: None,
             detached_depth: 0,
             rng: SplitMix::new(seed),
@@ -138,6 +144,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         d.pieces = pieces;
         d.limit = self.limit;
         d.quad_halves = Arc::clone(&self.quad_halves);
+        d.faces_met = Arc::clone(&self.faces_met);
         d.counted = Some(counted);
         d.detached_depth = self.detached_depth + 1;
         d.rng = SplitMix::new(seed);

@@ -11,6 +11,7 @@ use limn_scene::Scene;
 
 use crate::by_vertex::ByVertex;
 use crate::coincident::{canonical_vertices, hidden_by_later_copies};
+use crate::meshed::faces_met_at_corners;
 use crate::options::{CullMode, OrderError};
 use crate::pieces::{Ctx, Piece, NONE};
 use crate::view::{view_planes, ViewPlanes};
@@ -79,6 +80,7 @@ pub(crate) fn prepare<K: Kernel>(
         CullMode::Off => vec![false; scene.objects.len()],
     };
     let hidden = hidden_by_later_copies(scene, &canon, &closed);
+    ctx.faces_met = faces_met_at_corners(scene, &canon).into();
     // The plane through the eye facing forward: what lies behind it is behind the camera
     // (not in view at all); only what lies between it and the near plane is lost.
     let planes = view_planes(ctx, near)?;
