@@ -30,7 +30,7 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use super::library_loader::{LibraryLoader, PARALLEL_FROM};
-use super::text::{lossy, number, parse_i64, rest_after_keyword, strip_comment, tokens, Lines};
+use super::text::{lossy, number, parse_i64, strip_comment, tokens, Lines};
 use super::{check_u32, refs, stem, LoadError, LoadOptions, Location};
 use limn_scene::{Face, Material, PointMark, Polyline, Scene, Texture};
 
@@ -200,7 +200,7 @@ impl Obj<'_> {
             }
             b"f" | b"fo" => self.face(n, toks)?,
             b"o" | b"g" => {
-                let name = lossy(rest_after_keyword(line));
+                let name = lossy(toks.remainder());
                 self.object_name = if name.is_empty() {
                     "default".to_string()
                 } else {
@@ -209,7 +209,7 @@ impl Obj<'_> {
                 self.object = None;
             }
             b"usemtl" => {
-                let name = rest_after_keyword(line);
+                let name = toks.remainder();
                 if name.is_empty() {
                     return Err(LoadError::syntax(self.path, n, "usemtl without a name"));
                 }
@@ -223,7 +223,7 @@ impl Obj<'_> {
                 }
                 self.material_line = n;
             }
-            b"mtllib" => self.mtllib(n, rest_after_keyword(line))?,
+            b"mtllib" => self.mtllib(n, toks.remainder())?,
             b"l" => self.line(n, toks)?,
             b"p" => self.points(n, toks)?,
             k if IGNORED.contains(&k) => {}
@@ -541,7 +541,13 @@ impl Obj<'_> {
         // The default grey is keyed by the empty name, which no usemtl can give.
         // A name first used while no library defined it stays the default grey.
         let library = self.libraries.wait(&mut self.scene.warnings)?;
-        let m = if let Some(&m) = self.undefined.get(name) {
+        // Names used without a definition are few: the table is only looked in when it
+        // holds one (not hashing every name of a file that changes material at every
+        // face).
+        let undefined = (!self.undefined.is_empty())
+            .then(|| self.undefined.get(name).copied())
+            .flatten();
+        let m = if let Some(m) = undefined {
             m
         } else if let Some(i) = library.index_from(self.library_index.wrapping_add(1), name) {
             self.library_index = i;

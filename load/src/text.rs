@@ -109,6 +109,14 @@ pub(crate) struct Tokens<'a> {
     rest: &'a [u8],
 }
 
+impl<'a> Tokens<'a> {
+    /// What follows the tokens taken so far, trimmed: after the first token, what
+    /// [`rest_after_keyword`] gives (without reading the keyword again).
+    pub(crate) fn remainder(&self) -> &'a [u8] {
+        self.rest.trim_ascii()
+    }
+}
+
 impl<'a> Iterator for Tokens<'a> {
     type Item = &'a [u8];
 
@@ -252,6 +260,21 @@ mod tests {
         assert!(l.next_line().unwrap().is_ok());
         let e = l.next_line().unwrap().unwrap_err();
         assert!(matches!(e, LoadError::NotText { ref at } if at.line == Some(2)));
+    }
+
+    #[test]
+    fn the_remainder_after_a_keyword_is_the_rest_after_it() {
+        for line in [
+            &b"usemtl  a b \t"[..],
+            b"  o x",
+            b"g",
+            b"mtllib\tone two.mtl ",
+            b"",
+        ] {
+            let mut toks = tokens(line);
+            toks.next();
+            assert_eq!(toks.remainder(), rest_after_keyword(line), "{line:?}");
+        }
     }
 
     #[test]
