@@ -401,36 +401,17 @@ mod tests {
     use crate::view::Eye;
     use glam::DVec3;
     use limn_kernel::ExactKernel;
-    use limn_scene::{Camera, Material, Scene};
-
-    /// Two intersecting height fields of `n` × `n` quads (a wave and a tilted plane).
-    fn surfaces(n: usize) -> Scene {
-        let mut s = Scene::default();
-        let m = s.add_material(Material::diffuse("m", [0.5; 3]));
-        let o = s.add_object("o");
-        let at = |i: usize| -1.0 + 2.0 * i as f64 / n as f64;
-        let heights: [fn(f64, f64) -> f64; 2] = [
-            |x, y| 0.4 * (2.0 * x).sin() * (2.0 * y).cos(),
-            |x, y| 0.15 * (x - y),
-        ];
-        for f in heights {
-            for i in 0..n {
-                for j in 0..n {
-                    let p = |i: usize, j: usize| DVec3::new(at(i), at(j), f(at(i), at(j)));
-                    let quad = [p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)];
-                    s.add_polygon(&quad, m, o).expect("a valid quad");
-                }
-            }
-        }
-        s
-    }
+    use limn_scene::{shapes, Camera, Material, Scene};
 
     /// A mesh whose boxes meet hardly more than its neighbours is not crowded; the same
     /// boxes without the count of neighbours would be.
     #[test]
     fn a_mesh_is_crowded_only_beyond_its_neighbours() {
         let k = ExactKernel::new();
-        let scene = surfaces(60);
+        let mut scene = Scene::default();
+        let m = scene.add_material(Material::diffuse("m", [0.5; 3]));
+        let o = scene.add_object("torus");
+        shapes::torus(&mut scene, DVec3::ZERO, 1.0, 0.35, 100, 100, m, o).expect("a torus");
         let camera = Camera::framing(&scene, 400, 300).expect("a framable scene");
         let eye = Eye::of(&k, &camera).expect("a camera");
         let (near, far) = camera.near_far(&scene);
