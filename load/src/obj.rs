@@ -541,13 +541,7 @@ impl Obj<'_> {
         // The default grey is keyed by the empty name, which no usemtl can give.
         // A name first used while no library defined it stays the default grey.
         let library = self.libraries.wait(&mut self.scene.warnings)?;
-        // Names used without a definition are few: the table is only looked in when it
-        // holds one (not hashing every name of a file that changes material at every
-        // face).
-        let undefined = (!self.undefined.is_empty())
-            .then(|| self.undefined.get(name).copied())
-            .flatten();
-        let m = if let Some(m) = undefined {
+        let m = if let Some(&m) = self.undefined.get(name) {
             m
         } else if let Some(i) = library.index_from(self.library_index.wrapping_add(1), name) {
             self.library_index = i;
