@@ -13,7 +13,7 @@ use crate::occlusion::Pair;
 use crate::pieces::Ctx;
 use crate::probe::{cycles_everywhere, PROBE_MIN};
 use crate::separation::SeparatingAxes;
-use crate::split_apart::{split_apart, APART_FROM};
+use crate::split_apart::{split_apart, splits_apart};
 
 /// Parts of a split component up to this size are always analysed again (the analysis
 /// of a small set is cheap whatever its density).
@@ -318,7 +318,7 @@ fn run<K: Kernel>(
                     order_set(ctx, s, &mut stack, ws);
                 }
             }
-            Task::Split(s) if s.len() >= APART_FROM && ctx.may_split_apart() => {
+            Task::Split(s) if splits_apart(ctx, s.len()) => {
                 split_on_every_core(ctx, s, f64::INFINITY, candidates, out);
             }
             Task::Split(s) => {
@@ -336,7 +336,7 @@ fn run<K: Kernel>(
                     order_set(ctx, s, &mut stack, ws);
                     continue;
                 }
-                if s.len() >= APART_FROM && ctx.may_split_apart() {
+                if splits_apart(ctx, s.len()) {
                     split_on_every_core(ctx, s, density, candidates, out);
                     continue;
                 }

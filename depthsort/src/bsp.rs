@@ -5,7 +5,7 @@ use limn_kernel::Kernel;
 
 use crate::occlusion::Rel;
 use crate::pieces::Ctx;
-use crate::split_apart::{split_apart, APART_FROM};
+use crate::split_apart::{split_apart, splits_apart};
 
 /// How many pieces a splitter candidate is scored against, at most.
 pub(crate) const SCORE_SAMPLE: usize = 512;
@@ -120,8 +120,8 @@ pub(crate) fn push_parts_as(
 }
 
 /// The Fuchs–Kedem–Naylor BSP order of `set`: split by a splitter, recurse on both
-/// sides, paint far side, splitter plane, near side. Sets of [`APART_FROM`] pieces or
-/// more are split on every core ([`split_apart`]).
+/// sides, paint far side, splitter plane, near side. Large sets are split on every core
+/// ([`split_apart`], when [`splits_apart`] says so).
 pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: usize) -> Vec<u32> {
     let mut out = Vec::with_capacity(set.len());
     let mut stack = vec![Task::Order(set)];
@@ -133,7 +133,7 @@ pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: us
                     out.extend(s);
                     continue;
                 }
-                if s.len() >= APART_FROM && ctx.may_split_apart() {
+                if splits_apart(ctx, s.len()) {
                     out.extend(split_apart(
                         ctx,
                         s,

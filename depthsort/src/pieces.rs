@@ -86,6 +86,9 @@ pub(crate) struct Ctx<'a, K: Kernel> {
     /// How many contexts this one is detached from, counting up through their own: a
     /// large set is split apart only a few levels deep ([`Ctx::may_split_apart`]).
     detached_depth: u32,
+    /// The pieces of the outermost set split apart that this context orders a part of
+    /// (inherited by the contexts detached from it); 0 outside any.
+    pub outermost_apart: usize,
     rng: SplitMix,
     scratch: Vec<DVec3>,
 }
@@ -120,6 +123,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
             faces_met: Arc::from([]),
             counted: None,
             detached_depth: 0,
+            outermost_apart: 0,
             rng: SplitMix::new(seed),
             scratch: Vec::new(),
         }
@@ -147,6 +151,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         d.faces_met = Arc::clone(&self.faces_met);
         d.counted = Some(counted);
         d.detached_depth = self.detached_depth + 1;
+        d.outermost_apart = self.outermost_apart;
         d.rng = SplitMix::new(seed);
         d
     }

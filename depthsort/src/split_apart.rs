@@ -15,9 +15,28 @@ use crate::pieces::Ctx;
 
 /// Sets of at least this many pieces are split into parts ordered apart; smaller parts
 /// are ordered whole, on one core. Measured on random soups of 1,000 to 20,000 dense
-/// triangles (BENCHMARKS.md): 1,024 orders the soup of 2,000 in 42 ms where 2,048 (which
-/// leaves it on one core) took 52; the larger soups are the same either way.
-pub(crate) const APART_FROM: usize = 1024;
+/// triangles (BENCHMARKS.md): with 1,024 the soup of 1,000 was ordered on one core in
+/// 10.9 ms, with 256 (and [`SHARE_OF_OUTERMOST`]) on both in 7.7 ms; end to end the
+/// soup of 1,000 took 0.89× the time, 2,000 1.04×, 5,000 0.92×, the larger ones the same.
+pub(crate) const APART_FROM: usize = 256;
+
+/// Inside a set split apart, a part is split further (here, or apart again in the
+/// context that orders it) only while it holds at least this share (1 / n) of the
+/// outermost set split apart: a small dense soup is split into a few parts, one for each
+/// core and some to balance them, while the parts of a large one are not cut into more
+/// and smaller ones than the cores need (its soup of 5,000 took 61–67 ms instead of 57
+/// when every part of 256 pieces or more was split apart again).
+const SHARE_OF_OUTERMOST: usize = 4;
+
+/// Whether a set of `pieces` ordered in `ctx` is split apart ([`split_apart`]).
+pub(crate) fn splits_apart<K: Kernel>(ctx: &Ctx<'_, K>, pieces: usize) -> bool {
+    ctx.may_split_apart() && pieces >= least_apart(ctx)
+}
+
+/// The fewest pieces of a set split apart, or of a part split further, in `ctx`.
+fn least_apart<K: Kernel>(ctx: &Ctx<'_, K>) -> usize {
+    APART_FROM.max(ctx.outermost_apart / SHARE_OF_OUTERMOST)
+}
 
 /// Levels split on this thread, at most, before the parts are ordered apart (up to
 /// 2⁶ = 64 parts: enough for both halves of every split to be a part of its own on
@@ -45,8 +64,8 @@ enum Step {
 ///
 /// `split_here(ctx, part, with, depth)` says whether a part (`set` itself at depth 0),
 /// with `with` as inherited from the set it was split from, is split here, and if so
-/// what its parts inherit; it is asked only of parts of at least [`APART_FROM`] pieces
-/// above depth [`LEVELS`]. The parts it leaves whole are ordered by `finish`, a group of
+/// what its parts inherit; it is asked only of parts above depth [`LEVELS`] large enough
+/// to split further (see [`SHARE_OF_OUTERMOST`]). The parts it leaves whole are ordered by `finish`, a group of
 /// them at a time in a context of their own (see [`order_apart`]); `first` is what `set`
 /// starts with.
 pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
@@ -59,6 +78,11 @@ pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
 ) -> Vec<u32> {
     let mut steps = Vec::new();
     let mut parts = Vec::new();
+    let outer = ctx.outermost_apart;
+    if outer == 0 {
+        ctx.outermost_apart = set.len();
+    }
+    let least = least_apart(ctx);
     // Depth first, far side before plane before near side: the order of painting.
     let mut stack = vec![Pending::Part(set, first, 0)];
     while let Some(next) = stack.pop() {
@@ -72,7 +96,7 @@ pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
         if s.is_empty() {
             continue;
         }
-        let split = if s.len() >= APART_FROM && depth < LEVELS {
+        let split = if s.len() >= least && depth < LEVELS {
             split_here(ctx, &s, with, depth)
         } else {
             None
@@ -90,6 +114,7 @@ pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
     }
     ctx.stats.parts_apart += parts.len();
     let orders = order_apart(ctx, parts, finish);
+    ctx.outermost_apart = outer;
     let mut out = Vec::with_capacity(orders.iter().map(Vec::len).sum());
     for step in steps {
         match step {
@@ -98,4 +123,38 @@ pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::view::Eye;
+    use limn_kernel::ExactKernel;
+    use limn_scene::{shapes, Camera, Material, Scene};
+
+    /// Outside a split apart, sets from [`APART_FROM`] pieces are split apart; inside
+    /// one, only parts holding a [`SHARE_OF_OUTERMOST`] of the outermost set.
+    #[test]
+    fn parts_are_split_apart_again_only_while_they_hold_a_share_of_the_outermost_set() {
+        let k = ExactKernel::new();
+        let mut scene = Scene::default();
+        let m = scene.add_material(Material::diffuse("m", [0.5; 3]));
+        let o = scene.add_object("soup");
+        shapes::random_soup(&mut scene, 10, 0.5, 1, m, o).expect("a soup");
+        let camera = Camera::framing(&scene, 100, 100).expect("a framable scene");
+        let eye = Eye::of(&k, &camera).expect("a camera");
+        let (near, far) = camera.near_far(&scene);
+        let mut ctx = Ctx::new(&k, eye, camera, camera.view_projection(near, far), far, 0);
+        assert!(!splits_apart(&ctx, APART_FROM - 1));
+        assert!(splits_apart(&ctx, APART_FROM));
+        let outermost = 40 * APART_FROM;
+        ctx.outermost_apart = outermost;
+        let share = outermost / SHARE_OF_OUTERMOST;
+        assert!(!splits_apart(&ctx, share - 1));
+        assert!(splits_apart(&ctx, share));
+        // Contexts detached from it order parts of the same outermost set.
+        let d = ctx.detached(Vec::new(), 1, ctx.split_counter());
+        assert!(!splits_apart(&d, share - 1));
+        assert!(splits_apart(&d, share));
+    }
 }
