@@ -398,10 +398,9 @@ fn split_on_every_core<K: Kernel>(
 mod tests {
     use super::*;
     use crate::options::CullMode;
-    use crate::view::Eye;
     use glam::DVec3;
     use limn_kernel::ExactKernel;
-    use limn_scene::{shapes, Camera, Material, Scene};
+    use limn_scene::{shapes, Material, Scene};
 
     /// A mesh whose boxes meet hardly more than its neighbours is not crowded; the same
     /// boxes without the count of neighbours would be.
@@ -412,11 +411,7 @@ mod tests {
         let m = scene.add_material(Material::diffuse("m", [0.5; 3]));
         let o = scene.add_object("torus");
         shapes::torus(&mut scene, DVec3::ZERO, 1.0, 0.35, 100, 100, m, o).expect("a torus");
-        let camera = Camera::framing(&scene, 400, 300).expect("a framable scene");
-        let eye = Eye::of(&k, &camera).expect("a camera");
-        let (near, far) = camera.near_far(&scene);
-        let vp = camera.view_projection(near, far);
-        let mut ctx = Ctx::new(&k, eye, camera, vp, far, 0);
+        let (mut ctx, near) = Ctx::framing(&k, &scene, 400, 300);
         let (set, _) =
             crate::prepare::prepare(&mut ctx, &scene, CullMode::Auto, near).expect("a valid scene");
         assert!(!crowded(&ctx, &set));

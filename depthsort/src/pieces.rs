@@ -129,6 +129,17 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         }
     }
 
+    /// A context viewing `scene` through a camera framing it at `width` × `height`, with
+    /// no pieces yet, and the camera's near distance (for tests that prepare the scene).
+    #[cfg(test)]
+    pub fn framing(k: &'a K, scene: &limn_scene::Scene, width: u32, height: u32) -> (Self, f64) {
+        let camera = Camera::framing(scene, width, height).expect("a framable scene");
+        let eye = Eye::of(k, &camera).expect("a camera");
+        let (near, far) = camera.near_far(scene);
+        let vp = camera.view_projection(near, far);
+        (Ctx::new(k, eye, camera, vp, far, 0), near)
+    }
+
     /// A context with the same kernel and view and no pieces: it can make pieces (with
     /// no parent) while this one is being added to.
     pub fn reader(&self) -> Self {

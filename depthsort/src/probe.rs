@@ -145,9 +145,8 @@ impl<'c, 'a, K: Kernel> Probe<'c, 'a, K> {
 mod tests {
     use super::*;
     use crate::options::CullMode;
-    use crate::view::Eye;
     use limn_kernel::ExactKernel;
-    use limn_scene::{shapes, Camera, Material, Scene};
+    use limn_scene::{shapes, Material, Scene};
 
     fn soup(n: usize, size: f64) -> Scene {
         let mut s = Scene::default();
@@ -166,11 +165,7 @@ mod tests {
         let mut answers = Vec::new();
         for (n, size) in [(400, 0.05), (500, 0.3), (700, 0.6)] {
             let scene = soup(n, size);
-            let camera = Camera::framing(&scene, 400, 300).expect("a framable soup");
-            let eye = Eye::of(&k, &camera).expect("a camera");
-            let (near, far) = camera.near_far(&scene);
-            let vp = camera.view_projection(near, far);
-            let mut ctx = Ctx::new(&k, eye, camera, vp, far, 0);
+            let (mut ctx, near) = Ctx::framing(&k, &scene, 400, 300);
             let (set, _) = crate::prepare::prepare(&mut ctx, &scene, CullMode::Off, near)
                 .expect("a valid scene");
             let probe = Probe::new(&ctx, &set);

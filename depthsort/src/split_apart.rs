@@ -128,9 +128,8 @@ pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::view::Eye;
     use limn_kernel::ExactKernel;
-    use limn_scene::{shapes, Camera, Material, Scene};
+    use limn_scene::{shapes, Material, Scene};
 
     /// Outside a split apart, sets from [`APART_FROM`] pieces are split apart; inside
     /// one, only parts holding a [`SHARE_OF_OUTERMOST`] of the outermost set.
@@ -141,10 +140,7 @@ mod tests {
         let m = scene.add_material(Material::diffuse("m", [0.5; 3]));
         let o = scene.add_object("soup");
         shapes::random_soup(&mut scene, 10, 0.5, 1, m, o).expect("a soup");
-        let camera = Camera::framing(&scene, 100, 100).expect("a framable scene");
-        let eye = Eye::of(&k, &camera).expect("a camera");
-        let (near, far) = camera.near_far(&scene);
-        let mut ctx = Ctx::new(&k, eye, camera, camera.view_projection(near, far), far, 0);
+        let (mut ctx, _) = Ctx::framing(&k, &scene, 100, 100);
         assert!(!splits_apart(&ctx, APART_FROM - 1));
         assert!(splits_apart(&ctx, APART_FROM));
         let outermost = 40 * APART_FROM;
