@@ -93,20 +93,23 @@ fn write_files(dir: &Path) -> std::io::Result<()> {
     ply.flush()
 }
 
-/// Time the threads of this process have spent on a CPU (Linux
-/// `/proc/self/task/*/schedstat`; the loaders' worker threads live as long as the
-/// process), which a busy shared machine inflates less than wall time; `None` elsewhere.
+/// Time the threads of this process have spent on a CPU (`CLOCK_PROCESS_CPUTIME_ID`:
+/// finished threads included, to the nanosecond), which a busy shared machine inflates
+/// less than wall time.
 fn cpu_time() -> Option<Duration> {
-    let mut total = 0;
-    for task in std::fs::read_dir("/proc/self/task").ok()? {
-        let s = std::fs::read_to_string(task.ok()?.path().join("schedstat")).ok()?;
-        total += s.split_whitespace().next()?.parse::<u64>().ok()?;
-    }
-    Some(Duration::from_nanos(total))
+    cpu_time::ProcessTime::try_now()
+        .ok()
+        .map(|t| t.as_duration())
 }
 
+/// Milliseconds, with two decimals below 100 ms (small files load in a few).
 fn ms(d: Duration) -> String {
-    format!("{:.0} ms", d.as_secs_f64() * 1e3)
+    let ms = d.as_secs_f64() * 1e3;
+    if ms < 100.0 {
+        format!("{ms:.2} ms")
+    } else {
+        format!("{ms:.0} ms")
+    }
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
