@@ -13,13 +13,14 @@ use std::time::Instant;
 use limn_kernel::Kernel;
 use workload::*;
 
-/// Nanoseconds this thread has spent on a CPU (Linux `schedstat`; wall-clock time
-/// elsewhere), so that other processes on a busy machine distort the numbers less.
+/// Nanoseconds this thread has spent on a CPU (`CLOCK_THREAD_CPUTIME_ID`; wall-clock
+/// time where there is none), so that other processes on a busy machine distort the
+/// numbers less.
 fn cpu_ns(start: Instant) -> f64 {
-    std::fs::read_to_string("/proc/thread-self/schedstat")
-        .ok()
-        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
-        .unwrap_or_else(|| start.elapsed().as_secs_f64() * 1e9)
+    cpu_time::ThreadTime::try_now().map_or_else(
+        |_| start.elapsed().as_secs_f64() * 1e9,
+        |t| t.as_duration().as_secs_f64() * 1e9,
+    )
 }
 
 /// Best-of-15 time per item in nanoseconds of `f`, which processes `items` items.

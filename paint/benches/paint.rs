@@ -21,12 +21,10 @@ fn main() {
     divan::main();
 }
 
-/// CPU time this thread has used, in seconds (Linux; 0 elsewhere).
+/// CPU time this thread has used, in seconds (`CLOCK_THREAD_CPUTIME_ID`; 0 where there
+/// is none).
 fn thread_cpu() -> f64 {
-    std::fs::read_to_string("/proc/thread-self/schedstat")
-        .ok()
-        .and_then(|s| s.split_whitespace().next()?.parse::<f64>().ok())
-        .map_or(0.0, |ns| ns / 1e9)
+    cpu_time::ThreadTime::try_now().map_or(0.0, |t| t.as_duration().as_secs_f64())
 }
 
 /// Best wall and CPU times of `runs` calls of `f`, in milliseconds.

@@ -8,12 +8,12 @@
 
 use std::time::Instant;
 
-/// CPU time of this thread in seconds (from /proc; `None` where unavailable), so that
-/// other load on the machine does not count.
+/// CPU time of this thread in seconds (`CLOCK_THREAD_CPUTIME_ID`; `None` where
+/// unavailable), so that other load on the machine does not count.
 fn cpu_seconds() -> Option<f64> {
-    let s = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
-    let ns: f64 = s.split_whitespace().next()?.parse().ok()?;
-    Some(ns * 1e-9)
+    cpu_time::ThreadTime::try_now()
+        .ok()
+        .map(|t| t.as_duration().as_secs_f64())
 }
 
 use glam::DVec3;
