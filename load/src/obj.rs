@@ -218,7 +218,10 @@ impl Obj<'_> {
                     // The name's buffer is reused: no allocation per `usemtl`.
                     let current = self.material_name.get_or_insert_with(String::new);
                     current.clear();
-                    current.push_str(&String::from_utf8_lossy(name));
+                    match std::str::from_utf8(name) {
+                        Ok(name) => current.push_str(name),
+                        Err(_) => current.push_str(&String::from_utf8_lossy(name)),
+                    }
                     self.material = None;
                 }
                 self.material_line = n;
