@@ -682,6 +682,29 @@ mod tests {
     }
 
     #[test]
+    fn material_names_that_are_not_utf8_are_read_alike_in_obj_and_mtl() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(
+            dir.path().join("n.mtl"),
+            b"newmtl r\xff\nKd 1 0 0\nnewmtl \xe2\x82\nKd 0 1 0\n",
+        )
+        .unwrap();
+        let obj = b"mtllib n.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl r\xff\nf 1 2 3\nusemtl \xe2\x82\nf 1 2 3\nusemtl r\nf 1 2 3\n";
+        let s = parse(obj, &dir.path().join("m.obj"), &LoadOptions::default()).unwrap();
+        let kd: Vec<[f64; 3]> = s.materials.iter().map(|m| m.kd).collect();
+        assert_eq!(
+            kd,
+            [
+                [1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                Material::default_grey().kd
+            ]
+        );
+        assert_eq!(s.materials[0].name, "r\u{fffd}");
+        assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
+    }
+
+    #[test]
     fn a_library_waited_for_only_at_the_end_still_warns() {
         let s = both_ways(&[("a.mtl", A)], &format!("mtllib a.mtl\n{TRI}f 1 2 3\n")).unwrap();
         assert_eq!(s.warnings.len(), 2, "{:?}", s.warnings);
