@@ -70,14 +70,16 @@ impl Library {
         self.by_name.get(name)
     }
 
-    /// [`Library::index`], trying index `hint` first: a file that names materials in
-    /// the library's order finds each by one comparison of names, without hashing.
-    /// Exact: the material at an index always has the name that leads to that index,
-    /// or the empty name once taken, which no `usemtl` gives.
-    pub(crate) fn index_from(&self, hint: usize, name: &str) -> Option<usize> {
+    /// [`Library::index`] of the name `usemtl` gave as bytes (read as UTF-8, invalid
+    /// sequences replaced as the library's names were), trying index `hint` first: a file
+    /// that names materials in the library's order finds each by one comparison of bytes,
+    /// without hashing or reading the name as text. Exact: the material at an index
+    /// always has the name that leads to that index, or the empty name once taken, which
+    /// no `usemtl` gives; bytes equal to a name are valid UTF-8 and read as that name.
+    pub(crate) fn index_from(&self, hint: usize, name: &[u8]) -> Option<usize> {
         match self.materials.get(hint) {
-            Some(m) if !name.is_empty() && m.name == name => Some(hint),
-            _ => self.index(name),
+            Some(m) if !name.is_empty() && m.name.as_bytes() == name => Some(hint),
+            _ => self.index(&String::from_utf8_lossy(name)),
         }
     }
 
@@ -402,7 +404,7 @@ mod tests {
         for name in ["a", "b", "c", "d", ""] {
             for hint in [0, 1, 2, 3, usize::MAX] {
                 assert_eq!(
-                    lib.index_from(hint, name),
+                    lib.index_from(hint, name.as_bytes()),
                     lib.index(name),
                     "{name} at {hint}"
                 );
@@ -411,9 +413,9 @@ mod tests {
         // A material taken keeps its index; its place answers to no name.
         let b = lib.take(1);
         assert_eq!(b.name, "b");
-        assert_eq!(lib.index_from(1, "b"), Some(1));
-        assert_eq!(lib.index_from(1, ""), None);
-        assert_eq!(lib.index_from(0, "a"), Some(0));
+        assert_eq!(lib.index_from(1, b"b"), Some(1));
+        assert_eq!(lib.index_from(1, b""), None);
+        assert_eq!(lib.index_from(0, b"a"), Some(0));
         assert_eq!(lib.get("a").unwrap().kd, [1.0, 0.0, 0.0]);
     }
 

@@ -24,6 +24,7 @@
 //! are those of reading the library at its line.
 
 use rustc_hash::FxHashMap as HashMap;
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
@@ -91,7 +92,9 @@ struct Obj<'a> {
     library_index: usize,
     /// Names no library defines → index in the scene (the default grey, once each).
     undefined: HashMap<String, u32>,
-    material_name: Option<String>,
+    /// The name the last `usemtl` gave, as its bytes (read as text only when it is
+    /// not the library's next name).
+    material_name: Option<Vec<u8>>,
     /// Line of the last `usemtl`.
     material_line: u64,
     material: Option<u32>,
@@ -214,14 +217,11 @@ impl Obj<'_> {
                     return Err(LoadError::syntax(self.path, n, "usemtl without a name"));
                 }
                 // The same name again keeps the material found (no lookup, no copy).
-                if self.material_name.as_deref().map(str::as_bytes) != Some(name) {
+                if self.material_name.as_deref() != Some(name) {
                     // The name's buffer is reused: no allocation per `usemtl`.
-                    let current = self.material_name.get_or_insert_with(String::new);
+                    let current = self.material_name.get_or_insert_with(Vec::new);
                     current.clear();
-                    match std::str::from_utf8(name) {
-                        Ok(name) => current.push_str(name),
-                        Err(_) => current.push_str(&String::from_utf8_lossy(name)),
-                    }
+                    current.extend_from_slice(name);
                     self.material = None;
                 }
                 self.material_line = n;
@@ -371,7 +371,7 @@ impl Obj<'_> {
     /// `usemtl`) into it, if it has one; returns the map's coordinate transform when it
     /// is not the identity.
     fn read_map(&mut self, material: u32) -> Result<Option<UvTransform>, LoadError> {
-        let name = self.material_name.clone().unwrap_or_default();
+        let name = self.material_text().into_owned();
         let library = self.libraries.wait(&mut self.scene.warnings)?;
         let Some(map) = library.maps.get(&name).cloned() else {
             return Ok(None);
@@ -536,17 +536,27 @@ impl Obj<'_> {
         Ok(o)
     }
 
+    /// The current `usemtl` name as text (invalid UTF-8 replaced, as in the library's
+    /// names); empty without one.
+    fn material_text(&self) -> Cow<'_, str> {
+        String::from_utf8_lossy(self.material_name.as_deref().unwrap_or(b""))
+    }
+
     fn current_material(&mut self) -> Result<u32, LoadError> {
         if let Some(m) = self.material {
             return Ok(m);
         }
-        let name = self.material_name.as_deref().unwrap_or("");
+        let raw = self.material_name.as_deref().unwrap_or(b"");
         // The default grey is keyed by the empty name, which no usemtl can give.
         // A name first used while no library defined it stays the default grey.
         let library = self.libraries.wait(&mut self.scene.warnings)?;
-        let m = if let Some(&m) = self.undefined.get(name) {
+        let undefined = match self.undefined.is_empty() {
+            true => None,
+            false => self.undefined.get(&*String::from_utf8_lossy(raw)).copied(),
+        };
+        let m = if let Some(m) = undefined {
             m
-        } else if let Some(i) = library.index_from(self.library_index.wrapping_add(1), name) {
+        } else if let Some(i) = library.index_from(self.library_index.wrapping_add(1), raw) {
             self.library_index = i;
             if self.scene_material.len() <= i {
                 self.scene_material.resize(i + 1, NO_MATERIAL);
@@ -567,6 +577,7 @@ impl Obj<'_> {
                 m => m,
             }
         } else {
+            let name = String::from_utf8_lossy(raw);
             if !name.is_empty() {
                 self.scene.warnings.push(format!(
                     "{}:{}: material {name:?} is not defined; using the default grey",
@@ -576,7 +587,7 @@ impl Obj<'_> {
             }
             check_u32(self.scene.materials.len(), "materials", self.path)?;
             let m = self.scene.add_material(Material::default_grey());
-            self.undefined.insert(name.to_owned(), m);
+            self.undefined.insert(name.into_owned(), m);
             m
         };
         self.material = Some(m);
@@ -689,19 +700,18 @@ mod tests {
             b"newmtl r\xff\nKd 1 0 0\nnewmtl \xe2\x82\nKd 0 1 0\n",
         )
         .unwrap();
-        let obj = b"mtllib n.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl r\xff\nf 1 2 3\nusemtl \xe2\x82\nf 1 2 3\nusemtl r\nf 1 2 3\n";
+        // Other invalid bytes in the same place read as the same name, defined or not.
+        let obj = b"mtllib n.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl r\xff\nf 1 2 3\nusemtl \xe2\x82\nf 1 2 3\nusemtl r\nf 1 2 3\n\
+                    usemtl r\xfe\nf 1 2 3\nusemtl q\xff\nf 1 2 3\nusemtl r\nf 1 2 3\nusemtl q\xfe\nf 1 2 3\n";
         let s = parse(obj, &dir.path().join("m.obj"), &LoadOptions::default()).unwrap();
         let kd: Vec<[f64; 3]> = s.materials.iter().map(|m| m.kd).collect();
-        assert_eq!(
-            kd,
-            [
-                [1.0, 0.0, 0.0],
-                [0.0, 1.0, 0.0],
-                Material::default_grey().kd
-            ]
-        );
+        let grey = Material::default_grey().kd;
+        assert_eq!(kd, [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], grey, grey]);
         assert_eq!(s.materials[0].name, "r\u{fffd}");
-        assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
+        let used: Vec<u32> = s.faces.iter().map(|f| f.material).collect();
+        assert_eq!(used, [0, 1, 2, 0, 3, 2, 3]);
+        assert_eq!(s.warnings.len(), 2, "{:?}", s.warnings);
+        assert!(s.warnings[1].contains("\"q\u{fffd}\""), "{:?}", s.warnings);
     }
 
     #[test]
