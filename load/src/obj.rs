@@ -550,9 +550,12 @@ impl Obj<'_> {
         // The default grey is keyed by the empty name, which no usemtl can give.
         // A name first used while no library defined it stays the default grey.
         let library = self.libraries.wait(&mut self.scene.warnings)?;
-        let undefined = match self.undefined.is_empty() {
-            true => None,
-            false => self.undefined.get(&*String::from_utf8_lossy(raw)).copied(),
+        // Read as text only when some name is undefined (rarely; the library comes first
+        // otherwise, by bytes).
+        let undefined = if self.undefined.is_empty() {
+            None
+        } else {
+            self.undefined.get(&*String::from_utf8_lossy(raw)).copied()
         };
         let m = if let Some(m) = undefined {
             m
