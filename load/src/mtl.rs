@@ -14,7 +14,7 @@ use rustc_hash::FxHashMap as HashMap;
 use std::path::Path;
 
 use super::name_table::NameTable;
-use super::text::{lossy, number, rest_after_keyword, strip_comment, tokens, Lines};
+use super::text::{lossy, number, strip_comment, tokens, Lines};
 use super::{LoadError, Location};
 use limn_scene::Material;
 
@@ -136,7 +136,7 @@ pub(crate) fn parse(
             if let Some(m) = current.take() {
                 lib.insert(m);
             }
-            let name = lossy(rest_after_keyword(line));
+            let name = lossy(toks.remainder());
             if name.is_empty() {
                 return Err(LoadError::syntax(path, n, "newmtl without a name"));
             }
@@ -216,7 +216,7 @@ pub(crate) fn parse(
                 m.illum = v as u8;
             }
             b"map_Kd" => {
-                let map = map_kd(path, n, rest_after_keyword(line))?;
+                let map = map_kd(path, n, toks.remainder())?;
                 lib.maps.insert(m.name.clone(), map);
             }
             _ if is_texture(key) => {

@@ -17,7 +17,7 @@ use std::path::Path;
 
 use glam::DVec3;
 
-use super::text::{lossy, parse_f64, position_key, rest_after_keyword, tokens, BitsMap, Lines};
+use super::text::{lossy, parse_f64, position_key, tokens, BitsMap, Lines};
 use super::{check_u32, stem, LoadError, Location};
 use limn_scene::{Face, Material, Scene};
 
@@ -176,7 +176,7 @@ fn parse_ascii(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
         };
         match (state, key.as_slice()) {
             (Expect::Solid, b"solid") => {
-                let name = lossy(rest_after_keyword(&line));
+                let name = lossy(toks.remainder());
                 let name = if name.is_empty() { stem(path) } else { name };
                 check_u32(b.scene.objects.len(), "objects", path)?;
                 object = b.scene.add_object(&name);

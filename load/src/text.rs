@@ -114,8 +114,8 @@ pub(crate) struct Tokens<'a> {
 }
 
 impl<'a> Tokens<'a> {
-    /// What follows the tokens taken so far, trimmed: after the first token, what
-    /// [`rest_after_keyword`] gives (without reading the keyword again).
+    /// What follows the tokens taken so far, trimmed: after a statement's keyword, the
+    /// rest of its line (for names that may hold spaces).
     pub(crate) fn remainder(&self) -> &'a [u8] {
         self.rest.trim_ascii()
     }
@@ -134,16 +134,6 @@ impl<'a> Iterator for Tokens<'a> {
         self.rest = &rest[end..];
         Some(&rest[..end])
     }
-}
-
-/// The rest of a line after its first token, trimmed (for names that may hold spaces).
-pub(crate) fn rest_after_keyword(line: &[u8]) -> &[u8] {
-    let line = line.trim_ascii_start();
-    let end = line
-        .iter()
-        .position(|b| b.is_ascii_whitespace())
-        .unwrap_or(line.len());
-    line[end..].trim_ascii()
 }
 
 /// Text for messages and names (invalid UTF-8 replaced).
@@ -273,16 +263,17 @@ mod tests {
 
     #[test]
     fn the_remainder_after_a_keyword_is_the_rest_after_it() {
-        for line in [
-            &b"usemtl  a b \t"[..],
-            b"  o x",
-            b"g",
-            b"mtllib\tone two.mtl ",
-            b"",
+        for (line, rest) in [
+            (&b"usemtl  a b \t"[..], &b"a b"[..]),
+            (b"  o x", b"x"),
+            (b"g", b""),
+            (b"mtllib\tone two.mtl ", b"one two.mtl"),
+            (b"newmtl \xe2\x82 x\r", b"\xe2\x82 x"),
+            (b"", b""),
         ] {
             let mut toks = tokens(line);
             toks.next();
-            assert_eq!(toks.remainder(), rest_after_keyword(line), "{line:?}");
+            assert_eq!(toks.remainder(), rest, "{line:?}");
         }
     }
 
