@@ -65,9 +65,9 @@ enum Step {
 /// `split_here(ctx, part, with, depth)` says whether a part (`set` itself at depth 0),
 /// with `with` as inherited from the set it was split from, is split here, and if so
 /// what its parts inherit; it is asked only of parts above depth [`LEVELS`] large enough
-/// to split further (see [`SHARE_OF_OUTERMOST`]). The parts it leaves whole are ordered by `finish`, a group of
-/// them at a time in a context of their own (see [`order_apart`]); `first` is what `set`
-/// starts with.
+/// to split further (see [`SHARE_OF_OUTERMOST`]). The parts it leaves whole are ordered
+/// by `finish`, a group of them at a time in a context of their own (see
+/// [`order_apart`]); `first` is what `set` starts with.
 pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
     ctx: &mut Ctx<'a, K>,
     set: Vec<u32>,
