@@ -398,19 +398,15 @@ fn split_on_every_core<K: Kernel>(
 mod tests {
     use super::*;
     use crate::options::CullMode;
-    use glam::DVec3;
+    use crate::test_scenes::torus;
     use limn_kernel::ExactKernel;
-    use limn_scene::{shapes, Material, Scene};
 
     /// A mesh whose boxes meet hardly more than its neighbours is not crowded; the same
     /// boxes without the count of neighbours would be.
     #[test]
     fn a_mesh_is_crowded_only_beyond_its_neighbours() {
         let k = ExactKernel::new();
-        let mut scene = Scene::default();
-        let m = scene.add_material(Material::diffuse("m", [0.5; 3]));
-        let o = scene.add_object("torus");
-        shapes::torus(&mut scene, DVec3::ZERO, 1.0, 0.35, 100, 100, m, o).expect("a torus");
+        let scene = torus(100, 100);
         let (mut ctx, near) = Ctx::framing(&k, &scene, 400, 300);
         let (set, _) =
             crate::prepare::prepare(&mut ctx, &scene, CullMode::Auto, near).expect("a valid scene");

@@ -57,6 +57,8 @@ mod shadows;
 mod simple;
 mod split_apart;
 mod sweep;
+#[cfg(test)]
+mod test_scenes;
 mod view;
 
 use std::time::Instant;

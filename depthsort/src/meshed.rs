@@ -39,7 +39,7 @@ mod tests {
     use super::*;
     use crate::coincident::canonical_vertices;
     use glam::DVec3;
-    use limn_scene::{shapes, Material};
+    use limn_scene::Material;
 
     #[test]
     fn a_grid_meets_its_neighbours_and_a_soup_nothing() {
@@ -62,10 +62,7 @@ mod tests {
             met.iter().map(|&c| u32::from(c)).sum::<u32>(),
             4 * 5 + 4 * 8 + 12
         );
-        let mut soup = Scene::default();
-        let m = soup.add_material(Material::diffuse("m", [0.5; 3]));
-        let o = soup.add_object("o");
-        shapes::random_soup(&mut soup, 50, 0.3, 3, m, o).expect("a valid soup");
+        let soup = crate::test_scenes::soup(50, 0.3, 3);
         let met = faces_met_at_corners(&soup, &canonical_vertices(&soup));
         assert!(met.iter().all(|&c| c == 0));
     }

@@ -145,16 +145,8 @@ impl<'c, 'a, K: Kernel> Probe<'c, 'a, K> {
 mod tests {
     use super::*;
     use crate::options::CullMode;
+    use crate::test_scenes::soup;
     use limn_kernel::ExactKernel;
-    use limn_scene::{shapes, Material, Scene};
-
-    fn soup(n: usize, size: f64) -> Scene {
-        let mut s = Scene::default();
-        let m = s.add_material(Material::diffuse("m", [0.5, 0.5, 0.5]));
-        let o = s.add_object("soup");
-        shapes::random_soup(&mut s, n, size, 11, m, o).expect("a valid soup");
-        s
-    }
 
     /// Counting stops early only where that cannot change the answer: for every bound,
     /// whether the count reaches it is what counting every piece says, on one thread and
@@ -164,7 +156,7 @@ mod tests {
         let k = ExactKernel::new();
         let mut answers = Vec::new();
         for (n, size) in [(400, 0.05), (500, 0.3), (700, 0.6)] {
-            let scene = soup(n, size);
+            let scene = soup(n, size, 11);
             let (mut ctx, near) = Ctx::framing(&k, &scene, 400, 300);
             let (set, _) = crate::prepare::prepare(&mut ctx, &scene, CullMode::Off, near)
                 .expect("a valid scene");

@@ -128,18 +128,15 @@ pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_scenes::soup;
     use limn_kernel::ExactKernel;
-    use limn_scene::{shapes, Material, Scene};
 
     /// Outside a split apart, sets from [`APART_FROM`] pieces are split apart; inside
     /// one, only parts holding a [`SHARE_OF_OUTERMOST`] of the outermost set.
     #[test]
     fn parts_are_split_apart_again_only_while_they_hold_a_share_of_the_outermost_set() {
         let k = ExactKernel::new();
-        let mut scene = Scene::default();
-        let m = scene.add_material(Material::diffuse("m", [0.5; 3]));
-        let o = scene.add_object("soup");
-        shapes::random_soup(&mut scene, 10, 0.5, 1, m, o).expect("a soup");
+        let scene = soup(10, 0.5, 1);
         let (mut ctx, _) = Ctx::framing(&k, &scene, 100, 100);
         assert!(!splits_apart(&ctx, APART_FROM - 1));
         assert!(splits_apart(&ctx, APART_FROM));
