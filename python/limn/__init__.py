@@ -13,6 +13,7 @@ lines, scatter points, 3D texts and, when data leave it, the axes' box).
 
 from __future__ import annotations
 
+import warnings
 from typing import Any, Dict, Optional, Sequence, Tuple
 
 import numpy as np
@@ -31,13 +32,56 @@ def _vertices(vertices: Any) -> np.ndarray:
     return v
 
 
-def _faces(faces: Any) -> np.ndarray:
-    f = np.asarray(faces)
-    if f.ndim != 2 or f.shape[1] not in (3, 4):
-        raise ValueError(f"faces must have shape (M, 3) or (M, 4), not {f.shape}")
-    if f.size and not np.issubdtype(f.dtype, np.integer):
-        raise ValueError(f"faces must hold integers, not {f.dtype}")
-    return np.ascontiguousarray(f, dtype=np.int64)
+def _indices(what: str, a: Any, ndim: int, shape: str) -> np.ndarray:
+    """``a`` as a contiguous int64 array of ``ndim`` dimensions (``shape`` names them in
+    the message), integers only."""
+    x = np.asarray(a)
+    if x.ndim != ndim:
+        raise ValueError(f"{what} must have shape {shape}, not {x.shape}")
+    if x.size and not np.issubdtype(x.dtype, np.integer):
+        raise ValueError(f"{what} must hold integers, not {x.dtype}")
+    return np.ascontiguousarray(x, dtype=np.int64)
+
+
+def _faces(faces: Any, counts: Any = None) -> Tuple[np.ndarray, Optional[np.ndarray]]:
+    """The faces as the native module takes them: an ``(M, k)`` array and no counts, or
+    the flat ``(K,)`` indices of every face one after another and the ``(M,)`` counts."""
+    if counts is not None:
+        return _indices("faces", faces, 1, "(K,)"), _indices("counts", counts, 1, "(M,)")
+    if isinstance(faces, np.ndarray) and faces.dtype != object:
+        if faces.ndim == 1 and faces.size:
+            raise ValueError("faces is flat: give each face's corner count with counts=")
+        return _indices("faces", faces, 2, "(M, k)"), None
+    try:
+        rows = list(faces)
+    except TypeError:
+        raise ValueError(
+            f"faces must be an (M, k) array or a sequence of index sequences, not {faces!r}"
+        ) from None
+    if not rows:
+        return np.zeros((0, 3), dtype=np.int64), None
+    with warnings.catch_warnings():
+        # Faces of different corner counts: numpy >= 1.24 refuses them, older ones warn.
+        warnings.simplefilter("error")
+        try:
+            f = np.asarray(rows)
+        except (ValueError, Warning):
+            f = None
+    if f is not None and f.dtype != object:
+        if f.ndim == 2:
+            return _indices("faces", f, 2, "(M, k)"), None
+        if f.ndim == 1:
+            raise ValueError("faces is flat: give each face's corner count with counts=")
+    ragged = []
+    for j, face in enumerate(rows):
+        r = np.asarray(face)
+        if r.ndim != 1:
+            raise ValueError(f"faces[{j}] must be a sequence of vertex indices, not {face!r}")
+        if r.size and not np.issubdtype(r.dtype, np.integer):
+            raise ValueError(f"faces[{j}] must hold integers, not {r.dtype}")
+        ragged.append(r.astype(np.int64, copy=False))
+    n = np.fromiter((len(r) for r in ragged), dtype=np.int64, count=len(ragged))
+    return np.ascontiguousarray(np.concatenate(ragged), dtype=np.int64), n
 
 
 def _colors(colors: Any) -> Optional[np.ndarray]:
@@ -61,6 +105,7 @@ def render_mesh(
     faces: Any,
     path: Any,
     *,
+    counts: Any = None,
     colors: Any = None,
     opacity: Optional[float] = None,
     eye: Optional[Sequence[float]] = None,
@@ -74,22 +119,33 @@ def render_mesh(
 ) -> Dict[str, Any]:
     """Render one mesh to ``path`` and return the statistics ``limn --stats`` prints.
 
-    vertices: ``(N, 3)`` floats. faces: ``(M, 3)`` or ``(M, 4)`` vertex indices.
-    colors: per face ``(M, 3)`` or ``(M, 4)`` in 0..1, drawn exactly (unlit); without
+    vertices: ``(N, 3)`` floats. faces: polygons of any number of corners from three
+    up, given as vertex indices in one of three ways: an ``(M, k)`` array (``M`` faces
+    of ``k`` corners each, e.g. triangles or quads); a sequence of index sequences, one
+    per face, of any lengths (``[[0, 1, 2], [0, 2, 3, 4, 5]]``); or, with ``counts``
+    (``(M,)``, each face's corner count), the flat ``(K,)`` array of every face's
+    indices one face after another (``faces=[0, 1, 2, 0, 2, 3, 4, 5], counts=[3, 5]``).
+    A face need not be convex or planar: it is drawn as the polygon it is (limn
+    triangulates it when it must). colors: per face ``(M, 3)`` or ``(M, 4)`` in 0..1,
+    drawn exactly (unlit); without
     colours faces are grey, lit by a headlight. opacity: 0..1 for the whole mesh.
     eye, target, up, fov: the camera; without ``eye`` the scene is framed as the
     command frames it (from the right, above and in front). size: (width, height) in
     pixels. sort: adaptive, bsp, newell or simple. arith: exact or float. format: svg,
     pdf, eps, png or tikz (default: from the extension).
 
-    Raises ValueError for wrong shapes, NaN, indices out of range and bad options;
-    OSError when the file cannot be written. Nothing is written on error.
+    Raises ValueError for wrong shapes, NaN, indices out of range, faces of fewer than
+    three corners, counts that do not add up to the number of indices, and bad options
+    (the message names the face); OSError when the file cannot be written. Nothing is
+    written on error.
     """
     t = lambda x: None if x is None else tuple(float(c) for c in x)  # noqa: E731
+    f, n = _faces(faces, counts)
     return _limn.render_mesh(
         _vertices(vertices),
-        _faces(faces),
+        f,
         str(path),
+        counts=n,
         colors=_colors(colors),
         opacity=opacity,
         eye=t(eye),
@@ -125,16 +181,21 @@ class Scene:
         vertices: Any,
         faces: Any,
         *,
+        counts: Any = None,
         colors: Any = None,
         opacity: Optional[float] = None,
         name: str = "mesh",
     ) -> int:
-        """Add a mesh (arguments as in ``render_mesh``); return the id of its first face.
+        """Add a mesh (arguments as in ``render_mesh``: faces of any number of corners,
+        as an ``(M, k)`` array, a sequence of index sequences, or flat indices with
+        ``counts``); return the id of its first face.
 
-        Faces are numbered in the order they are added, over all meshes.
+        Faces are numbered in the order they are added, over all meshes. Raises
+        ``ValueError`` (and leaves the scene unchanged) on bad input.
         """
+        f, n = _faces(faces, counts)
         return self._s.add_mesh(
-            _vertices(vertices), _faces(faces), colors=_colors(colors), opacity=opacity, name=name
+            _vertices(vertices), f, counts=n, colors=_colors(colors), opacity=opacity, name=name
         )
 
     def add_line(

@@ -7,10 +7,14 @@ import numpy.typing as npt
 
 __version__: str
 
+# Faces (render_mesh, Scene.add_mesh): without counts, an (M, k) array of M faces of k >= 3
+# corners; with counts ((M,), each face's corner count, 3 or more), the flat (K,) indices
+# of every face one face after another, K being the sum of the counts.
 def render_mesh(
     vertices: npt.NDArray[np.float64],
     faces: npt.NDArray[np.int64],
     path: str,
+    counts: Optional[npt.NDArray[np.int64]] = ...,
     colors: Optional[npt.NDArray[np.float64]] = ...,
     opacity: Optional[float] = ...,
     eye: Optional[Tuple[float, float, float]] = ...,
@@ -30,6 +34,7 @@ class Scene:
         self,
         vertices: npt.NDArray[np.float64],
         faces: npt.NDArray[np.int64],
+        counts: Optional[npt.NDArray[np.int64]] = ...,
         colors: Optional[npt.NDArray[np.float64]] = ...,
         opacity: Optional[float] = ...,
         name: str = ...,

@@ -1,5 +1,7 @@
 //! numpy arrays to scene faces: shapes, finite values and indices checked at the
-//! boundary, one unlit material per distinct face colour.
+//! boundary, one unlit material per distinct face colour. A face may have any number of
+//! corners (three or more); the kernel's face conversion draws every one, convex or
+//! not, planar or not.
 
 use std::collections::HashMap;
 
@@ -13,16 +15,134 @@ use crate::errors::value_error;
 /// Per-face colours: `(M, 3)` or `(M, 4)` RGB(A) in 0..1.
 pub(crate) type Colors<'py> = Option<PyReadonlyArray2<'py, f64>>;
 
-/// Adds one mesh to `scene` as object `name`. Vertices `(N, 3)` finite; faces `(M, 3)`
-/// or `(M, 4)` indices into the vertices; colours per face `(M, 3)` or `(M, 4)` in
-/// 0..1 (alpha is opacity, multiplied by `opacity` when given). Faces without colours
-/// are drawn in a grey lit by the scene's lights (a headlight when there are none);
-/// coloured faces in exactly their colour. Returns the id of the mesh's first face.
+/// The faces of a mesh as they come from Python: without `counts`, `faces` is an
+/// `(M, k)` array of `M` faces of `k` corners each; with `counts` (`(M,)`, one corner
+/// count per face), `faces` is the `(K,)` array of every face's corner indices one face
+/// after another, `K` being the sum of the counts.
+pub(crate) struct Faces<'a, 'py> {
+    /// The `(M, k)` or `(K,)` index array.
+    pub(crate) faces: &'a Bound<'py, PyAny>,
+    /// The corner count of each face, when `faces` is flat.
+    pub(crate) counts: Option<&'a PyReadonlyArray1<'py, i64>>,
+}
+
+/// Every face's corners checked against `n` vertices: the indices one face after
+/// another, and where each face starts in them (`M + 1` entries, the last one the
+/// number of indices).
+struct Corners {
+    /// Vertex indices of the mesh, one face after another.
+    indices: Vec<u32>,
+    /// Face `j` is `indices[starts[j]..starts[j + 1]]`.
+    starts: Vec<usize>,
+}
+
+impl Corners {
+    /// The number of faces.
+    fn faces(&self) -> usize {
+        self.starts.len() - 1
+    }
+
+    /// The corners of face `j`.
+    fn face(&self, j: usize) -> &[u32] {
+        &self.indices[self.starts[j]..self.starts[j + 1]]
+    }
+}
+
+/// The message for face `j` of `count` corners, when `count` is less than three.
+fn too_few(j: usize, count: i64) -> PyErr {
+    value_error(format!(
+        "faces[{j}] has {count} corners; at least 3 are needed"
+    ))
+}
+
+/// Reads and checks the faces: at least three corners each, every index in `0..n`.
+fn corners(faces: &Faces<'_, '_>, n: usize) -> PyResult<Corners> {
+    let index = |j: usize, k: i64| -> PyResult<u32> {
+        if k < 0 || k as u64 >= n as u64 {
+            Err(value_error(format!(
+                "faces[{j}] refers to vertex {k}, outside 0..{n}"
+            )))
+        } else {
+            Ok(k as u32)
+        }
+    };
+    match faces.counts {
+        None => {
+            let f = faces
+                .faces
+                .extract::<PyReadonlyArray2<'_, i64>>()
+                .map_err(|_| value_error("faces must be an (M, k) array of int64 indices"))?;
+            let f = f.as_array();
+            let (m, k) = (f.nrows(), f.ncols());
+            if k < 3 {
+                return Err(if m == 0 {
+                    value_error(format!(
+                        "faces must have shape (M, k) with k >= 3, not {:?}",
+                        f.shape()
+                    ))
+                } else {
+                    too_few(0, k as i64)
+                });
+            }
+            let mut indices = Vec::with_capacity(m * k);
+            for (j, row) in f.outer_iter().enumerate() {
+                for &v in row.iter() {
+                    indices.push(index(j, v)?);
+                }
+            }
+            Ok(Corners {
+                indices,
+                starts: (0..=m).map(|j| j * k).collect(),
+            })
+        }
+        Some(counts) => {
+            let f = faces
+                .faces
+                .extract::<PyReadonlyArray1<'_, i64>>()
+                .map_err(|_| {
+                    value_error("with counts, faces must be a flat (K,) array of int64 indices")
+                })?;
+            let f = f.as_array();
+            let counts = counts.as_array();
+            if let Some((j, &c)) = counts.iter().enumerate().find(|(_, &c)| c < 3) {
+                return Err(too_few(j, c));
+            }
+            let total: i128 = counts.iter().map(|&c| i128::from(c)).sum();
+            if total != f.len() as i128 {
+                return Err(value_error(format!(
+                    "the counts add up to {total} corners, but faces holds {} indices",
+                    f.len()
+                )));
+            }
+            let mut starts = Vec::with_capacity(counts.len() + 1);
+            starts.push(0);
+            for &c in counts.iter() {
+                starts.push(starts[starts.len() - 1] + c as usize);
+            }
+            let mut indices = Vec::with_capacity(f.len());
+            let mut j = 0;
+            for (i, &v) in f.iter().enumerate() {
+                while i >= starts[j + 1] {
+                    j += 1;
+                }
+                indices.push(index(j, v)?);
+            }
+            Ok(Corners { indices, starts })
+        }
+    }
+}
+
+/// Adds one mesh to `scene` as object `name`. Vertices `(N, 3)` finite; `faces` (see
+/// [`Faces`]) of any number of corners from three up, indices into the vertices;
+/// colours per face `(M, 3)` or `(M, 4)` in 0..1 (alpha is opacity, multiplied by
+/// `opacity` when given). Faces without colours are drawn in a grey lit by the scene's
+/// lights (a headlight when there are none); coloured faces in exactly their colour.
+/// Returns the id of the mesh's first face. On error the scene is left as it was.
 pub(crate) fn add_mesh(
     target: &mut Scene,
     name: &str,
     vertices: &PyReadonlyArray2<'_, f64>,
-    faces: &PyReadonlyArray2<'_, i64>,
+    faces: &Faces<'_, '_>,
     colors: &Colors<'_>,
     opacity: Option<f64>,
 ) -> PyResult<u32> {
@@ -33,13 +153,9 @@ pub(crate) fn add_mesh(
             v.shape()
         )));
     }
-    let f = faces.as_array();
-    if f.ncols() != 3 && f.ncols() != 4 {
-        return Err(value_error(format!(
-            "faces must have shape (M, 3) or (M, 4), not {:?}",
-            f.shape()
-        )));
-    }
+    let n = v.nrows();
+    let corners = corners(faces, n)?;
+    let m = corners.faces();
     if let Some(op) = opacity {
         if !(0.0..=1.0).contains(&op) {
             return Err(value_error(format!("opacity {op} is outside 0..1")));
@@ -47,10 +163,9 @@ pub(crate) fn add_mesh(
     }
     let colors = colors.as_ref().map(|c| c.as_array());
     if let Some(c) = &colors {
-        if c.nrows() != f.nrows() || (c.ncols() != 3 && c.ncols() != 4) {
+        if c.nrows() != m || (c.ncols() != 3 && c.ncols() != 4) {
             return Err(value_error(format!(
-                "colors must have shape ({0}, 3) or ({0}, 4) (one per face), not {1:?}",
-                f.nrows(),
+                "colors must have shape ({m}, 3) or ({m}, 4) (one per face), not {:?}",
                 c.shape()
             )));
         }
@@ -66,8 +181,6 @@ pub(crate) fn add_mesh(
             )));
         }
     }
-    let first_vertex = target.vertices.len() as u32;
-    let n = v.nrows();
     let mut points = Vec::with_capacity(n);
     for i in 0..n {
         let p = DVec3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]);
@@ -79,23 +192,11 @@ pub(crate) fn add_mesh(
         }
         points.push(p);
     }
-    let mut corners: Vec<Vec<u32>> = Vec::with_capacity(f.nrows());
-    for (j, row) in f.outer_iter().enumerate() {
-        let mut face = Vec::with_capacity(row.len());
-        for &k in row.iter() {
-            if k < 0 || k as usize >= n {
-                return Err(value_error(format!(
-                    "faces[{j}] refers to vertex {k}, outside 0..{n}"
-                )));
-            }
-            face.push(first_vertex + k as u32);
-        }
-        corners.push(face);
-    }
     // Everything checked: change a copy, so that a face the scene refuses leaves the
     // scene as it was.
     let mut s = target.clone();
     let scene = &mut s;
+    let first_vertex = scene.vertices.len() as u32;
     for p in points {
         scene.add_vertex(p);
     }
@@ -106,7 +207,8 @@ pub(crate) fn add_mesh(
     });
     let mut materials: HashMap<[u64; 4], u32> = HashMap::new();
     let first_face = scene.faces.len() as u32;
-    for (j, face) in corners.iter().enumerate() {
+    let mut face = Vec::new();
+    for j in 0..m {
         let material = match &colors {
             None => *materials
                 .entry([u64::MAX; 4])
@@ -124,8 +226,10 @@ pub(crate) fn add_mesh(
                 })
             }
         };
+        face.clear();
+        face.extend(corners.face(j).iter().map(|&k| first_vertex + k));
         scene
-            .add_face(face, material, object)
+            .add_face(&face, material, object)
             .map_err(|e| value_error(format!("faces[{j}]: {e}")))?;
     }
     *target = s;

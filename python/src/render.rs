@@ -8,13 +8,13 @@ use std::time::Instant;
 use limn_depthsort::{order_with_marks, Arith, MarkStats, OrderOptions, Ordered, SortMode};
 use limn_paint::{painter_for, picture_with_marks, Format, PaintStats, Style};
 use limn_scene::{Effects, Scene};
-use numpy::PyReadonlyArray2;
+use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::camera::CameraSpec;
 use crate::errors::{os_error, value_error};
-use crate::mesh::{add_mesh, vec3, Colors};
+use crate::mesh::{add_mesh, vec3, Colors, Faces};
 
 /// Ordering options by name, as the command takes them.
 pub(crate) fn order_options(sort: &str, arith: &str) -> PyResult<OrderOptions> {
@@ -198,14 +198,16 @@ pub(crate) fn command_style() -> Style {
 
 /// Renders one mesh; see the Python wrapper `limn.render_mesh` for the documentation.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, path, colors=None, opacity=None, eye=None, target=None,
-    up=(0.0, 1.0, 0.0), fov=45.0, size=(800, 600), sort="adaptive", arith="exact", format=None))]
+#[pyo3(signature = (vertices, faces, path, counts=None, colors=None, opacity=None, eye=None,
+    target=None, up=(0.0, 1.0, 0.0), fov=45.0, size=(800, 600), sort="adaptive", arith="exact",
+    format=None))]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn render_mesh<'py>(
     py: Python<'py>,
     vertices: PyReadonlyArray2<'py, f64>,
-    faces: PyReadonlyArray2<'py, i64>,
+    faces: Bound<'py, PyAny>,
     path: PathBuf,
+    counts: Option<PyReadonlyArray1<'py, i64>>,
     colors: Colors<'py>,
     opacity: Option<f64>,
     eye: Option<(f64, f64, f64)>,
@@ -221,6 +223,10 @@ pub(crate) fn render_mesh<'py>(
     let oo = order_options(sort, arith)?;
     format_of(&path, format)?;
     let mut scene = Scene::default();
+    let faces = Faces {
+        faces: &faces,
+        counts: counts.as_ref(),
+    };
     add_mesh(&mut scene, "mesh", &vertices, &faces, &colors, opacity)?;
     scene.validate().map_err(value_error)?;
     let spec = CameraSpec {

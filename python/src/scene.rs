@@ -17,7 +17,7 @@ use pyo3::types::PyDict;
 
 use crate::camera::CameraSpec;
 use crate::errors::value_error;
-use crate::mesh::{add_mesh, vec3, Colors};
+use crate::mesh::{add_mesh, vec3, Colors, Faces};
 use crate::render::{command_style, order_options, render_scene};
 
 /// A scene; see the Python stub `limn/_limn.pyi` for the documentation.
@@ -115,15 +115,20 @@ impl PyScene {
 
     /// Adds a mesh; returns the id of its first face (faces are numbered in the order
     /// they are added, over all meshes).
-    #[pyo3(signature = (vertices, faces, colors=None, opacity=None, name="mesh"))]
+    #[pyo3(signature = (vertices, faces, counts=None, colors=None, opacity=None, name="mesh"))]
     fn add_mesh(
         &mut self,
         vertices: PyReadonlyArray2<'_, f64>,
-        faces: PyReadonlyArray2<'_, i64>,
+        faces: Bound<'_, PyAny>,
+        counts: Option<PyReadonlyArray1<'_, i64>>,
         colors: Colors<'_>,
         opacity: Option<f64>,
         name: &str,
     ) -> PyResult<u32> {
+        let faces = Faces {
+            faces: &faces,
+            counts: counts.as_ref(),
+        };
         add_mesh(&mut self.scene, name, &vertices, &faces, &colors, opacity)
     }
 

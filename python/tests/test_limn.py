@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import limn
+from test_polygons import mixed_mesh
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -96,6 +97,23 @@ def test_render_mesh_equals_the_command(tmp_path, eye):
     assert stats["splits"] > 0  # the strips overlap cyclically: no order of whole faces
 
 
+def test_render_mesh_of_polygons_of_any_shape_equals_the_command(tmp_path):
+    # One face conversion for both: the numpy API hands each polygon over whole, as
+    # the OBJ loader does.
+    exe = limn_command()
+    if exe is None:
+        pytest.skip("the limn command is not built (cargo build --release)")
+    v, f, c = mixed_mesh()  # a triangle, an L, a non-planar quad, a star
+    eye = (0.5, -2.0, 6.0)
+    stats = limn.render_mesh(v, f, tmp_path / "py.svg", colors=c, eye=eye, size=(320, 240))
+    write_obj(tmp_path / "s.obj", v, f, c)
+    args = [exe, "render", "s.obj", "-o", "cmd.svg", "--size", "320x240", "--quiet"]
+    args += ["--eye", ",".join(map(repr, eye))]
+    subprocess.run(args, cwd=tmp_path, capture_output=True, check=True)
+    assert (tmp_path / "py.svg").read_bytes() == (tmp_path / "cmd.svg").read_bytes()
+    assert stats["faces_in"] == len(f)
+
+
 def test_scene_checks_exactly_under_every_projection(tmp_path):
     v, f, c = strips_and_boxes()
     s = limn.Scene()
@@ -143,7 +161,7 @@ def test_a_matrix_camera_matches_its_look_at_twin():
     "vertices, faces, colors, message",
     [
         (np.zeros((4, 2)), [[0, 1, 2]], None, "shape"),
-        (np.zeros((4, 3)), [[0, 1]], None, "shape"),
+        (np.zeros((4, 3)), [[0, 1]], None, "at least 3"),
         (np.array([[0, 0, 0], [1, 0, 0], [np.nan, 1, 0]]), [[0, 1, 2]], None, "not finite"),
         (np.eye(3), [[0, 1, 3]], None, "outside"),
         (np.eye(3), [[0, 1, -1]], None, "outside"),

@@ -1,0 +1,150 @@
+"""Faces of any number of corners: the numpy API's three ways of giving them, its
+errors, and polygons that are not convex drawn as they are by ``render_mesh`` and
+``Scene`` (checked on the rasterised files)."""
+
+import numpy as np
+import pytest
+
+import limn
+
+RED = (0.85, 0.25, 0.2)
+BLUE = (0.2, 0.4, 0.85)
+
+# An L-shaped hexagon in the plane z = 0, listed from a corner that does not see the
+# whole outline: the fan from its first corner covers the notch (the triangle (0, 0.8),
+# (0.8, 0), (0, 0) lies in it).
+L_SHAPE = np.array([(0, 0.8), (-0.8, 0.8), (-0.8, -0.8), (0.8, -0.8), (0.8, 0), (0, 0)])
+NOTCH = (0.25, 0.25)  # in the fan's triangle, outside the L
+ARMS = [(-0.4, 0.4), (-0.4, -0.4), (0.4, -0.4), (0.6, -0.15), (-0.15, 0.6)]
+
+
+def l_shape_3d(z=0.0):
+    return np.c_[L_SHAPE, np.full(len(L_SHAPE), z)]
+
+
+def mixed_mesh():
+    """A triangle, the L-shaped hexagon, a non-planar quad and a star (a non-convex
+    decagon): vertices, the faces as a ragged list, and one colour per face."""
+    tri = [(1.0, -0.8, 0.1), (1.8, -0.8, 0.1), (1.4, -0.1, 0.1)]
+    skew = [(1.0, 0.1, 0.0), (1.8, 0.1, 0.3), (1.8, 0.9, 0.0), (1.0, 0.9, 0.3)]
+    a = np.arange(10) * np.pi / 5
+    r = np.where(np.arange(10) % 2, 0.3, 0.7)
+    star = np.c_[-1.9 + r * np.cos(a), r * np.sin(a), np.full(10, -0.2)]
+    parts = [np.array(tri), l_shape_3d(), np.array(skew), star]
+    v = np.concatenate(parts)
+    faces, start = [], 0
+    for p in parts:
+        faces.append(list(range(start, start + len(p))))
+        start += len(p)
+    colors = np.array([BLUE, RED, BLUE, RED])
+    return v, faces, colors
+
+
+def test_ragged_faces_and_counted_faces_draw_the_same_picture(tmp_path):
+    v, faces, colors = mixed_mesh()
+    counts = [len(f) for f in faces]
+    flat = np.concatenate(faces)
+    ways = {
+        "ragged": dict(faces=faces),
+        "ragged arrays": dict(faces=[np.array(f, dtype=np.int32) for f in faces]),
+        "counts": dict(faces=flat, counts=counts),
+        "counts arrays": dict(faces=np.array(flat, np.uint16), counts=np.array(counts)),
+    }
+    pictures = {}
+    for name, kw in ways.items():
+        stats = limn.render_mesh(v, path=tmp_path / f"{name}.svg", colors=colors, **kw)
+        assert stats["faces_in"] == len(faces), name
+        pictures[name] = (tmp_path / f"{name}.svg").read_bytes()
+    assert len(set(pictures.values())) == 1
+    # Scene.add_mesh takes them the same ways, faces numbered across meshes.
+    s = limn.Scene()
+    assert s.add_mesh(v, faces, colors=colors) == 0
+    assert s.add_mesh(v + 3, flat, counts=counts, colors=colors) == len(faces)
+    assert s.face_count == 2 * len(faces)
+    s.set_camera(eye=(0.5, -2.0, 6.0), size=(240, 160))
+    assert s.check(against="raycast")["mismatches_outside_band"] == 0
+    assert {p[0] for p in s.paint()} == set(range(2 * len(faces)))
+
+
+def test_equal_sized_faces_as_an_array_a_list_or_counts_are_the_same_mesh(tmp_path):
+    # Pentagons: an (M, 5) array is faces of five corners, not a special case.
+    a = np.arange(5) * 2 * np.pi / 5
+    ring = np.c_[np.cos(a), np.sin(a), np.zeros(5)]
+    v = np.concatenate([ring, ring * 0.5 + [2.5, 0, 0.3]])
+    f = np.array([[0, 1, 2, 3, 4], [5, 6, 7, 8, 9]])
+    outs = []
+    ways = [dict(faces=f), dict(faces=f.tolist()), dict(faces=f.ravel(), counts=[5, 5])]
+    for i, kw in enumerate(ways):
+        limn.render_mesh(v, path=tmp_path / f"{i}.svg", **kw)
+        outs.append((tmp_path / f"{i}.svg").read_bytes())
+    assert outs[0] == outs[1] == outs[2]
+
+
+def top_view(scene, size=200):
+    """An orthographic camera looking down the z axis at the square [-1, 1]²: the point
+    (x, y) is at pixel column (x + 1) size / 2, row (1 - y) size / 2."""
+    m = np.diag([1.0, 1.0, 0.5, 1.0])
+    scene.set_camera(matrix=m, size=(size, size))
+
+
+def pixel(img, xy):
+    h, w = img.shape[:2]
+    return img[int((1 - xy[1]) * h / 2), int((xy[0] + 1) * w / 2), :3]
+
+
+def test_a_non_convex_face_is_drawn_without_its_notch(tmp_path):
+    pytest.importorskip("resvg_py")
+    pytest.importorskip("matplotlib")
+    from probes import near, raster
+
+    s = limn.Scene()
+    s.add_mesh(l_shape_3d(), [range(6)], colors=[RED])
+    top_view(s)
+    assert s.check(against="raycast")["mismatches_outside_band"] == 0
+    s.render(tmp_path / "l.svg")
+    img = raster((tmp_path / "l.svg").read_bytes(), 1.0)
+    assert near(pixel(img, NOTCH), (1, 1, 1)), pixel(img, NOTCH)
+    for p in ARMS:
+        assert near(pixel(img, p), RED), (p, pixel(img, p))
+
+
+@pytest.mark.parametrize(
+    "faces, counts, colors, message",
+    [
+        ([[0, 1, 2], [0, 1]], None, None, r"faces\[1\] has 2 corners; at least 3"),
+        ([[0, 1, 2], []], None, None, r"faces\[1\] has 0 corners"),
+        ([[0, 1, 2], [0, 1, 2, 9]], None, None, r"faces\[1\] refers to vertex 9, outside 0\.\.4"),
+        ([[0, 1, 2, 3], [3, -1, 2]], None, None, r"faces\[1\] refers to vertex -1"),
+        ([[0, 1, 2], [0, 1.5, 2, 3]], None, None, r"faces\[1\] must hold integers"),
+        ([[0, 1, 2], [[0, 1, 2]]], None, None, r"faces\[1\] must be a sequence"),
+        ([0, 1, 2, 3], None, None, "counts="),
+        (7, None, None, "sequence of index sequences"),
+        ([0, 1, 2, 0, 2, 3], [3, 2], None, r"faces\[1\] has 2 corners"),
+        ([0, 1, 2, 0, 2, 3], [3, 4], None, "add up to 7 corners, but faces holds 6"),
+        ([0, 1, 2, 0, 2, 3], [3, 3, 3], None, "add up to 9"),
+        ([0, 1, 2, 0, 2, 3], [[3, 3]], None, r"counts must have shape \(M,\)"),
+        ([0, 1, 2, 0, 2, 3], [3.0, 3.0], None, "counts must hold integers"),
+        ([[0, 1, 2, 0, 2, 3]], [6], None, r"faces must have shape \(K,\)"),
+        ([0, 1, 2, 0, 2, 4], [3, 3], None, r"faces\[1\] refers to vertex 4"),
+        ([[0, 1, 2], [0, 2, 3, 1]], None, [RED], r"colors must have shape \(2, 3\)"),
+        ([0, 1, 2, 0, 2, 3], [3, 3], [RED] * 3, r"colors must have shape \(2, 3\)"),
+    ],
+)
+def test_bad_faces_raise_value_error_naming_the_face(tmp_path, faces, counts, colors, message):
+    v = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], float)
+    with pytest.raises(ValueError, match=message):
+        limn.render_mesh(v, faces, tmp_path / "x.svg", counts=counts, colors=colors)
+    assert list(tmp_path.iterdir()) == []
+    s = limn.Scene()
+    s.add_mesh(v, [[0, 1, 2]])
+    with pytest.raises(ValueError, match=message):
+        s.add_mesh(v, faces, counts=counts, colors=colors)
+    assert s.face_count == 1  # the scene as it was
+
+
+def test_non_finite_vertices_of_a_polygon_raise_value_error(tmp_path):
+    v = l_shape_3d()
+    v[4, 2] = np.inf
+    with pytest.raises(ValueError, match=r"vertices\[4\].*not finite"):
+        limn.render_mesh(v, [range(6)], tmp_path / "x.svg")
+    assert list(tmp_path.iterdir()) == []
