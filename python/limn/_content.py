@@ -236,25 +236,14 @@ class Polygons:
         cat = lambda parts, shape: np.concatenate(parts) if parts else np.zeros(shape)  # noqa: E731
         return cat(self._fill, (0, 4)), cat(self._edge, (0, 4)), cat(self._width, (0,))
 
-    def mesh(self) -> Tuple[np.ndarray, List[Any], List[int], List[Any], List[int]]:
-        """Vertices, triangles and quads for limn, with the polygon each face comes from.
-        Polygons of 3 and 4 corners are kept as they are; longer ones become fans
-        (matplotlib's polygons are convex in practice: quads of surfaces, bars, voxels)."""
-        verts, tris, quads = [], [], []
-        owner_t, owner_q = [], []
-        base = 0
-        for k, p in enumerate(self.corners):
-            if len(p) < 3:
-                continue
-            verts.append(p)
-            idx = base + np.arange(len(p))
-            base += len(p)
-            if len(p) == 4:
-                quads.append(idx)
-                owner_q.append(k)
-            else:
-                for j in range(1, len(p) - 1):
-                    tris.append([idx[0], idx[j], idx[j + 1]])
-                    owner_t.append(k)
+    def mesh(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Vertices, faces and corner counts for limn (``add_mesh(v, faces,
+        counts=counts)``), and the polygon each face is. Every polygon of three corners or
+        more is one face, whatever its shape: limn draws a non-convex or non-planar
+        polygon (an L-shaped polygon of a ``Poly3DCollection``) as it is."""
+        verts = [p for p in self.corners if len(p) >= 3]
+        owner = np.array([k for k, p in enumerate(self.corners) if len(p) >= 3], dtype=np.int64)
+        counts = np.array([len(p) for p in verts], dtype=np.int64)
         v = np.concatenate(verts) if verts else np.zeros((0, 3))
-        return v, tris, owner_t, quads, owner_q
+        # Each polygon's corners are its own vertices, one polygon after another.
+        return v, np.arange(len(v), dtype=np.int64), counts, owner

@@ -232,17 +232,14 @@ class _Limn3D:
         M = np.asarray(self.ax.M, dtype=float)
         polys, extra = self._content(p2p, M)
         fc, ec, lw = polys.styles()
-        v, tris, owner_t, quads, owner_q = polys.mesh()
+        v, faces, counts, owner = polys.mesh()
         if not len(v) and not extra.lines and not extra.points and not extra.texts:
             return []
         m, W, H = _camera(self.ax, renderer, np.concatenate([v] + extra.vertices()))
         wl, hl = max(1, int(round(W))), max(1, int(round(H)))
         scene = Scene()
-        owner: List[int] = []
-        for faces, own in ((tris, owner_t), (quads, owner_q)):
-            if faces:
-                scene.add_mesh(v, np.asarray(faces), colors=np.clip(fc[np.asarray(own)], 0, 1))
-                owner += list(own)
+        if len(counts):
+            scene.add_mesh(v, faces, counts=counts, colors=np.clip(fc[owner], 0, 1))
         for ln in extra.lines:
             scene.add_line(ln.points, color=np.clip(ln.rgba, 0, 1))
         if extra.points:
@@ -292,7 +289,7 @@ class _Limn3D:
 
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
-            k = owner[face]
+            k = int(owner[face])
             disp = disp_of(pts)
             edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
             items.append(

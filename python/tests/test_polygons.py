@@ -1,6 +1,6 @@
 """Faces of any number of corners: the numpy API's three ways of giving them, its
-errors, and polygons that are not convex drawn as they are by ``render_mesh`` and
-``Scene`` (checked on the rasterised files)."""
+errors, and polygons that are not convex drawn as they are, by ``render_mesh`` and
+``Scene`` and by the matplotlib bridge (checked on the rasterised files)."""
 
 import numpy as np
 import pytest
@@ -148,3 +148,59 @@ def test_non_finite_vertices_of_a_polygon_raise_value_error(tmp_path):
     with pytest.raises(ValueError, match=r"vertices\[4\].*not finite"):
         limn.render_mesh(v, [range(6)], tmp_path / "x.svg")
     assert list(tmp_path.iterdir()) == []
+
+
+# --- the matplotlib bridge ---------------------------------------------------------
+
+
+def test_an_l_shaped_poly3dcollection_polygon_keeps_its_notch(tmp_path):
+    pytest.importorskip("resvg_py")
+    mpl = pytest.importorskip("matplotlib")
+    mpl.use("Agg")
+    import matplotlib.pyplot as plt
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    import limn.matplotlib as lm
+    from probes import colour_at, near, raster
+
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")
+    ax.set_xlim(-1, 1)
+    ax.set_ylim(-1, 1)
+    ax.set_zlim(-1, 1)
+    ax.view_init(elev=50, azim=-60)
+    ax.grid(False)
+    # The L and a blue triangle in its plane beyond the notch: the polygons go to limn as
+    # one mesh of a hexagon and a triangle, each in its own colour.
+    tri = [(0.55, 0.55, 0.0), (0.8, 0.55, 0.0), (0.8, 0.8, 0.0)]
+    ax.add_collection3d(
+        Poly3DCollection([l_shape_3d(), tri], facecolors=[RED, BLUE], linewidths=0)
+    )
+    fig.savefig(tmp_path / "mpl.svg")
+    lm.savefig(fig, tmp_path / "limn.svg")
+    mine = raster((tmp_path / "limn.svg").read_bytes(), 3.0)
+    theirs = raster((tmp_path / "mpl.svg").read_bytes(), 3.0)
+    notch = (*NOTCH, 0.0)
+    # matplotlib fills the outline as it is: its export shows the pane behind the notch.
+    assert not near(colour_at(fig, ax, theirs, notch), RED)
+    assert near(colour_at(fig, ax, mine, notch), colour_at(fig, ax, theirs, notch)), (
+        colour_at(fig, ax, mine, notch)
+    )
+    for p in ARMS[:3]:
+        assert near(colour_at(fig, ax, mine, (*p, 0.0)), RED), p
+    assert near(colour_at(fig, ax, mine, (0.72, 0.62, 0.0)), BLUE)
+    plt.close(fig)
+
+
+def test_the_bridge_hands_each_polygon_over_whole_with_its_owner():
+    from limn._content import Polygons
+
+    polys = Polygons()
+    tri = np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0)], float)
+    polys.corners = [tri, tri[:2], l_shape_3d(), np.zeros((0, 3)), tri + 1]
+    v, faces, counts, owner = polys.mesh()
+    assert counts.tolist() == [3, 6, 3]  # the hexagon one face, not a fan of four
+    assert owner.tolist() == [0, 2, 4]  # what is too small to draw is skipped
+    starts = np.r_[0, np.cumsum(counts)]
+    for j, k in enumerate(owner):
+        assert np.array_equal(v[faces[starts[j] : starts[j + 1]]], polys.corners[k])
