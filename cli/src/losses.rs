@@ -35,7 +35,7 @@ pub fn losses(
     }
     if s.faces_degenerate > 0 {
         out.push(format!(
-            "{} faces have zero area as given (collinear or repeated corners) and are not drawn",
+            "{} faces have zero area as given (fewer than three distinct corners, or all on one line) and are not drawn",
             s.faces_degenerate
         ));
     }

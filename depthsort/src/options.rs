@@ -173,7 +173,8 @@ impl Default for OrderOptions {
 pub struct Stats {
     /// Faces in the scene.
     pub faces_in: usize,
-    /// Faces of zero area as given (collinear or repeated corners): dropped.
+    /// Faces of zero area as given (fewer than three distinct corners, or all of them on
+    /// one line): dropped. Every other face draws something.
     pub faces_degenerate: usize,
     /// Faces drawn over entirely by an identical later opaque face (same corners in the
     /// same order): not ordered, and nothing of them would show.

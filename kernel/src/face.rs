@@ -13,18 +13,20 @@
 //!    coordinate axis drops a coordinate, so it is exact); a convex face becomes one
 //!    polygon with all edges original. Its edge planes contain the edge and the direction
 //!    `e_k`, so vertex `i` is exactly corner `i`.
-//! 5. Otherwise the outline is triangulated (constrained Delaunay, projected along the
-//!    dominant axis of the Newell normal); diagonals are non-original and every triangle
-//!    gets its own exact supporting plane. Outlines that are not simple
-//!    (self-intersecting) are dropped, like zero-area faces.
+//! 5. Otherwise the face becomes the triangles of [`crate::face_split`]: triangulated
+//!    in a coordinate projection in which its outline is simple, or fanned from corner 0
+//!    when there is none. Diagonals are non-original and every triangle gets its own
+//!    exact supporting plane; only triangles of exactly zero area are dropped, so a face
+//!    with area always draws something.
 
 use std::cmp::Ordering;
 
 use glam::DVec3;
 
+use crate::face_split::split_face;
 use crate::plane::{check_finite, plane_axes, robust_safe, Plane};
 use crate::polygon::{Builder, Corner, ExactPolygon};
-use crate::triangulate::triangulate;
+use crate::triangulate::Tri;
 use crate::KernelError;
 
 type P3 = [f64; 3];
@@ -111,33 +113,64 @@ fn sub(a: P3, b: P3) -> P3 {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
-/// Converts one input face (see the module docs).
-pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, KernelError> {
+/// An input face's corners, cleaned: non-finite corners refused, consecutive repeats
+/// (and a last corner equal to the first) dropped. `given[i]` is the index of `pts[i]`
+/// among the corners as given.
+struct Outline {
+    pts: Vec<P3>,
+    given: Vec<usize>,
+}
+
+fn outline(corners: &[DVec3]) -> Result<Outline, KernelError> {
     if corners.is_empty() {
         return Err(KernelError::Empty);
     }
-    let mut g: Vec<P3> = Vec::with_capacity(corners.len());
-    for c in corners {
+    let mut o = Outline {
+        pts: Vec::with_capacity(corners.len()),
+        given: Vec::with_capacity(corners.len()),
+    };
+    for (i, c) in corners.iter().enumerate() {
         let p = c.to_array();
         check_finite(p)?;
-        if g.last() != Some(&p) {
-            g.push(p);
+        if o.pts.last() != Some(&p) {
+            o.pts.push(p);
+            o.given.push(i);
         }
     }
-    while g.len() > 1 && g.first() == g.last() {
-        g.pop();
+    while o.pts.len() > 1 && o.pts.first() == o.pts.last() {
+        o.pts.pop();
+        o.given.pop();
     }
+    Ok(o)
+}
+
+/// What a cleaned outline is drawn as.
+// A `Shape` lives on the stack for one call; boxing the polygon would cost an allocation
+// per face on the path every triangle takes.
+#[allow(clippy::large_enum_variant)]
+enum Shape {
+    /// Its corners all lie on one line (or there are fewer than three): nothing.
+    Degenerate,
+    /// One convex polygon (exactly planar, strictly convex once collinear corners are
+    /// dropped).
+    Convex(ExactPolygon),
+    /// Triangles of [`split_face`], each with its exact plane (those of zero area
+    /// dropped).
+    Triangles(Vec<(Tri, Plane)>),
+}
+
+fn shape(g: &[P3]) -> Shape {
     if g.len() < 3 {
-        return Ok(Vec::new());
+        return Shape::Degenerate;
     }
     if g.len() == 3 {
         // A triangle of three distinct corners is exactly planar, and when its normal is
         // not zero it is strictly convex in the projection along any axis where the
         // normal's component is not zero: no check needed.
-        return Ok(match Plane::through(g[0], g[1], g[2]) {
-            Ok(support) => vec![convex_polygon(&g, support, &[true; 3])],
-            Err(_) => Vec::new(),
-        });
+        return match Plane::through(g[0], g[1], g[2]) {
+            Ok(support) => Shape::Convex(convex_polygon(g, support, &[true; 3])),
+            Err(_) => Shape::Degenerate,
+        };
     }
     let n = g.len();
     let p0 = g[0];
@@ -158,57 +191,82 @@ pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, Kern
     order.sort_by(|&a, &b| score(b).total_cmp(&score(a)));
     for &best in order.iter().take(3) {
         if let Ok(support) = Plane::through(p0, g[best + 1], g[best + 2]) {
-            if let Some(poly) = try_convex(&g, &support) {
-                return Ok(vec![poly]);
+            if let Some(poly) = try_convex(g, &support) {
+                return Shape::Convex(poly);
             }
             break;
         }
     }
-    if g.len() == 4 {
-        if let Some(polys) = quad_triangles(&g, newell) {
-            return Ok(polys);
-        }
+    let tris: Vec<(Tri, Plane)> = split_face(g, newell, orient_k)
+        .into_iter()
+        .filter_map(|t| {
+            let [a, b, c] = t.idx.map(|i| g[i]);
+            Some((t, Plane::through(a, b, c).ok()?))
+        })
+        .collect();
+    if tris.is_empty() {
+        Shape::Degenerate
+    } else {
+        Shape::Triangles(tris)
     }
-    triangulated(&g, newell)
 }
 
-/// A quad that is not one convex planar polygon, as two triangles along a diagonal whose
-/// triangles both turn the way of the (approximate) Newell normal in the projection along
-/// its dominant axis, decided exactly: the diagonal `p₀p₂` first, then `p₁p₃`. `None`
-/// when neither works (a self-intersecting or degenerate outline), for the general path.
-fn quad_triangles(g: &[P3], newell: P3) -> Option<Vec<ExactPolygon>> {
-    let m = newell.map(f64::abs);
-    let k = if m[0] >= m[1] && m[0] >= m[2] {
-        0
-    } else if m[1] >= m[2] {
-        1
-    } else {
-        2
-    };
-    let want = if newell[k] > 0.0 {
-        Ordering::Greater
-    } else if newell[k] < 0.0 {
-        Ordering::Less
-    } else {
-        return None;
-    };
-    for (a, b, c, d) in [(0, 1, 2, 3), (1, 2, 3, 0)] {
-        if orient_k(g[a], g[b], g[c], k) == want && orient_k(g[a], g[c], g[d], k) == want {
-            let (Ok(s1), Ok(s2)) = (
-                Plane::through(g[a], g[b], g[c]),
-                Plane::through(g[a], g[c], g[d]),
-            ) else {
-                return None;
-            };
-            // Edges: a→b, b→c original, c→a the diagonal; a→c the diagonal, c→d, d→a
-            // original.
-            return Some(vec![
-                convex_polygon(&[g[a], g[b], g[c]], s1, &[true, true, false]),
-                convex_polygon(&[g[a], g[c], g[d]], s2, &[false, true, true]),
-            ]);
+/// Converts one input face (see the module docs).
+pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, KernelError> {
+    let o = outline(corners)?;
+    Ok(match shape(&o.pts) {
+        Shape::Degenerate => Vec::new(),
+        Shape::Convex(poly) => vec![poly],
+        Shape::Triangles(tris) => tris
+            .into_iter()
+            .map(|(t, support)| convex_polygon(&t.idx.map(|i| o.pts[i]), support, &t.original))
+            .collect(),
+    })
+}
+
+/// One triangle of an input face, as [`face_triangles`] gives it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct FaceTriangle {
+    /// Indices into the face's corners as given, in the face's winding.
+    pub corners: [usize; 3],
+    /// Per edge `k` (from corner `k` to corner `k + 1`): whether it is an edge of the
+    /// face's outline (not a diagonal).
+    pub outline: [bool; 3],
+}
+
+/// The triangles that cover what the exact kernel draws of the face with these corners,
+/// for image-space renderers: the face's one convex polygon fanned from its first
+/// corner, or the triangles of the rule in [`crate::face_split`] (a coordinate projection
+/// in which the outline is simple, else the fan from corner 0). Triangles of exactly zero
+/// area are left out; a face with area always has at least one.
+///
+/// # Errors
+///
+/// [`KernelError::Empty`] for no corners, [`KernelError::NonFinite`] for a corner that
+/// is not finite.
+pub fn face_triangles(corners: &[DVec3]) -> Result<Vec<FaceTriangle>, KernelError> {
+    let o = outline(corners)?;
+    let given = |t: [usize; 3]| t.map(|i| o.given[i]);
+    Ok(match shape(&o.pts) {
+        Shape::Degenerate => Vec::new(),
+        Shape::Convex(_) => {
+            let n = o.pts.len();
+            (1..n - 1)
+                .filter(|&i| Plane::through(o.pts[0], o.pts[i], o.pts[i + 1]).is_ok())
+                .map(|i| FaceTriangle {
+                    corners: given([0, i, i + 1]),
+                    outline: [i == 1, true, i + 1 == n - 1],
+                })
+                .collect()
         }
-    }
-    None
+        Shape::Triangles(tris) => tris
+            .into_iter()
+            .map(|(t, _)| FaceTriangle {
+                corners: given(t.idx),
+                outline: t.original,
+            })
+            .collect(),
+    })
 }
 
 /// The single-polygon path: exact planarity check, collinear removal, convexity check.
@@ -225,37 +283,4 @@ fn try_convex(g: &[P3], support: &Plane) -> Option<ExactPolygon> {
     }
     let original = vec![true; pts.len()];
     Some(convex_polygon(&pts, support.clone(), &original))
-}
-
-/// The triangulated path for non-convex or non-planar faces.
-fn triangulated(g: &[P3], newell: P3) -> Result<Vec<ExactPolygon>, KernelError> {
-    let m = newell.map(f64::abs);
-    let k = if m[0] >= m[1] && m[0] >= m[2] {
-        0
-    } else if m[1] >= m[2] {
-        1
-    } else {
-        2
-    };
-    let (u, v) = plane_axes(k);
-    let pts2: Vec<[f64; 2]> = g.iter().map(|p| [p[u], p[v]]).collect();
-    let Some(tris) = triangulate(&pts2) else {
-        return Ok(Vec::new());
-    };
-    let mut out = Vec::with_capacity(tris.len());
-    for t in tris {
-        let (idx, orig) = if newell[k] > 0.0 {
-            (t.idx, t.original)
-        } else {
-            (
-                [t.idx[0], t.idx[2], t.idx[1]],
-                [t.original[2], t.original[1], t.original[0]],
-            )
-        };
-        let pts = idx.map(|i| g[i]);
-        if let Ok(support) = Plane::through(pts[0], pts[1], pts[2]) {
-            out.push(convex_polygon(&pts, support, &orig));
-        }
-    }
-    Ok(out)
 }

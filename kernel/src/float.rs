@@ -4,10 +4,10 @@
 use glam::DVec3;
 
 use crate::error::KernelError;
+use crate::face_split::split_face;
 use crate::orientation::Orientation;
 use crate::side::{PolygonSide, Side};
 use crate::traits::Kernel;
-use crate::triangulate::triangulate;
 
 /// Default epsilon relative to the scene extent.
 pub const DEFAULT_RELATIVE_EPSILON: f64 = 1e-9;
@@ -135,6 +135,14 @@ impl FloatKernel {
     }
 }
 
+/// The orientation of `a, b, c` projected along axis `k`, in f64 (the baseline's
+/// counterpart of the exact kernel's test).
+fn orient_float(a: [f64; 3], b: [f64; 3], c: [f64; 3], k: usize) -> std::cmp::Ordering {
+    let (u, v) = ((k + 1) % 3, (k + 2) % 3);
+    let o = (b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]);
+    o.partial_cmp(&0.0).unwrap_or(std::cmp::Ordering::Equal)
+}
+
 fn newell(pts: &[DVec3]) -> DVec3 {
     let p0 = pts[0];
     (1..pts.len() - 1)
@@ -172,32 +180,23 @@ impl Kernel for FloatKernel {
             return Ok(Vec::new());
         }
         let normal = newell(&pts);
-        if normal.length() <= self.eps * self.eps || !normal.is_finite() {
+        if !normal.is_finite() {
             return Ok(Vec::new());
         }
-        if self.is_convex(&pts, normal) {
+        // A face whose lobes cancel (a balanced bow tie) has no Newell normal but has
+        // area: only the convex path needs the normal.
+        if normal.length() > self.eps * self.eps && self.is_convex(&pts, normal) {
             let original = vec![true; pts.len()];
             return Ok(self.polygon(&pts, &original, normal).into_iter().collect());
         }
-        let k = normal.abs().max_position();
-        let (u, v) = ((k + 1) % 3, (k + 2) % 3);
-        let pts2: Vec<[f64; 2]> = pts.iter().map(|p| [p[u], p[v]]).collect();
-        let Some(tris) = triangulate(&pts2) else {
-            return Ok(Vec::new());
-        };
+        let g: Vec<[f64; 3]> = pts.iter().map(|p| p.to_array()).collect();
         let mut out = Vec::new();
-        for t in tris {
-            let (idx, orig) = if normal[k] > 0.0 {
-                (t.idx, t.original)
-            } else {
-                (
-                    [t.idx[0], t.idx[2], t.idx[1]],
-                    [t.original[2], t.original[1], t.original[0]],
-                )
-            };
-            let tp = idx.map(|i| pts[i]);
+        for t in split_face(&g, normal.to_array(), orient_float) {
+            let tp = t.idx.map(|i| pts[i]);
             let n = (tp[1] - tp[0]).cross(tp[2] - tp[0]);
-            out.extend(self.polygon(&tp, &orig, n));
+            if n.length() > self.eps * self.eps {
+                out.extend(self.polygon(&tp, &t.original, n));
+            }
         }
         Ok(out)
     }

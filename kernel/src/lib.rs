@@ -43,6 +43,7 @@ pub mod dyadic;
 mod error;
 mod exact;
 mod face;
+mod face_split;
 mod float;
 mod interval;
 mod orientation;
@@ -55,6 +56,7 @@ mod triangulate;
 
 pub use error::KernelError;
 pub use exact::ExactKernel;
+pub use face::{face_triangles, FaceTriangle};
 pub use float::{FloatKernel, FloatPlane, FloatPolygon, DEFAULT_RELATIVE_EPSILON};
 pub use orientation::Orientation;
 pub use plane::{Plane, PlaneDef};

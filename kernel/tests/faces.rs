@@ -224,19 +224,37 @@ fn off_plane_noise_is_triangulated_so_neighbours_share_corners_exactly() {
 }
 
 #[test]
-fn self_intersecting_bow_tie_is_dropped_without_panic() {
+fn self_intersecting_faces_are_fanned_from_their_first_corner() {
+    // A bow tie crosses itself seen along every axis: no projection is simple, so it is
+    // drawn as OpenGL draws it, the triangles (p0, p1, p2) and (p0, p2, p3), each with its
+    // own plane and each keeping the face's winding.
     let k = kernel();
     let bow = [[0, 0, 0], [100, 100, 0], [100, 0, 0], [0, 100, 0]];
-    assert!(face(&k, &bow).is_empty());
+    let polys = face(&k, &bow);
+    check_all(&polys);
+    assert_eq!(polys.len(), 2);
+    let areas: Vec<BigRational> = polys
+        .iter()
+        .map(|p| projected_area2(p, 2) / (q(STEP) * q(STEP)))
+        .collect();
+    assert_eq!(areas[0], q(-10000.0));
+    assert_eq!(areas[1], q(10000.0));
+    // The outline edges p0p1, p1p2 and p2p3, p3p0 are original; the diagonal is not.
+    assert_eq!(originals(&polys), 4);
     let f = FloatKernel::new(DVec3::splat(-1.0), DVec3::splat(1.0)).unwrap();
     let bow_w: Vec<DVec3> = bow
         .iter()
         .map(|p| DVec3::new(p[0] as f64, p[1] as f64, 0.0) * 1e-3)
         .collect();
-    assert!(f.face_polygons(&bow_w).unwrap().is_empty());
-    // An unbalanced self-intersection (a figure with a crossing) is dropped too.
+    assert_eq!(f.face_polygons(&bow_w).unwrap().len(), 2);
+    // An unbalanced self-intersection (a figure with a crossing) is fanned too.
     let fig = [[0, 0, 0], [300, 300, 0], [300, 0, 0], [0, 100, 0]];
-    assert!(face(&k, &fig).is_empty());
+    let polys = face(&k, &fig);
+    check_all(&polys);
+    assert_eq!(polys.len(), 2);
+    // Only a face whose corners all lie on one line draws nothing.
+    let line = [[0, 0, 0], [100, 100, 100], [300, 300, 300], [200, 200, 200]];
+    assert!(face(&k, &line).is_empty());
 }
 
 #[test]

@@ -17,8 +17,10 @@
 //! * back faces (the eye strictly behind the face's plane) are dropped only when
 //!   [`RenderOptions::cull_back_faces`] is set.
 //!
-//! Faces with more than three corners are triangulated (see [`triangulate`]'s notes:
-//! fan when convex, ear clipping otherwise). Colours are 8-bit channels
+//! Faces with more than three corners are triangulated by the kernel's rule, written
+//! apart (see [`triangulate`]'s notes: in a coordinate projection where the outline is
+//! simple, fanned when convex there and ear-clipped otherwise; fanned from the first
+//! corner when no projection is simple). Colours are 8-bit channels
 //! `round(c · 255)` of `shade_face` of limn-scene at the face's centroid for flat faces
 //! (fog included there), and per pixel for faces the scene shades smoothly (Gouraud or
 //! Phong, see `Shading::of_face`): the world point at the pixel centre is shaded, so
