@@ -115,31 +115,37 @@ fn sub(a: P3, b: P3) -> P3 {
 
 /// An input face's corners, cleaned: non-finite corners refused, consecutive repeats
 /// (and a last corner equal to the first) dropped. `given[i]` is the index of `pts[i]`
-/// among the corners as given.
+/// among the corners as given, when kept.
 struct Outline {
     pts: Vec<P3>,
     given: Vec<usize>,
 }
 
-fn outline(corners: &[DVec3]) -> Result<Outline, KernelError> {
+/// `given` is kept only when `keep_given` (the conversion to polygons has no use for it
+/// and does not pay for it).
+fn outline(corners: &[DVec3], keep_given: bool) -> Result<Outline, KernelError> {
     if corners.is_empty() {
         return Err(KernelError::Empty);
     }
     let mut o = Outline {
         pts: Vec::with_capacity(corners.len()),
-        given: Vec::with_capacity(corners.len()),
+        given: Vec::with_capacity(if keep_given { corners.len() } else { 0 }),
     };
     for (i, c) in corners.iter().enumerate() {
         let p = c.to_array();
         check_finite(p)?;
         if o.pts.last() != Some(&p) {
             o.pts.push(p);
-            o.given.push(i);
+            if keep_given {
+                o.given.push(i);
+            }
         }
     }
     while o.pts.len() > 1 && o.pts.first() == o.pts.last() {
         o.pts.pop();
-        o.given.pop();
+        if keep_given {
+            o.given.pop();
+        }
     }
     Ok(o)
 }
@@ -154,9 +160,9 @@ enum Shape {
     /// One convex polygon (exactly planar, strictly convex once collinear corners are
     /// dropped).
     Convex(ExactPolygon),
-    /// Triangles of [`split_face`], each with its exact plane (those of zero area
-    /// dropped).
-    Triangles(Vec<(Tri, Plane)>),
+    /// The triangles of [`split_face`] (those of exactly zero area, which have no plane,
+    /// are left out by the callers).
+    Triangles(Vec<Tri>),
 }
 
 fn shape(g: &[P3]) -> Shape {
@@ -197,30 +203,32 @@ fn shape(g: &[P3]) -> Shape {
             break;
         }
     }
-    let tris: Vec<(Tri, Plane)> = split_face(g, newell, orient_k)
-        .into_iter()
-        .filter_map(|t| {
-            let [a, b, c] = t.idx.map(|i| g[i]);
-            Some((t, Plane::through(a, b, c).ok()?))
-        })
-        .collect();
-    if tris.is_empty() {
-        Shape::Degenerate
-    } else {
-        Shape::Triangles(tris)
-    }
+    Shape::Triangles(split_face(g, newell, orient_k))
 }
 
 /// Converts one input face (see the module docs).
 pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, KernelError> {
-    let o = outline(corners)?;
+    let o = outline(corners, false)?;
+    if let [a, b, c] = o.pts[..] {
+        // The common case, without the detour through `Shape`.
+        return Ok(match Plane::through(a, b, c) {
+            Ok(support) => vec![convex_polygon(&o.pts, support, &[true; 3])],
+            Err(_) => Vec::new(),
+        });
+    }
     Ok(match shape(&o.pts) {
         Shape::Degenerate => Vec::new(),
         Shape::Convex(poly) => vec![poly],
-        Shape::Triangles(tris) => tris
-            .into_iter()
-            .map(|(t, support)| convex_polygon(&t.idx.map(|i| o.pts[i]), support, &t.original))
-            .collect(),
+        Shape::Triangles(tris) => {
+            let mut out = Vec::with_capacity(tris.len());
+            for t in tris {
+                let [a, b, c] = t.idx.map(|i| o.pts[i]);
+                if let Ok(support) = Plane::through(a, b, c) {
+                    out.push(convex_polygon(&[a, b, c], support, &t.original));
+                }
+            }
+            out
+        }
     })
 }
 
@@ -245,7 +253,7 @@ pub struct FaceTriangle {
 /// [`KernelError::Empty`] for no corners, [`KernelError::NonFinite`] for a corner that
 /// is not finite.
 pub fn face_triangles(corners: &[DVec3]) -> Result<Vec<FaceTriangle>, KernelError> {
-    let o = outline(corners)?;
+    let o = outline(corners, true)?;
     let given = |t: [usize; 3]| t.map(|i| o.given[i]);
     Ok(match shape(&o.pts) {
         Shape::Degenerate => Vec::new(),
@@ -261,7 +269,11 @@ pub fn face_triangles(corners: &[DVec3]) -> Result<Vec<FaceTriangle>, KernelErro
         }
         Shape::Triangles(tris) => tris
             .into_iter()
-            .map(|(t, _)| FaceTriangle {
+            .filter(|t| {
+                let [a, b, c] = t.idx.map(|i| o.pts[i]);
+                Plane::through(a, b, c).is_ok()
+            })
+            .map(|t| FaceTriangle {
                 corners: given(t.idx),
                 outline: t.original,
             })
