@@ -70,9 +70,15 @@ pub fn losses(
             ps.skipped
         ));
     }
-    if ordered.fragments.is_empty() {
+    let marks_painted = ps.lines + ps.markers + ps.labels > 0;
+    if ordered.fragments.is_empty() && !(marks_painted && scene.faces.is_empty()) {
+        let what = if marks_painted {
+            "no face is drawn"
+        } else {
+            "the picture is empty"
+        };
         out.push(format!(
-            "the picture is empty: of {} faces, {} are back faces or edge-on, {} degenerate, \
+            "{what}: of {} faces, {} are back faces or edge-on, {} degenerate, \
              {} outside the view or behind the near plane",
             scene.faces.len(),
             s.faces_culled,

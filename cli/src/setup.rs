@@ -46,8 +46,14 @@ pub fn load(path: &Path, view: &ViewArgs) -> Result<Loaded> {
             eprintln!("limn: warning: {w}");
         }
     }
-    if loaded.scene.faces.is_empty() {
-        bail!("{}: the scene has no faces", path.display());
+    let s = &loaded.scene;
+    if s.faces.is_empty() && s.lines.is_empty() && s.points.is_empty() && s.labels.is_empty() {
+        let what = if s.vertices.is_empty() {
+            "no faces, lines, points or labels"
+        } else {
+            "vertices but no faces, lines, points or labels"
+        };
+        bail!("{}: the scene has {what}", path.display());
     }
     Ok(loaded)
 }

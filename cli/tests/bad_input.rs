@@ -396,8 +396,12 @@ fn output_into_a_missing_folder() {
 #[test]
 fn scene_without_faces() {
     let d = tempdir();
-    put(d.path(), "a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
-    fails(d.path(), "a.obj", &["a.obj", "no faces"]);
+    put(d.path(), "a.obj", "# nothing\n");
+    fails(
+        d.path(),
+        "a.obj",
+        &["a.obj", "no faces, lines, points or labels"],
+    );
 }
 
 #[test]

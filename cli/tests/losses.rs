@@ -204,3 +204,25 @@ fn background_flag_overrides_the_scene_file() {
     assert_eq!(r.code, 2);
     assert!(r.stderr.contains("#rrggbb"), "{}", r.stderr);
 }
+
+#[test]
+fn a_point_cloud_is_drawn_as_points_and_said_so() {
+    let dir = tempdir();
+    put(dir.path(), "c.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");
+    let r = limn(
+        dir.path(),
+        &["render", "c.obj", "-o", "c.svg", "--stats", "s.json"],
+    );
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(
+        r.stderr.contains("4 vertices are drawn as points"),
+        "{}",
+        r.stderr
+    );
+    assert!(!r.stderr.contains("picture is empty"), "{}", r.stderr);
+    let s = stats(dir.path(), "s.json");
+    assert_eq!(s["lines"]["markers_shown"], 4, "{s}");
+    let w = s["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(w[0].as_str().unwrap().contains("drawn as points"), "{w:?}");
+}

@@ -1,8 +1,14 @@
 //! Wavefront MTL material libraries.
 //!
 //! Read: `newmtl`, `Kd`, `Ka`, `Ks` (RGB triples), `Ns`, `d` (opacity, also with
-//! `-halo`), `Tr` (= 1 − d), `illum` (0–10), `map_Kd` (the diffuse texture, see
-//! [`MapRef`]). Other texture maps (`map_Ks`, `bump`, …) are not drawn, with one warning
+//! `-halo`), `Tr` (transparency, = 1 − d; ignored when the material also has a `d`),
+//! `illum` (0–10), `map_Kd` (the diffuse texture, see [`MapRef`]).
+//!
+//! Opacity: `d` decides when a material has one, wherever it stands; otherwise `Tr` as
+//! 1 − Tr. A material left with opacity 0 would draw nothing, and that is never what a
+//! file means: writers disagree on `Tr` (MeshLab writes `Tr 1.000000` for opaque
+//! materials, the MTL definition reads it as fully transparent), so such a material is
+//! drawn opaque, with a warning naming the file and the line that made it transparent. Other texture maps (`map_Ks`, `bump`, …) are not drawn, with one warning
 //! per library naming the first; other statements (`Ke`, `Ni`, PBR extensions) are
 //! ignored. A material starts from
 //! [`Material::default_grey`] and the statements override its fields. Colours outside
@@ -125,6 +131,9 @@ pub(crate) fn parse(
 ) -> Result<(), LoadError> {
     let mut lines = Lines::new(bytes, path, true);
     let mut current: Option<Material> = None;
+    // The current material's `d` and `Tr` (line, value): the opacity is decided from
+    // both when the material ends.
+    let mut opacity = Opacity::default();
     // The first texture statement, reported once per library.
     let mut textures: Option<(u64, String)> = None;
     while let Some(next) = lines.next_line() {
@@ -133,9 +142,11 @@ pub(crate) fn parse(
         let mut toks = tokens(line);
         let Some(key) = toks.next() else { continue };
         if key == b"newmtl" {
-            if let Some(m) = current.take() {
+            if let Some(mut m) = current.take() {
+                opacity.decide(&mut m, path, warnings);
                 lib.insert(m);
             }
+            opacity = Opacity::default();
             let name = lossy(toks.remainder());
             if name.is_empty() {
                 return Err(LoadError::syntax(path, n, "newmtl without a name"));
@@ -198,11 +209,11 @@ pub(crate) fn parse(
                     t = toks.next();
                 }
                 let v = finite(path, n, number(path, n, t, "d value")?)?;
-                m.opacity = v.clamp(0.0, 1.0);
+                opacity.d = Some((n, v));
             }
             b"Tr" => {
                 let v = finite(path, n, number(path, n, toks.next(), "Tr value")?)?;
-                m.opacity = (1.0 - v).clamp(0.0, 1.0);
+                opacity.tr = Some((n, v));
             }
             b"illum" => {
                 let v = number(path, n, toks.next(), "illum model")?;
@@ -225,7 +236,8 @@ pub(crate) fn parse(
             _ => {}
         }
     }
-    if let Some(m) = current.take() {
+    if let Some(mut m) = current.take() {
+        opacity.decide(&mut m, path, warnings);
         lib.insert(m);
     }
     if let Some((line, key)) = textures {
@@ -236,6 +248,41 @@ pub(crate) fn parse(
         ));
     }
     Ok(())
+}
+
+/// A material's `d` and `Tr` statements, each as (line, value), the last of each kind.
+#[derive(Debug, Default)]
+struct Opacity {
+    d: Option<(u64, f64)>,
+    tr: Option<(u64, f64)>,
+}
+
+impl Opacity {
+    /// Sets `m.opacity`: from `d` when given, else 1 − `Tr`, clamped to [0, 1]; an
+    /// opacity of 0 (nothing would be drawn) becomes 1, with a warning at the line that
+    /// gave it.
+    fn decide(&self, m: &mut Material, path: &Path, warnings: &mut Vec<String>) {
+        let (line, opacity, said) = match (self.d, self.tr) {
+            (Some((n, d)), _) => (n, d.clamp(0.0, 1.0), format!("d {d}")),
+            (None, Some((n, tr))) => (n, (1.0 - tr).clamp(0.0, 1.0), format!("Tr {tr}")),
+            (None, None) => return,
+        };
+        if opacity > 0.0 {
+            m.opacity = opacity;
+            return;
+        }
+        m.opacity = 1.0;
+        let why = if self.d.is_some() {
+            ""
+        } else {
+            "; some writers mean Tr as opacity"
+        };
+        warnings.push(format!(
+            "{}:{line}: material {:?} would draw nothing ({said}{why}); drawn opaque",
+            path.display(),
+            m.name
+        ));
+    }
 }
 
 /// Reads the options and file name of a `map_Kd` statement (`rest` follows the key).
@@ -435,6 +482,36 @@ mod tests {
         // The texture map is the one thing not drawn: one warning at its line.
         assert_eq!(w.len(), 1, "{w:?}");
         assert!(w[0].starts_with("a.mtl:12: texture maps (map_Ks"), "{w:?}");
+    }
+
+    #[test]
+    fn d_decides_over_tr_and_a_fully_transparent_material_is_drawn_opaque() {
+        // MeshLab's `Tr 1.000000` for an opaque material; `d` beside `Tr` in either
+        // order; `Tr` alone as 1 − Tr; `d 0`.
+        let src = b"newmtl meshlab\nKd 1 1 1\nTr 1.000000\nillum 2\n\
+                    newmtl both\nTr 1\nd 0.5\nnewmtl both2\nd 1\nTr 0.75\n\
+                    newmtl tr\nTr 0.25\nnewmtl gone\nd 0\nTr 0\nnewmtl plain\n";
+        let mut lib = Library::default();
+        let mut w = Vec::new();
+        parse(src, Path::new("a.mtl"), &mut lib, &mut w).unwrap();
+        let op = |n: &str| lib.get(n).unwrap().opacity;
+        assert_eq!(op("meshlab"), 1.0);
+        assert_eq!(op("both"), 0.5);
+        assert_eq!(op("both2"), 1.0);
+        assert_eq!(op("tr"), 0.75);
+        assert_eq!(op("gone"), 1.0);
+        assert_eq!(op("plain"), 1.0);
+        // One warning per material drawn opaque, at the line that made it transparent.
+        assert_eq!(w.len(), 2, "{w:?}");
+        assert!(
+            w[0].starts_with("a.mtl:3: material \"meshlab\" would draw nothing (Tr 1;"),
+            "{w:?}"
+        );
+        assert!(w[0].ends_with("drawn opaque"), "{w:?}");
+        assert!(
+            w[1].starts_with("a.mtl:14: material \"gone\" would draw nothing (d 0)"),
+            "{w:?}"
+        );
     }
 
     #[test]

@@ -10,9 +10,11 @@
 //! Statements read: `v` (3 to 7 numbers: x y z, then an optional w or colour, ignored),
 //! `vn`, `f`/`fo` (`v`, `v/vt`, `v//vn`, `v/vt/vn`), `l` (a polyline of at least two
 //! vertices, `v` or `v/vt`), `p` (one point marker per vertex), `o` and `g` (each starts
-//! an object; the same name again continues it), `usemtl`, `mtllib`. Lines and points
+//! an object; the same name again continues it), `usemtl` (one without a name, as Rhino
+//! writes, selects the default grey, with a warning), `mtllib`. Lines and points
 //! take the current material's `Kd` and `d` as their colour (black without a `usemtl`),
-//! width 1 px and 4 px dots. Texture coordinates (`vt u [v [w]]`, stored as
+//! width 1 px and 4 px dots. A file of vertices alone (a point cloud) draws each vertex
+//! as a black dot, with a warning. Texture coordinates (`vt u [v [w]]`, stored as
 //! `(u, 1 − v)`: limn's `t` runs down the image) are used by faces whose every corner
 //! names one and whose material has a `map_Kd`; the image is read then, once per file
 //! (see [`crate::image`]). Smoothing groups and the free-form geometry statements are
@@ -97,6 +99,8 @@ struct Obj<'a> {
     material_name: Option<Vec<u8>>,
     /// Line of the last `usemtl`.
     material_line: u64,
+    /// The first `usemtl` without a name (line) and how many there are.
+    unnamed: Option<(u64, u64)>,
     material: Option<u32>,
     /// Texture images read so far, by resolved path (each is read once).
     images: HashMap<PathBuf, Arc<Texture>>,
@@ -133,6 +137,7 @@ fn parse_with(
         undefined: HashMap::default(),
         material_name: None,
         material_line: 0,
+        unnamed: None,
         material: None,
         images: HashMap::default(),
         textured: HashMap::default(),
@@ -142,12 +147,39 @@ fn parse_with(
     // A library's error comes first: it was named above any line the OBJ failed at.
     obj.libraries.wait(&mut obj.scene.warnings)?;
     read?;
+    if let Some((line, count)) = obj.unnamed {
+        let more = match count {
+            1 => String::new(),
+            2 => " (and 1 more)".to_string(),
+            c => format!(" (and {} more)", c - 1),
+        };
+        obj.scene.warnings.push(format!(
+            "{}:{line}: usemtl without a name{more}; its faces get the default grey",
+            path.display()
+        ));
+    }
     obj.scene.materials.shrink_to_fit();
-    let s = &obj.scene;
+    let s = &mut obj.scene;
     if s.faces.is_empty() && s.lines.is_empty() && s.points.is_empty() {
-        obj.scene
-            .warnings
-            .push(format!("{}: no faces", path.display()));
+        if s.vertices.is_empty() {
+            s.warnings.push(format!("{}: no faces", path.display()));
+        } else {
+            // A point cloud: every vertex a dot.
+            let object = s.add_object(&obj.object_name);
+            s.points.reserve(s.vertices.len());
+            for i in 0..s.vertices.len() {
+                let at = s.vertices[i];
+                s.points.push(PointMark {
+                    object,
+                    ..PointMark::new(at)
+                });
+            }
+            s.warnings.push(format!(
+                "{}: no faces, lines or points; its {} vertices are drawn as points",
+                path.display(),
+                s.vertices.len()
+            ));
+        }
     }
     Ok(obj.scene)
 }
@@ -214,7 +246,8 @@ impl Obj<'_> {
             b"usemtl" => {
                 let name = toks.remainder();
                 if name.is_empty() {
-                    return Err(LoadError::syntax(self.path, n, "usemtl without a name"));
+                    // Rhino writes these: the default material, as without a usemtl.
+                    self.unnamed.get_or_insert((n, 0)).1 += 1;
                 }
                 // The same name again keeps the material found (no lookup, no copy).
                 if self.material_name.as_deref() != Some(name) {
@@ -715,6 +748,28 @@ mod tests {
         assert_eq!(used, [0, 1, 2, 0, 3, 2, 3]);
         assert_eq!(s.warnings.len(), 2, "{:?}", s.warnings);
         assert!(s.warnings[1].contains("\"q\u{fffd}\""), "{:?}", s.warnings);
+    }
+
+    #[test]
+    fn a_usemtl_without_a_name_is_the_default_grey_with_one_warning() {
+        let obj = format!(
+            "mtllib a.mtl\n{TRI}usemtl a\nf 1 2 3\nusemtl\nf 1 2 3\nusemtl a\nusemtl \nf 1 2 3\n"
+        );
+        let s = both_ways(&[("a.mtl", A)], &obj).unwrap();
+        let used: Vec<&str> = s
+            .faces
+            .iter()
+            .map(|f| s.materials[f.material as usize].name.as_str())
+            .collect();
+        assert_eq!(used, ["a", "default", "default"]);
+        let w: Vec<&String> = s.warnings.iter().filter(|w| w.contains("usemtl")).collect();
+        assert_eq!(w.len(), 1, "{:?}", s.warnings);
+        assert!(
+            w[0].ends_with(
+                "m.obj:7: usemtl without a name (and 1 more); its faces get the default grey"
+            ),
+            "{w:?}"
+        );
     }
 
     #[test]

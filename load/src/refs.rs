@@ -26,13 +26,17 @@ pub(crate) fn folder_of(file: &Path) -> PathBuf {
 /// `at.path`. Refused, unless `opts.allow_outside`, when it is absolute, when `..` leads
 /// above the folder, or when the file exists and its real path (symbolic links resolved)
 /// lies outside the folder's real path. The returned path need not exist.
+///
+/// Backslashes are folder separators (Windows exporters write `.\tex.jpg` and
+/// `maps\tex.jpg`) unless a file of that very name exists; a reference starting with
+/// a drive letter (`C:\…`, `C:/…`) is absolute. The folder rule applies to the path
+/// so read.
 pub(crate) fn resolve(
     reference: &str,
     at: &Location,
     opts: &LoadOptions,
 ) -> Result<PathBuf, LoadError> {
     let folder = folder_of(&at.path);
-    let rel = Path::new(reference);
     let refuse = || LoadError::OutsideFolder {
         at: at.clone(),
         reference: reference.to_string(),
@@ -43,8 +47,18 @@ pub(crate) fn resolve(
             message: "empty file reference".into(),
         });
     }
+    let slashed;
+    let rel = if reference.contains('\\') && !folder.join(reference).exists() {
+        slashed = reference.replace('\\', "/");
+        Path::new(&slashed)
+    } else {
+        Path::new(reference)
+    };
     if opts.allow_outside {
         return Ok(folder.join(rel));
+    }
+    if has_drive_letter(reference) {
+        return Err(refuse());
     }
     let mut depth: i64 = 0;
     for c in rel.components() {
@@ -69,6 +83,12 @@ pub(crate) fn resolve(
     Ok(full)
 }
 
+/// Whether `reference` starts with a Windows drive letter and a separator (`C:\`,
+/// `c:/`): absolute on Windows, whatever it means elsewhere.
+fn has_drive_letter(reference: &str) -> bool {
+    matches!(reference.as_bytes(), [d, b':', b'\\' | b'/', ..] if d.is_ascii_alphabetic())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -89,9 +109,44 @@ mod tests {
             resolve("sub/../x.mtl", &at(), &o).unwrap(),
             Path::new("dir/sub/../x.mtl")
         );
+        for r in [
+            "..\\x.mtl",
+            "a\\..\\..\\x.mtl",
+            "C:\\x.mtl",
+            "c:/x.mtl",
+            "\\\\server\\x.mtl",
+        ] {
+            let e = resolve(r, &at(), &o).unwrap_err();
+            assert!(matches!(e, LoadError::OutsideFolder { .. }), "{r}");
+        }
         let allow = LoadOptions {
             allow_outside: true,
         };
         assert!(resolve("../x.mtl", &at(), &allow).is_ok());
+    }
+
+    #[test]
+    fn backslashes_separate_folders_unless_a_file_has_that_name() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        std::fs::create_dir(d.join("maps")).unwrap();
+        std::fs::write(d.join("tex.jpg"), b"x").unwrap();
+        std::fs::write(d.join("maps").join("a.png"), b"x").unwrap();
+        std::fs::write(d.join("odd\\name.png"), b"x").unwrap();
+        let at = Location::line(&d.join("m.mtl"), 2);
+        let o = LoadOptions::default();
+        for (r, want) in [
+            (".\\tex.jpg", d.join("tex.jpg")),
+            ("maps\\a.png", d.join("maps").join("a.png")),
+            ("odd\\name.png", d.join("odd\\name.png")),
+        ] {
+            let got = resolve(r, &at, &o).unwrap();
+            assert!(got.is_file(), "{r}: {}", got.display());
+            assert_eq!(
+                got.canonicalize().unwrap(),
+                want.canonicalize().unwrap(),
+                "{r}"
+            );
+        }
     }
 }

@@ -265,7 +265,6 @@ fn obj_unknown_statement_and_bad_numbers() {
         ("v 0 0 0 1 2 3 4 5\n", 1),
         ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3.5\n", 4),
         ("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2/3/4 2 3\n", 4),
-        ("usemtl\n", 1),
     ] {
         let p = write(d.path(), "u.obj", src);
         let e = err(&p);

@@ -7,9 +7,14 @@
 //!
 //! Read: the `vertex` element's `x`, `y`, `z`, optional `nx`, `ny`, `nz` (vertex normals)
 //! and optional colour `red`, `green`, `blue`, `alpha` (or `diffuse_red` …); the `face`
-//! element's `vertex_indices` (or `vertex_index`) list and optional colour. Other
+//! element's `vertex_indices` (or `vertex_index`) list and optional colour; the
+//! `tristrips` element's `vertex_indices` lists (triangle strips, -1 starting a new
+//! strip, every second triangle turned to keep the strip's winding, as OpenGL draws
+//! them; the triangles of a repeated corner that join strips have no area and are not
+//! faces). A file with vertices and no faces is a point cloud: each vertex is drawn as
+//! a dot (4 px) in its colour (black without one), with a warning. Other
 //! elements and properties are read past and ignored. ASCII bodies hold one element
-//! per line. The `vertex` element must come before the `face` element.
+//! per line. The `vertex` element must come before the `face` and `tristrips` elements.
 //!
 //! Colours: integer channels are scaled by their type's largest value (255 for
 //! `uchar`), float channels are taken as they are; both are clamped to [0, 1]. A face
@@ -30,7 +35,7 @@ use self::header::{Element, Kind};
 use self::source::Source;
 use super::text::BitsMap;
 use super::{check_u32, stem, LoadError, Location};
-use limn_scene::{Face, Material, Scene};
+use limn_scene::{Face, Material, PointMark, Scene};
 
 const RED: &[&str] = &["red", "diffuse_red", "r"];
 const GREEN: &[&str] = &["green", "diffuse_green", "g"];
@@ -149,17 +154,18 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                     }
                 }
             }
-            "face" => {
+            "face" | "tristrips" => {
+                let strips = el.name == "tristrips";
                 if !seen_vertex {
                     return Err(LoadError::Unsupported {
                         at: at_header,
-                        what: "a face element before the vertex element".into(),
+                        what: format!("a {} element before the vertex element", el.name),
                     });
                 }
                 let Some(li) = el.find(&["vertex_indices", "vertex_index"]) else {
                     return Err(LoadError::Invalid {
                         at: at_header,
-                        message: "the face element has no vertex_indices list".into(),
+                        message: format!("the {} element has no vertex_indices list", el.name),
                     });
                 };
                 let Kind::List { item, .. } = el.properties[li].kind else {
@@ -175,20 +181,31 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                     });
                 }
                 let colour = ColourProps::find(el);
-                check_u32(el.count as usize, "faces", path)?;
-                scene.faces.reserve(el.count as usize);
+                if !strips {
+                    check_u32(el.count as usize, "faces", path)?;
+                    scene.faces.reserve(el.count as usize);
+                }
                 let nv = scene.vertices.len() as u64;
+                let mut faces = Faces {
+                    scene: &mut scene,
+                    materials: &mut materials,
+                    vertex_colours: &vertex_colours,
+                    averaged: &mut averaged,
+                    has_normals,
+                    object,
+                    path,
+                };
+                let mut corners = Vec::new();
                 for i in 0..el.count {
                     read_instance(&mut src, el, i, Some(li), &mut vals, &mut list, path)?;
-                    if list.len() < 3 {
-                        return Err(LoadError::TooFewVertices {
-                            at: src.at(path),
-                            count: list.len(),
-                        });
-                    }
-                    let mut vertices = Vec::with_capacity(list.len());
+                    let rgba = colour.map(|c| c.read(el, &vals));
+                    corners.clear();
                     for &v in &list {
-                        if !(v >= 0.0 && (v as u64) < nv) {
+                        if strips && v == -1.0 {
+                            corners.push(RESTART);
+                        } else if v >= 0.0 && (v as u64) < nv {
+                            corners.push(v as u32);
+                        } else {
                             return Err(LoadError::IndexOutOfRange {
                                 at: src.at(path),
                                 what: "vertex",
@@ -196,45 +213,21 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                                 count: nv,
                             });
                         }
-                        vertices.push(v as u32);
                     }
-                    let rgba = match colour {
-                        Some(c) => Some(c.read(el, &vals)),
-                        None if !vertex_colours.is_empty() => {
-                            let first = vertex_colours[vertices[0] as usize];
-                            averaged += vertices
-                                .iter()
-                                .any(|&v| vertex_colours[v as usize] != first)
-                                as usize;
-                            let mut sum = [0.0; 4];
-                            for &v in &vertices {
-                                for (s, c) in sum.iter_mut().zip(vertex_colours[v as usize]) {
-                                    *s += c;
-                                }
-                            }
-                            Some(sum.map(|s| s / vertices.len() as f64))
-                        }
-                        None => None,
-                    };
-                    let material = material_for(&mut scene, &mut materials, rgba);
-                    let normals = has_normals.then(|| vertices.clone());
-                    scene.faces.push(Face {
-                        vertices,
-                        normals,
-                        texcoords: None,
-                        material,
-                        object,
-                    });
+                    if strips {
+                        faces.strips(&corners, rgba)?;
+                        continue;
+                    }
+                    if corners.len() < 3 {
+                        return Err(LoadError::TooFewVertices {
+                            at: src.at(path),
+                            count: corners.len(),
+                        });
+                    }
+                    faces.push(corners.clone(), rgba)?;
                 }
             }
-            other => {
-                if other == "tristrips" && el.count > 0 {
-                    scene.warnings.push(format!(
-                        "{}:{}: triangle strips are not read",
-                        path.display(),
-                        el.line
-                    ));
-                }
+            _ => {
                 for i in 0..el.count {
                     read_instance(&mut src, el, i, None, &mut vals, &mut list, path)?;
                 }
@@ -256,9 +249,103 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
         ));
     }
     if scene.faces.is_empty() {
-        scene.warnings.push(format!("{}: no faces", path.display()));
+        points_for_vertices(&mut scene, &vertex_colours, object, path);
     }
     Ok(scene)
+}
+
+/// In a strip, the index -1 ends one strip and starts the next.
+const RESTART: u32 = u32::MAX;
+
+/// Adds faces to a PLY's scene with their material (the face's colour, else the mean of
+/// its corners' colours, else the default grey).
+struct Faces<'a> {
+    scene: &'a mut Scene,
+    materials: &'a mut BitsMap<[u64; 4], u32>,
+    vertex_colours: &'a [[f64; 4]],
+    /// Faces whose corners have different colours.
+    averaged: &'a mut usize,
+    has_normals: bool,
+    object: u32,
+    path: &'a Path,
+}
+
+impl Faces<'_> {
+    /// Adds the face with corners `vertices` and its own colour `rgba`, if any.
+    fn push(&mut self, vertices: Vec<u32>, rgba: Option<[f64; 4]>) -> Result<(), LoadError> {
+        let rgba = rgba.or_else(|| {
+            if self.vertex_colours.is_empty() {
+                return None;
+            }
+            let first = self.vertex_colours[vertices[0] as usize];
+            *self.averaged += vertices
+                .iter()
+                .any(|&v| self.vertex_colours[v as usize] != first)
+                as usize;
+            let mut sum = [0.0; 4];
+            for &v in &vertices {
+                for (s, c) in sum.iter_mut().zip(self.vertex_colours[v as usize]) {
+                    *s += c;
+                }
+            }
+            Some(sum.map(|s| s / vertices.len() as f64))
+        });
+        check_u32(self.scene.faces.len(), "faces", self.path)?;
+        let material = material_for(self.scene, self.materials, rgba);
+        let normals = self.has_normals.then(|| vertices.clone());
+        self.scene.faces.push(Face {
+            vertices,
+            normals,
+            texcoords: None,
+            material,
+            object: self.object,
+        });
+        Ok(())
+    }
+
+    /// Adds the triangles of the strips in `corners` (separated by [`RESTART`]): corners
+    /// k, k + 1, k + 2 of each strip, every second one turned (k + 1, k, k + 2) so that
+    /// all keep the strip's winding, as OpenGL draws `GL_TRIANGLE_STRIP`. Triangles with
+    /// a repeated corner are the strips' way of joining (no area) and are not faces.
+    fn strips(&mut self, corners: &[u32], rgba: Option<[f64; 4]>) -> Result<(), LoadError> {
+        for strip in corners.split(|&c| c == RESTART) {
+            for k in 0..strip.len().saturating_sub(2) {
+                let [a, b, c] = [strip[k], strip[k + 1], strip[k + 2]];
+                if a == b || b == c || a == c {
+                    continue;
+                }
+                let t = if k % 2 == 0 {
+                    vec![a, b, c]
+                } else {
+                    vec![b, a, c]
+                };
+                self.push(t, rgba)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A PLY with vertices and no faces is a point cloud: each vertex becomes a dot
+/// (4 px, its colour or black), with a warning saying so.
+fn points_for_vertices(scene: &mut Scene, colours: &[[f64; 4]], object: u32, path: &Path) {
+    if scene.vertices.is_empty() {
+        scene.warnings.push(format!("{}: no faces", path.display()));
+        return;
+    }
+    scene.points.reserve(scene.vertices.len());
+    for (i, &at) in scene.vertices.iter().enumerate() {
+        scene.points.push(PointMark {
+            color: colours.get(i).copied().unwrap_or([0.0, 0.0, 0.0, 1.0]),
+            object,
+            ..PointMark::new(at)
+        });
+    }
+    scene.warnings.push(format!(
+        "{}: no faces; its {} vertices are drawn as points",
+        path.display(),
+        scene.vertices.len()
+    ));
 }
 
 /// Checks, before anything is allocated, that the body can hold what the header
