@@ -32,8 +32,9 @@ def collection_polygons(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.nda
         np.zeros((n, 4)) if len(c) == 0 else (np.repeat(c, n, axis=0) if len(c) != n else c)
     )
     fc = rep(np.asarray(coll._facecolor3d, dtype=float).reshape(-1, 4))
-    ec = np.asarray(coll._edgecolor3d, dtype=float).reshape(-1, 4)
-    ec = fc if len(ec) == 0 else rep(ec)
+    # No edge colour ("none", the default of a collection without one) is no stroke, as
+    # mplot3d draws it; "face" edges are already the face colours here.
+    ec = rep(np.asarray(coll._edgecolor3d, dtype=float).reshape(-1, 4))
     lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
     lw = np.zeros(n) if len(lw) == 0 else (np.repeat(lw, n) if len(lw) != n else lw)
     return polys, fc, ec, lw
