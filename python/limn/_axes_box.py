@@ -1,5 +1,5 @@
 """A 3D axes' box as scene content: its panes, grid lines and axis lines, where they are
-in data coordinates and how matplotlib styles them.
+in the axes' scaled coordinates (data coordinates through the axis scales) and how matplotlib styles them.
 
 mplot3d draws three panes (the walls of the axes' box on the far side from the viewer),
 on them the grid lines at the major ticks, then the axis lines along the box's edges,
@@ -17,7 +17,7 @@ import numpy as np
 
 
 class Pane(NamedTuple):
-    """One pane: its corners in data coordinates and its matplotlib style."""
+    """One pane: its corners in scaled coordinates and its matplotlib style."""
 
     corners: np.ndarray
     """(4, 3): the rectangle on the face of the axes' box."""
@@ -30,12 +30,16 @@ class Pane(NamedTuple):
 
 
 def _box_corners(ax: Any) -> np.ndarray:
-    """The eight corners of the axes' box, numbered as mplot3d numbers them (x fastest
-    around the bottom face, then the top face)."""
+    """The eight corners of the axes' box in scaled coordinates (each axis' bounds through
+    its scale transform, as ``_get_coord_info`` places panes and axis lines), numbered as
+    mplot3d numbers them (x fastest around the bottom face, then the top face)."""
     (x0, x1), (y0, y1), (z0, z1) = (
-        sorted(ax.get_xbound()),
-        sorted(ax.get_ybound()),
-        sorted(ax.get_zbound()),
+        sorted(float(v) for v in axis.get_transform().transform(np.asarray(bound, float)))
+        for axis, bound in (
+            (ax.xaxis, ax.get_xbound()),
+            (ax.yaxis, ax.get_ybound()),
+            (ax.zaxis, ax.get_zbound()),
+        )
     )
     return np.array(
         [
@@ -53,8 +57,8 @@ def _box_corners(ax: Any) -> np.ndarray:
 
 
 def inside_box(ax: Any, points: np.ndarray) -> bool:
-    """Whether every finite point of ``points`` (N, 3) lies in the axes' closed box
-    (exact comparisons with the axes' bounds)."""
+    """Whether every finite point of ``points`` (N, 3, scaled coordinates) lies in the
+    axes' closed box (exact comparisons with the axes' scaled bounds)."""
     pts = np.asarray(points, dtype=float).reshape(-1, 3)
     pts = pts[np.isfinite(pts).all(axis=1)]
     corners = _box_corners(ax)
@@ -114,7 +118,7 @@ def grid_lines(ax: Any) -> List[Any]:
 
 
 class AxisLine(NamedTuple):
-    """One axis line: its ends in data coordinates and its style."""
+    """One axis line: its ends in scaled coordinates and its style."""
 
     ends: np.ndarray
     """(2, 3): two corners of the axes' box."""

@@ -1,6 +1,13 @@
 """What the bridge reads from a 3D axes' artists: polygons with their colours, lines,
-scatter points and texts, in data coordinates, with what matplotlib needs to draw each
-visible piece in the artist's own style.
+scatter points and texts, with what matplotlib needs to draw each visible piece in the
+artist's own style.
+
+Coordinates are the axes' scaled coordinates, those mplot3d projects with ``ax.M``: data
+coordinates through each axis' scale transform (``set_zscale("log")``: log10 of z), as
+matplotlib 3.11 transforms them before projecting. A point outside its scales' domain (z
+<= 0 on a log axis), or outside the axes' view limits on an artist drawn with
+``axlim_clip=True``, is left out as mplot3d leaves it out: a line breaks there, a scatter
+point or text is not drawn, a polygon loses that corner.
 
 The private mplot3d attributes read here (``_faces``, ``_invalid_vertices``,
 ``_facecolor3d``, ``_edgecolor3d``, ``_segments3d``, ``_offsets3d``, ``_sizes3d``) are
@@ -17,17 +24,57 @@ from ._axes_box import Pane
 from ._depth_shading import depth_shaded, scatter_depth_shading
 
 
+def _left_out(artist: Any, pts: np.ndarray) -> np.ndarray:
+    """Which points (N, 3) in data coordinates mplot3d leaves out of ``artist``'s
+    drawing: outside a scale's domain, or outside the view limits when the artist is
+    clipped to them (``axlim_clip``)."""
+    ax = artist.axes
+    out = np.zeros(len(pts), dtype=bool)
+    for i, axis in enumerate((ax.xaxis, ax.yaxis, ax.zaxis)):
+        in_range = getattr(axis._scale, "val_in_range", None)
+        if in_range is not None:
+            out |= ~np.broadcast_to(np.asarray(in_range(pts[:, i]), dtype=bool), out.shape)
+    if getattr(artist, "_axlim_clip", False):
+        for i, lim in enumerate((ax.get_xlim3d(), ax.get_ylim3d(), ax.get_zlim3d())):
+            lo, hi = min(lim), max(lim)
+            with np.errstate(invalid="ignore"):
+                out |= (pts[:, i] < lo) | (pts[:, i] > hi)
+    return out
+
+
+def scaled(ax: Any, pts: np.ndarray) -> np.ndarray:
+    """Points (N, 3) in data coordinates in the axes' scaled coordinates (each axis'
+    scale transform, identity for linear axes); NaN where that is not finite."""
+    pts = np.asarray(pts, dtype=float).reshape(-1, 3)
+    out = np.empty_like(pts)
+    with np.errstate(all="ignore"):
+        for i, axis in enumerate((ax.xaxis, ax.yaxis, ax.zaxis)):
+            out[:, i] = axis.get_transform().transform(pts[:, i])
+    out[~np.isfinite(out).all(axis=1)] = np.nan
+    return out
+
+
+def shown(artist: Any, pts: Any) -> np.ndarray:
+    """``artist``'s points (N, 3) in data coordinates as the axes' scaled coordinates, NaN
+    where mplot3d leaves them out (see the module docs)."""
+    pts = np.asarray(pts, dtype=float).reshape(-1, 3)
+    out = scaled(artist.axes, pts)
+    out[_left_out(artist, pts)] = np.nan
+    return out
+
+
 def collection_polygons(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.ndarray, np.ndarray]:
-    """The collection's polygons in data coordinates, with face colours (colormapped),
+    """The collection's polygons in scaled coordinates, with face colours (colormapped),
     edge colours and line widths per polygon."""
     coll.do_3d_projection()  # also maps the colours
-    faces = np.asarray(coll._faces)
+    faces = np.asarray(coll._faces, dtype=float)
     invalid = np.asarray(coll._invalid_vertices)
     n = len(faces)
     polys = []
     for i in range(n):
         keep = ~invalid[i] if invalid.ndim == 2 else np.ones(faces.shape[1], bool)
-        polys.append(np.asarray(faces[i][keep], dtype=float))
+        corners = shown(coll, faces[i][keep])
+        polys.append(corners[np.isfinite(corners).all(axis=1)])
     rep = lambda c: (  # noqa: E731
         np.zeros((n, 4)) if len(c) == 0 else (np.repeat(c, n, axis=0) if len(c) != n else c)
     )
@@ -43,7 +90,7 @@ def collection_polygons(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.nda
 def _lines(artist: Any) -> List[np.ndarray]:
     """A ``Line3D``'s runs of finite points (matplotlib breaks lines at NaN)."""
     xyz = (np.asarray(np.ma.filled(c, np.nan), dtype=float) for c in artist.get_data_3d())
-    return _runs(np.c_[tuple(a.ravel() for a in np.broadcast_arrays(*xyz))])
+    return _runs(shown(artist, np.c_[tuple(a.ravel() for a in np.broadcast_arrays(*xyz))]))
 
 
 def _runs(pts: np.ndarray) -> List[np.ndarray]:
@@ -104,8 +151,9 @@ class Marks:
     def __init__(self) -> None:
         self.lines: List[Line] = []
         self.points: List[Point] = []
-        # Per limn label: the Text3D it shows.
+        # Per limn label: the Text3D it shows and its anchor in scaled coordinates.
         self.texts: List[Any] = []
+        self.anchors: List[np.ndarray] = []
 
     def add_line3d(self, line: Any, p2p: float) -> None:
         from matplotlib.colors import to_rgba
@@ -141,7 +189,7 @@ class Marks:
             w = float(lw[i % len(lw)]) if len(lw) else 1.0
             off, seq = ls[i % len(ls)] if ls else (0, None)
             dash = (off, seq) if seq else None
-            for r in _runs(np.asarray(seg, dtype=float).reshape(-1, 3)):
+            for r in _runs(shown(coll, np.ma.filled(np.asarray(seg, dtype=float), np.nan))):
                 if len(r) >= 2 and c[3] > 0 and w > 0:
                     clip = None if background else clip_of(coll)
                     self.lines.append(Line(r, c, w, dash, background, clip=clip))
@@ -158,7 +206,7 @@ class Marks:
         xs, ys, zs = (
             np.asarray(np.ma.filled(c, np.nan), dtype=float).ravel() for c in coll._offsets3d
         )
-        pts = np.c_[xs, ys, zs]
+        pts = shown(coll, np.c_[xs, ys, zs])
         n = len(pts)
         # In input order: mplot3d's own getters return colours and widths sorted by
         # depth (and "face" edges through them).
@@ -193,16 +241,18 @@ class Marks:
 
     def add_text(self, text: Any) -> None:
         """A ``Text3D`` (``ax.text``): shown where its anchor is visible."""
-        if text.get_text() and np.isfinite(np.asarray(text.get_position_3d(), float)).all():
+        at = shown(text, text.get_position_3d())[0]
+        if text.get_text() and np.isfinite(at).all():
             self.texts.append(text)
+            self.anchors.append(at)
 
     def vertices(self) -> List[np.ndarray]:
-        anchors = [q.at for q in self.points] + [t.get_position_3d() for t in self.texts]
+        anchors = [q.at for q in self.points] + self.anchors
         return [ln.points for ln in self.lines] + [np.asarray(anchors, dtype=float).reshape(-1, 3)]
 
 
 class Polygons:
-    """An axes' polygons in data coordinates with their styles, in the order limn gets
+    """An axes' polygons in scaled coordinates with their styles, in the order limn gets
     them (``owner`` indices of the painted fragments refer to this order)."""
 
     def __init__(self) -> None:

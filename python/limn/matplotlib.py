@@ -33,8 +33,13 @@ of the data. While every vertex, point and text anchor lies inside the box, the 
 behind all of them and mplot3d's own drawing of it is the exact picture, so the bridge
 leaves it to mplot3d (``box="auto"``). ``ax.grid(False)``, ``ax.set_axis_off()``, pane
 colours and ``pane.fill`` are respected. Each drawing is clipped as matplotlib clips the
-artist it comes from, and the file is written whole or not at all. Scales must be
-linear; the private mplot3d attributes read are those of matplotlib 3.11.
+artist it comes from, and the file is written whole or not at all.
+
+Axis scales (``set_zscale("log")``, ``"symlog"``, ...) are applied as mplot3d applies
+them: limn gets every coordinate through its axis' scale transform, so a log axis' data
+are straight in log space; a point outside a scale's domain is left out, as is a point
+outside the view limits of an artist drawn with ``axlim_clip=True`` (see ``_content``).
+The private mplot3d attributes read are those of matplotlib 3.11.
 """
 
 from __future__ import annotations
@@ -222,7 +227,7 @@ class _Limn3D:
             for a in axis_lines(self.ax):
                 marks.lines.append(Line(a.ends, a.rgba, a.width, None, True, a.cap))
         marks.lines += data.lines
-        marks.points, marks.texts = data.points, data.texts
+        marks.points, marks.texts, marks.anchors = data.points, data.texts, data.anchors
         return polys, marks
 
     def _paint(self, renderer: Any) -> List[_Item]:
@@ -244,15 +249,15 @@ class _Limn3D:
             scene.add_line(ln.points, color=np.clip(ln.rgba, 0, 1))
         if extra.points:
             scene.add_points(np.asarray([q.at for q in extra.points]), size=1.0)
-        for text in extra.texts:
-            scene.add_label(tuple(float(c) for c in text.get_position_3d()), "x")
+        for at in extra.anchors:
+            scene.add_label(tuple(float(c) for c in at), "x")
         scene.set_camera(matrix=m, size=(wl, hl))
         sx, sy = W / wl, H / hl
         polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith)
         disp_of = lambda pts: np.c_[pts[:, 0] * sx, H - pts[:, 1] * sy]  # noqa: E731
         # Markers and texts between the same two polygons are painted far to near, as
         # mplot3d paints a scatter (limn's picture keeps them in input order).
-        anchors = [q.at for q in extra.points] + [t.get_position_3d() for t in extra.texts]
+        anchors = [q.at for q in extra.points] + extra.anchors
         depth = _depths(M, np.asarray(anchors, dtype=float).reshape(-1, 3))
         first_text = len(extra.points)
         by_place: dict = {}

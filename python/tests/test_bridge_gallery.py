@@ -13,6 +13,7 @@ import limn.matplotlib as lm  # noqa: E402
 from probes import colour_at, near, raster  # noqa: E402
 
 BLUE = (0.2, 0.4, 0.85)
+RED = (0.85, 0.25, 0.2)
 
 
 def both(fig, tmp_path, zoom=3.0):
@@ -47,4 +48,42 @@ def test_a_collection_without_edge_colour_has_no_edge_stroke(tmp_path):
     for p in [(0.0, 0.0, 0.0), (0.2, -0.2, 0.0), (-0.2, 0.2, 0.0), (0.0, -0.56, 0.0)]:
         c, want = colour_at(fig, ax, mine, p), colour_at(fig, ax, theirs, p)
         assert near(c, want, 0.04), (p, c, want)
+    plt.close(fig)
+
+
+def test_axlim_clip_leaves_out_what_lies_outside_the_limits(tmp_path):
+    fig, ax = axes()
+    x = np.linspace(-1.4, 1.4, 29)
+    ax.plot(x, 0 * x, 0 * x, color=BLUE, lw=4, axlim_clip=True)
+    ax.plot(x, 0 * x + 0.5, 0 * x, color=BLUE, lw=4)  # not clipped
+    ax.scatter([0, 0], [0, 0], [0.5, 1.6], color=BLUE, s=200, axlim_clip=True)
+    mine, theirs = both(fig, tmp_path)
+    white = (1.0, 1.0, 1.0)
+    for p, want in [
+        ((0.5, 0.0, 0.0), BLUE),  # the clipped line inside the limits
+        ((1.25, 0.0, 0.0), white),  # and outside
+        ((1.25, 0.5, 0.0), BLUE),  # the other line outside the limits
+        ((0.0, 0.0, 0.5), BLUE),  # the point inside
+        ((0.0, 0.0, 1.6), white),  # the point outside
+    ]:
+        assert near(colour_at(fig, ax, theirs, p), want), p  # matplotlib's own picture
+        assert near(colour_at(fig, ax, mine, p), want), (p, colour_at(fig, ax, mine, p))
+    plt.close(fig)
+
+
+def test_log_scaled_data_are_drawn_where_matplotlib_draws_them(tmp_path):
+    # z on a log axis from 1 to 100: a square at z = 10 lies halfway up (log10 z = 1),
+    # a line at z = 3 below it; a point at z = 0 is outside the scale and not drawn.
+    fig, ax = axes()
+    ax.set_zscale("log")
+    ax.set_zlim(1, 100)
+    x, y = np.meshgrid([-0.5, 0.5], [-0.5, 0.5])
+    ax.plot_surface(x, y, 10 + 0 * x, color=BLUE, shade=False, linewidth=0)
+    ax.plot([-0.9, 0.9], [-0.8, -0.8], [3, 3], color=RED, lw=4)
+    ax.scatter([0.8], [0.8], [0.0], color=RED, s=200)
+    mine, theirs = both(fig, tmp_path)
+    # Probes in scaled coordinates (what the axes project).
+    for p, want in [((0.2, 0.2, 1.0), BLUE), ((0.0, -0.8, np.log10(3)), RED)]:
+        assert near(colour_at(fig, ax, theirs, p), want), p
+        assert near(colour_at(fig, ax, mine, p), want), (p, colour_at(fig, ax, mine, p))
     plt.close(fig)
