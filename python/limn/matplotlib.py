@@ -8,9 +8,10 @@ colormapping, alpha, edge colours and line widths, seen through the axes' own pr
 (``get_proj()``: perspective with its focal length, or orthographic), so the picture
 registers with the axes, ticks, labels, titles and colorbars matplotlib draws around it.
 limn's polygons are drawn through matplotlib's renderer at the place the collections
-would take, so the file is one vector file of the format the extension names (SVG, PDF,
-...), with no raster embedded (colorbars, which rasterise their solids of 50 colours or
-more, are kept as vectors too).
+would take, so the 3D content is vector drawing in the file of the format the extension
+names (SVG, PDF, ...). Everything else is matplotlib's own drawing, unchanged: 2D axes,
+titles, legends and colorbars (whose colour solids of 50 colours or more matplotlib
+embeds as one image, as in its own export).
 
 Lines (``Line3D`` from ``plot``, ``Line3DCollection`` from ``plot_wireframe`` and
 ``quiver``) and scatter points (``Path3DCollection``) go into the same limn scene as the
@@ -380,18 +381,7 @@ def savefig(
         raise ValueError(f"box must be 'auto', 'limn' or 'matplotlib', not {box!r}")
     swaps = []
     taken = []  # axes whose panes, grid and axis drawing the bridge does
-    # Colorbars rasterise their colour solids on their own (50 colours or more); here
-    # they stay vectors, so that the file holds no raster.
-    rasterized = [
-        cb.solids
-        for cb in (getattr(ax, "_colorbar", None) for ax in fig.axes)
-        if cb is not None and cb.solids is not None and cb.solids.get_rasterized()
-    ]
-    if not any(_is_3d(ax) for ax in fig.axes):
-        rasterized = []
     try:
-        for solids in rasterized:
-            solids.set_rasterized(False)
         for ax in fig.axes:
             if not _is_3d(ax):
                 continue
@@ -422,8 +412,6 @@ def savefig(
             swaps.append((colls + marks + texts, bridge))
         _save_whole(fig, path, kwargs)
     finally:
-        for solids in rasterized:
-            solids.set_rasterized(True)
         for ax in taken:
             for axis in ax._axis_map.values():
                 for name in ("draw_pane", "draw_grid", "draw"):

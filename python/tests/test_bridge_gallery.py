@@ -87,3 +87,23 @@ def test_log_scaled_data_are_drawn_where_matplotlib_draws_them(tmp_path):
         assert near(colour_at(fig, ax, theirs, p), want), p
         assert near(colour_at(fig, ax, mine, p), want), (p, colour_at(fig, ax, mine, p))
     plt.close(fig)
+
+
+def test_a_colorbar_is_matplotlibs_own_drawing(tmp_path):
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")
+    x, y = np.meshgrid(np.linspace(-1, 1, 6), np.linspace(-1, 1, 6))
+    s = ax.plot_surface(x, y, x * y, cmap="viridis", linewidth=0)
+    cb = fig.colorbar(s, ax=ax)
+    mine, theirs = both(fig, tmp_path)
+    # The colour bar's pixels, as matplotlib's own export rasterises them (abutting
+    # rectangles would show seams and edges where the image shows none).
+    fig.canvas.draw()
+    x0, y0, x1, y1 = cb.ax.get_window_extent().extents
+    h = mine.shape[0]
+    zoom = mine.shape[1] / fig.canvas.get_width_height()[0]
+    rows = slice(int(h - y1 * zoom) + 2, int(h - y0 * zoom) - 2)
+    cols = slice(int(x0 * zoom) + 2, int(x1 * zoom) - 2)
+    diff = np.abs(mine[rows, cols, :3] - theirs[rows, cols, :3]).max()
+    assert diff < 0.02, diff
+    plt.close(fig)
