@@ -194,6 +194,37 @@ class Marks:
                     clip = None if background else clip_of(coll)
                     self.lines.append(Line(r, c, w, dash, background, clip=clip))
 
+    def add_contour_lines(self, cset: Any) -> None:
+        """A contour set's lines (``ax.contour``, a ``Collection3D`` of one path per
+        level): each run between moves is a line in its level's colour, width and dash
+        pattern (``CLOSEPOLY`` closes a run back to its start)."""
+        from matplotlib.path import Path
+
+        cset.update_scalarmappable()
+        col = np.asarray(cset.get_edgecolor(), dtype=float).reshape(-1, 4)
+        lw = np.asarray(cset.get_linewidths(), dtype=float).reshape(-1)
+        ls = cset.get_linestyles()
+        clip = clip_of(cset)
+        for i, (verts, codes) in enumerate(cset._3dverts_codes):
+            c = col[i % len(col)] if len(col) else np.array([0, 0, 0, 1.0])
+            w = float(lw[i % len(lw)]) if len(lw) else 1.0
+            off, seq = ls[i % len(ls)] if ls else (0, None)
+            dash = (off, seq) if seq else None
+            if c[3] <= 0 or w <= 0:
+                continue
+            pts = shown(cset, verts)
+            codes = np.full(len(pts), Path.LINETO) if codes is None else np.asarray(codes)
+            starts = np.nonzero(codes == Path.MOVETO)[0].tolist()
+            for a, b in zip([0] + starts, starts + [len(pts)]):
+                if b <= a:
+                    continue
+                run, kinds = pts[a:b], codes[a:b]
+                if kinds[-1] == Path.CLOSEPOLY:
+                    run = np.vstack([run[:-1], run[:1]])
+                for r in _runs(run):
+                    if len(r) >= 2:
+                        self.lines.append(Line(r, c, w, dash, clip=clip))
+
     def add_pane_outline(self, pane: Pane) -> None:
         if pane.width > 0:
             loop = np.vstack([pane.corners, pane.corners[:1]])

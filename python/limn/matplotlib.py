@@ -14,7 +14,7 @@ titles, legends and colorbars (whose colour solids of 50 colours or more matplot
 embeds as one image, as in its own export).
 
 Lines (``Line3D`` from ``plot``, ``Line3DCollection`` from ``plot_wireframe`` and
-``quiver``) and scatter points (``Path3DCollection``) go into the same limn scene as the
+``quiver``, the contour lines of ``ax.contour``) and scatter points (``Path3DCollection``) go into the same limn scene as the
 polygons, so they are hidden exactly by the surfaces in front of them (a line on a
 surface's own polygon is drawn over it); their visible pieces and markers are drawn by
 matplotlib's renderer in matplotlib's own style (colour, width, dashes, marker path,
@@ -203,6 +203,8 @@ class _Limn3D:
                 data.add_scatter(art, p2p, M)
             elif isinstance(art, Line3DCollection):
                 data.add_line_collection(art)
+            elif _is_contour_lines(art):
+                data.add_contour_lines(art)
             else:
                 data.add_line3d(art, p2p)
         for text in self.texts:
@@ -318,6 +320,20 @@ class _Limn3D:
         return items
 
 
+def _is_contour_lines(art: Any) -> bool:
+    """Whether ``art`` is a 3D axes' contour set of lines (``ax.contour``; filled contour
+    sets, whose regions may have holes, stay matplotlib's drawing)."""
+    from matplotlib.contour import ContourSet
+    from mpl_toolkits.mplot3d.art3d import Collection3D
+
+    return (
+        isinstance(art, Collection3D)
+        and isinstance(art, ContourSet)
+        and not art.filled
+        and hasattr(art, "_3dverts_codes")
+    )
+
+
 def _measuring(renderer: Any) -> bool:
     """Whether ``renderer`` is in matplotlib's measuring pass (``_draw_disabled``: its
     drawing methods replaced by no-ops on the instance, or on the vector renderer inside
@@ -391,7 +407,8 @@ def savefig(
             marks = [
                 c
                 for c in ax.collections
-                if isinstance(c, (Line3DCollection, Path3DCollection)) and c.get_visible()
+                if (isinstance(c, (Line3DCollection, Path3DCollection)) or _is_contour_lines(c))
+                and c.get_visible()
             ] + [ln for ln in ax.lines if isinstance(ln, Line3D) and ln.get_visible()]
             texts = [t for t in ax.texts if isinstance(t, Text3D) and t.get_visible()]
             if not colls and not marks and not texts:

@@ -107,3 +107,18 @@ def test_a_colorbar_is_matplotlibs_own_drawing(tmp_path):
     diff = np.abs(mine[rows, cols, :3] - theirs[rows, cols, :3]).max()
     assert diff < 0.02, diff
     plt.close(fig)
+
+
+def test_contour_lines_are_hidden_where_a_surface_lies_in_front(tmp_path):
+    # Contour lines x = -0.5, 0, 0.5 drawn at z = 0 and the sheet z = y crossing them:
+    # where y < 0 the lines lie over the sheet, where y > 0 under it.
+    fig, ax = axes()
+    x, y = np.meshgrid(np.linspace(-1, 1, 21), np.linspace(-1, 1, 21))
+    ax.plot_surface(x, y, y, color=BLUE, shade=False, linewidth=0)
+    ax.contour(x, y, x, levels=[-0.5, 0.5], colors=[RED], offset=0, zdir="z", linewidths=6)
+    mine, _ = both(fig, tmp_path)
+    for p, want in [((0.5, -0.5, 0.0), RED), ((-0.5, -0.6, 0.0), RED)]:
+        assert near(colour_at(fig, ax, mine, p), want, 0.1), (p, colour_at(fig, ax, mine, p))
+    for p in [(0.5, 0.5, 0.0), (-0.5, 0.6, 0.0)]:  # the lines' parts under the sheet
+        assert near(colour_at(fig, ax, mine, p), BLUE), (p, colour_at(fig, ax, mine, p))
+    plt.close(fig)
