@@ -318,14 +318,26 @@ class Polygons:
         cat = lambda parts, shape: np.concatenate(parts) if parts else np.zeros(shape)  # noqa: E731
         return cat(self._fill, (0, 4)), cat(self._edge, (0, 4)), cat(self._width, (0,))
 
-    def mesh(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    def mesh(
+        self, project: Any = None
+    ) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, List[np.ndarray]]:
         """Vertices, faces and corner counts for limn (``add_mesh(v, faces,
-        counts=counts)``), and the polygon each face is. Every polygon of three corners or
-        more is one face, whatever its shape: limn draws a non-convex or non-planar
-        polygon (an L-shaped polygon of a ``Poly3DCollection``) as it is."""
-        verts = [p for p in self.corners if len(p) >= 3]
-        owner = np.array([k for k, p in enumerate(self.corners) if len(p) >= 3], dtype=np.int64)
-        counts = np.array([len(p) for p in verts], dtype=np.int64)
-        v = np.concatenate(verts) if verts else np.zeros((0, 3))
-        # Each polygon's corners are its own vertices, one polygon after another.
-        return v, np.arange(len(v), dtype=np.int64), counts, owner
+        counts=counts)``), the polygon each face comes from, and per face which of its
+        edges are edges of that polygon. Every polygon of three corners or more is one
+        face, whatever its shape (limn draws a non-convex polygon, an L-shaped polygon of a
+        ``Poly3DCollection``, as it is), except that with ``project`` (points to the view's
+        2D coordinates) a non-planar polygon is cut into the triangles of its projected
+        outline (see ``_triangulate``)."""
+        from ._triangulate import view_triangles
+
+        kept = [k for k, p in enumerate(self.corners) if len(p) >= 3]
+        polys = [self.corners[k] for k in kept]
+        if project is None:
+            faces, sub, own = polys, np.arange(len(polys)), [np.ones(len(p), bool) for p in polys]
+        else:
+            faces, sub, own = view_triangles(polys, project)
+        owner = np.asarray(kept, dtype=np.int64)[sub] if len(faces) else np.zeros(0, np.int64)
+        counts = np.array([len(p) for p in faces], dtype=np.int64)
+        v = np.concatenate(faces) if faces else np.zeros((0, 3))
+        # Each face's corners are its own vertices, one face after another.
+        return v, np.arange(len(v), dtype=np.int64), counts, owner, own

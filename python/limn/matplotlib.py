@@ -3,7 +3,8 @@
 matplotlib's mplot3d sorts whole polygons by one depth each, so intersecting surfaces
 and cyclic overlaps come out wrong in its own export. ``savefig`` draws each 3D axes'
 ``Poly3DCollection`` content (plot_surface, plot_trisurf, bar3d, voxels,
-add_collection3d) through limn instead: the same polygons, the face colours after
+add_collection3d) through limn instead: the same polygons (a non-planar one as the
+triangles of the outline matplotlib fills, see ``_triangulate``), the face colours after
 colormapping, alpha, edge colours and line widths, seen through the axes' own projection
 (``get_proj()``: perspective with its focal length, or orthographic), so the picture
 registers with the axes, ticks, labels, titles and colorbars matplotlib draws around it.
@@ -240,10 +241,11 @@ class _Limn3D:
         M = np.asarray(self.ax.M, dtype=float)
         polys, extra = self._content(p2p, M)
         fc, ec, lw = polys.styles()
-        v, faces, counts, owner = polys.mesh()
-        if not len(v) and not extra.lines and not extra.points and not extra.texts:
+        corners = [p for p in polys.corners if len(p) >= 3]
+        if not corners and not extra.lines and not extra.points and not extra.texts:
             return []
-        m, W, H = _camera(self.ax, renderer, np.concatenate([v] + extra.vertices()))
+        m, W, H = _camera(self.ax, renderer, np.concatenate(corners + extra.vertices()))
+        v, faces, counts, owner, own = polys.mesh(partial(_project, m=m))
         wl, hl = max(1, int(round(W))), max(1, int(round(H)))
         scene = Scene()
         if len(counts):
@@ -295,10 +297,16 @@ class _Limn3D:
                     text = extra.texts[mk["index"]]
                     items.append(_Item(None, 0.0, False, partial(draw_text, text=text)))
 
+        first = np.concatenate([[0], np.cumsum(counts)])
+        seen = _project(v, m)  # the faces' corners in limn's normalised coordinates
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
             k = int(owner[face])
             disp = disp_of(pts)
+            if not own[face].all():
+                # A triangle of a polygon cut in the view: only the polygon's own edges.
+                corner = seen[first[face] : first[face + 1]]
+                orig = _polygon_edges(disp, orig, corner, own[face], W, H)
             edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
             items.append(
                 _Item(
@@ -318,6 +326,38 @@ class _Limn3D:
             )
         add_marks(len(polygons))
         return items
+
+
+def _project(p: np.ndarray, m: np.ndarray) -> np.ndarray:
+    """Points (k, 3) through limn's camera matrix to its normalised 2D coordinates (x and
+    y in [-1, 1] across the canvas, y up), NaN where w <= 0."""
+    h = np.c_[np.asarray(p, dtype=float).reshape(-1, 3), np.ones(len(p))] @ m.T
+    out = np.full((len(h), 2), np.nan)
+    ok = h[:, 3] > 0
+    out[ok] = h[ok, :2] / h[ok, 3:]
+    return out
+
+
+def _polygon_edges(
+    disp: np.ndarray, orig: Any, corner: np.ndarray, own: np.ndarray, W: float, H: float
+) -> List[bool]:
+    """Which edges of a painted fragment (display units) lie on an edge of its polygon:
+    the fragment of a triangle (corners in limn's normalised coordinates) whose edges
+    ``own`` are the polygon's; each edge limn marks original lies on one of the
+    triangle's edges, the nearest to its midpoint."""
+    c = (corner + 1) / 2 * np.array([W, H])
+    a, b = c, np.roll(c, -1, axis=0)
+    d = b - a
+    length = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-300)
+    out = []
+    for j, flag in enumerate(orig):
+        if not flag:
+            out.append(False)
+            continue
+        q = (disp[j] + disp[(j + 1) % len(disp)]) / 2
+        dist = np.abs(d[:, 0] * (q[1] - a[:, 1]) - d[:, 1] * (q[0] - a[:, 0])) / length
+        out.append(bool(own[int(np.argmin(dist))]))
+    return out
 
 
 def _is_contour_lines(art: Any) -> bool:

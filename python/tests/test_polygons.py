@@ -198,9 +198,10 @@ def test_the_bridge_hands_each_polygon_over_whole_with_its_owner():
     polys = Polygons()
     tri = np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0)], float)
     polys.corners = [tri, tri[:2], l_shape_3d(), np.zeros((0, 3)), tri + 1]
-    v, faces, counts, owner = polys.mesh()
+    v, faces, counts, owner, own = polys.mesh()
     assert counts.tolist() == [3, 6, 3]  # the hexagon one face, not a fan of four
     assert owner.tolist() == [0, 2, 4]  # what is too small to draw is skipped
+    assert all(o.all() for o in own)  # every edge of each face is its polygon's
     starts = np.r_[0, np.cumsum(counts)]
     for j, k in enumerate(owner):
         assert np.array_equal(v[faces[starts[j] : starts[j + 1]]], polys.corners[k])

@@ -1,0 +1,140 @@
+"""Non-planar polygons cut into triangles as matplotlib shows them.
+
+matplotlib fills a polygon of a ``Poly3DCollection`` as the outline its corners project
+to, whatever its shape in 3D. A polygon that is not planar (a ``plot_surface`` patch of
+several grid cells when a stride is above one, a cell of a curved height field) has no
+one surface; limn gives such a face triangles of its own choice, which can differ from
+the projected outline where the polygon folds (a patch across a sharp valley bridged by
+a triangle over the valley's floor). The bridge therefore cuts each non-planar polygon
+whose projected outline is simple into triangles of that outline (ear clipping in the
+view), so that the triangles cover exactly what matplotlib fills; their corners are the
+polygon's own, so each triangle is flat and in place in 3D. Which triangle edges are the
+polygon's own edges is kept, so that only those are stroked.
+"""
+
+from __future__ import annotations
+
+from typing import List, Tuple
+
+import numpy as np
+
+
+def planar(p: np.ndarray, rel: float = 1e-9) -> bool:
+    """Whether the polygon's corners (n, 3) lie in one plane (within ``rel`` of its
+    size)."""
+    if len(p) <= 3:
+        return True
+    c = p.mean(axis=0)
+    q = p - c
+    nxt = np.roll(p, -1, axis=0)
+    normal = np.array(
+        [
+            np.sum((p[:, 1] - nxt[:, 1]) * (p[:, 2] + nxt[:, 2])),
+            np.sum((p[:, 2] - nxt[:, 2]) * (p[:, 0] + nxt[:, 0])),
+            np.sum((p[:, 0] - nxt[:, 0]) * (p[:, 1] + nxt[:, 1])),
+        ]
+    )
+    size = float(np.abs(q).max())
+    length = float(np.linalg.norm(normal))
+    if length == 0 or size == 0:
+        return True
+    return float(np.abs(q @ (normal / length)).max()) <= rel * size
+
+
+def _cross(o: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    return (a[..., 0] - o[..., 0]) * (b[..., 1] - o[..., 1]) - (a[..., 1] - o[..., 1]) * (
+        b[..., 0] - o[..., 0]
+    )
+
+
+def simple(q: np.ndarray) -> bool:
+    """Whether the closed outline through the points (n, 2) is simple: no two edges that
+    are not neighbours meet (touching counts as meeting), no zero-length edge."""
+    n = len(q)
+    a, b = q, np.roll(q, -1, axis=0)
+    if (np.abs(b - a).max(axis=1) == 0).any():
+        return False
+    i, j = np.triu_indices(n, k=2)
+    keep = ~((i == 0) & (j == n - 1))
+    i, j = i[keep], j[keep]
+    d1 = _cross(a[i], b[i], a[j])
+    d2 = _cross(a[i], b[i], b[j])
+    d3 = _cross(a[j], b[j], a[i])
+    d4 = _cross(a[j], b[j], b[i])
+    cross = (d1 * d2 <= 0) & (d3 * d4 <= 0)
+    return not cross.any()
+
+
+def _area(q: np.ndarray) -> float:
+    """Signed area of the outline (n, 2), positive counter-clockwise."""
+    return 0.5 * float(np.sum(q[:, 0] * np.roll(q[:, 1], -1) - np.roll(q[:, 0], -1) * q[:, 1]))
+
+
+def ear_clip(q: np.ndarray) -> List[Tuple[int, int, int]]:
+    """Triangles (corner indices, counter-clockwise) covering the simple polygon (n, 2)
+    exactly."""
+    n = len(q)
+    idx = list(range(n)) if _area(q) > 0 else list(range(n))[::-1]
+    tris: List[Tuple[int, int, int]] = []
+    guard = 0
+    while len(idx) > 3 and guard < 4 * n * n:
+        guard += 1
+        m = len(idx)
+        for k in range(m):
+            a, b, c = idx[k - 1], idx[k], idx[(k + 1) % m]
+            if _cross(q[a], q[b], q[c]) <= 0:
+                continue  # reflex or flat corner
+            others = [o for o in idx if o not in (a, b, c)]
+            if others:
+                p = q[others]
+                inside = (
+                    (_cross(q[a], q[b], p) >= 0)
+                    & (_cross(q[b], q[c], p) >= 0)
+                    & (_cross(q[c], q[a], p) >= 0)
+                )
+                if inside.any():
+                    continue
+            tris.append((a, b, c))
+            del idx[k]
+            break
+        else:
+            return []  # no ear (should not happen for a simple outline)
+    if len(idx) == 3:
+        tris.append((idx[0], idx[1], idx[2]))
+    return tris
+
+
+def view_triangles(
+    corners: List[np.ndarray], project
+) -> Tuple[List[np.ndarray], np.ndarray, List[np.ndarray]]:
+    """Each polygon (n, 3) as it goes to limn: planar ones, and those whose projected
+    outline is not simple, whole; the others as the triangles of their projected outline.
+
+    ``project`` maps points (k, 3) to the view's 2D coordinates (k, 2), NaN where a point
+    cannot be projected. Returns the faces, the polygon each face comes from, and per face
+    which of its edges (edge i from corner i to i + 1) are edges of its polygon."""
+    faces: List[np.ndarray] = []
+    owner: List[int] = []
+    own: List[np.ndarray] = []
+    for k, p in enumerate(corners):
+        n = len(p)
+        if n >= 4 and not planar(p):
+            q = project(p)
+            if np.isfinite(q).all() and simple(q):
+                tris = ear_clip(q)
+                if len(tris) == n - 2:
+                    if _area(q) < 0:  # the polygon's own winding, as its neighbours have it
+                        tris = [(c, b, a) for a, b, c in tris]
+                    for t in tris:
+                        faces.append(p[list(t)])
+                        owner.append(k)
+                        own.append(
+                            np.array(
+                                [(t[(e + 1) % 3] - t[e]) % n in (1, n - 1) for e in range(3)]
+                            )
+                        )
+                    continue
+        faces.append(p)
+        owner.append(k)
+        own.append(np.ones(n, dtype=bool))
+    return faces, np.asarray(owner, dtype=np.int64), own
