@@ -36,8 +36,8 @@ def planar(p: np.ndarray, rel: float = 1e-9) -> bool:
     )
     size = float(np.abs(q).max())
     length = float(np.linalg.norm(normal))
-    if length == 0 or size == 0:
-        return True
+    if not (np.isfinite(length) and np.isfinite(size)) or length == 0 or size == 0:
+        return True  # whole to limn (which refuses what it cannot take)
     return float(np.abs(q @ (normal / length)).max()) <= rel * size
 
 
