@@ -304,6 +304,21 @@ class Polygons:
         self.clip += [clip_of(coll)] * len(p)
         self.background += [False] * len(p)
 
+    def add_patch(self, patch: Any) -> None:
+        """A filled ``Patch3D`` of one polygon (``ax.bar``): its outline, face and edge
+        colour and line width."""
+        from matplotlib.colors import to_rgba
+
+        pts = shown(patch, np.asarray(patch._segment3d, dtype=float))
+        if len(pts) > 1 and np.array_equal(pts[0], pts[-1], equal_nan=True):
+            pts = pts[:-1]  # the closing corner
+        self.corners.append(pts[np.isfinite(pts).all(axis=1)])
+        self._fill.append(np.array(to_rgba(patch.get_facecolor()), dtype=float).reshape(1, 4))
+        self._edge.append(np.array(to_rgba(patch.get_edgecolor()), dtype=float).reshape(1, 4))
+        self._width.append(np.array([float(patch.get_linewidth())]))
+        self.clip.append(clip_of(patch))
+        self.background.append(False)
+
     def add_pane(self, pane: Pane) -> None:
         """A filled pane (its outline is a line of its own)."""
         self.corners.append(pane.corners)

@@ -3,7 +3,7 @@
 matplotlib's mplot3d sorts whole polygons by one depth each, so intersecting surfaces
 and cyclic overlaps come out wrong in its own export. ``savefig`` draws each 3D axes'
 ``Poly3DCollection`` content (plot_surface, plot_trisurf, bar3d, voxels,
-add_collection3d) through limn instead: the same polygons (a non-planar one as the
+add_collection3d) and its filled polygon patches (``ax.bar``) through limn instead: the same polygons (a non-planar one as the
 triangles of the outline matplotlib fills, see ``_triangulate``), the face colours after
 colormapping, alpha, edge colours and line widths, seen through the axes' own projection
 (``get_proj()``: perspective with its focal length, or orthographic), so the picture
@@ -195,9 +195,14 @@ class _Limn3D:
         (first, in matplotlib's order: panes, their outlines, grid lines, axis lines)."""
         from mpl_toolkits.mplot3d.art3d import Line3DCollection, Path3DCollection
 
+        from mpl_toolkits.mplot3d.art3d import Patch3D
+
         polys = Polygons()
         for coll in self.colls:
-            polys.add_collection(coll)
+            if isinstance(coll, Patch3D):
+                polys.add_patch(coll)
+            else:
+                polys.add_collection(coll)
         data = Marks()
         for art in self.marks:
             if isinstance(art, Path3DCollection):
@@ -360,6 +365,20 @@ def _polygon_edges(
     return out
 
 
+def _is_polygon_patch(art: Any) -> bool:
+    """Whether ``art`` is a filled 3D patch of one polygon (``ax.bar`` in a 3D axes,
+    ``pathpatch_2d_to_3d`` of a polygon); ``PathPatch3D``s of curves and several
+    outlines (text) stay matplotlib's drawing."""
+    from mpl_toolkits.mplot3d.art3d import Patch3D, PathPatch3D
+
+    return (
+        isinstance(art, Patch3D)
+        and not isinstance(art, PathPatch3D)
+        and art.get_fill()
+        and len(getattr(art, "_segment3d", ())) >= 3
+    )
+
+
 def _is_contour_lines(art: Any) -> bool:
     """Whether ``art`` is a 3D axes' contour set of lines (``ax.contour``; filled contour
     sets, whose regions may have holes, stay matplotlib's drawing)."""
@@ -443,7 +462,7 @@ def savefig(
                 continue
             colls = [
                 c for c in ax.collections if isinstance(c, Poly3DCollection) and c.get_visible()
-            ]
+            ] + [p for p in ax.patches if _is_polygon_patch(p) and p.get_visible()]
             marks = [
                 c
                 for c in ax.collections

@@ -160,3 +160,16 @@ def test_only_a_cut_polygons_own_edges_are_stroked(tmp_path):
     edge = (*hexagon[0, :2], hexagon[0, 2])
     assert near(colour_at(fig, ax, mine, edge), (0, 0, 0), 0.2)
     plt.close(fig)
+
+
+def test_bars_of_ax_bar_are_ordered_with_the_surfaces(tmp_path):
+    # ax.bar in the plane y = -0.5 (zdir="y"), in front of the sheet z = 0 that it
+    # pokes through: the bar's upper part in front, its lower part under the sheet.
+    fig, ax = axes()
+    x, y = np.meshgrid(np.linspace(-1, 1, 5), np.linspace(-1, 1, 5))
+    ax.plot_surface(x, y, 0 * x, color=BLUE, shade=False, linewidth=0)
+    ax.bar([0.0], [0.8], width=0.6, bottom=-0.4, zs=-0.5, zdir="y", color=RED)
+    mine, _ = both(fig, tmp_path)
+    assert near(colour_at(fig, ax, mine, (0.0, -0.5, 0.2)), RED)  # above the sheet
+    assert near(colour_at(fig, ax, mine, (0.0, -0.5, -0.2)), BLUE)  # under it
+    plt.close(fig)
