@@ -1,5 +1,6 @@
-"""A 3D axes' box as scene content: its panes, grid lines and axis lines, where they are
-in the axes' scaled coordinates (data coordinates through the axis scales) and how matplotlib styles them.
+"""A 3D axes' box as scene content: its panes, grid lines and axis lines, where they are in
+the axes' scaled coordinates (data coordinates through the axis scales) and how
+matplotlib styles them.
 
 mplot3d draws three panes (the walls of the axes' box on the far side from the viewer),
 on them the grid lines at the major ticks, then the axis lines along the box's edges,

@@ -104,6 +104,30 @@ def ear_clip(q: np.ndarray) -> List[Tuple[int, int, int]]:
     return tris
 
 
+def _darts(corners: List[np.ndarray], project) -> np.ndarray:
+    """Per polygon, the reflex corner of a quadrilateral whose projected outline is a dart
+    (simple, one reflex corner), -1 for every other polygon; all quadrilaterals at once.
+    Either diagonal cuts a convex quad into triangles covering its outline, so convex
+    quads (most cells of a curved surface) go to limn whole, as do bow-ties and quads with
+    a straight or doubled corner; a dart is cut from its reflex corner."""
+    reflex = np.full(len(corners), -1)
+    quads = np.array([k for k, p in enumerate(corners) if len(p) == 4], dtype=int)
+    if not len(quads):
+        return reflex
+    q = project(np.concatenate([corners[k] for k in quads])).reshape(-1, 4, 2)
+    turn = _cross(np.roll(q, 1, axis=1), q, np.roll(q, -1, axis=1))  # at each corner
+    with np.errstate(invalid="ignore"):
+        pos, neg = (turn > 0).sum(axis=1), (turn < 0).sum(axis=1)
+        area = 0.5 * np.sum(q[..., 0] * np.roll(q[..., 1], -1, axis=1)
+                            - np.roll(q[..., 0], -1, axis=1) * q[..., 1], axis=1)
+    # A dart: three corners turn the way the outline winds, one the other way (a
+    # bow-tie turns two and two, and its area's sign does not say which is reflex).
+    dart = ((pos == 3) & (neg == 1) & (area > 0)) | ((neg == 3) & (pos == 1) & (area < 0))
+    odd = np.where(area[:, None] > 0, turn < 0, turn > 0)
+    reflex[quads[dart]] = np.argmax(odd[dart], axis=1)
+    return reflex
+
+
 def view_triangles(
     corners: List[np.ndarray], project
 ) -> Tuple[List[np.ndarray], np.ndarray, List[np.ndarray]]:
@@ -116,9 +140,18 @@ def view_triangles(
     faces: List[np.ndarray] = []
     owner: List[int] = []
     own: List[np.ndarray] = []
+    reflex = _darts(corners, project)
     for k, p in enumerate(corners):
         n = len(p)
-        if n >= 4 and not planar(p):
+        if reflex[k] >= 0 and not planar(p):
+            r = int(reflex[k])
+            cuts = ((r, r + 1, r + 2), (r, r + 2, r + 3))
+            for t, e in zip(cuts, ((True, True, False), (False, True, True))):
+                faces.append(p[[i % 4 for i in t]])
+                owner.append(k)
+                own.append(np.array(e))
+            continue
+        if n >= 5 and not planar(p):
             q = project(p)
             if np.isfinite(q).all() and simple(q):
                 tris = ear_clip(q)

@@ -3,26 +3,28 @@
 matplotlib's mplot3d sorts whole polygons by one depth each, so intersecting surfaces
 and cyclic overlaps come out wrong in its own export. ``savefig`` draws each 3D axes'
 ``Poly3DCollection`` content (plot_surface, plot_trisurf, bar3d, voxels,
-add_collection3d) and its filled polygon patches (``ax.bar``) through limn instead: the same polygons (a non-planar one as the
-triangles of the outline matplotlib fills, see ``_triangulate``), the face colours after
-colormapping, alpha, edge colours and line widths, seen through the axes' own projection
-(``get_proj()``: perspective with its focal length, or orthographic), so the picture
-registers with the axes, ticks, labels, titles and colorbars matplotlib draws around it.
-limn's polygons are drawn through matplotlib's renderer at the place the collections
-would take, so the 3D content is vector drawing in the file of the format the extension
-names (SVG, PDF, ...). Everything else is matplotlib's own drawing, unchanged: 2D axes,
-titles, legends and colorbars (whose colour solids of 50 colours or more matplotlib
-embeds as one image, as in its own export).
+add_collection3d) and its filled polygon patches (``ax.bar``) through limn instead: the
+same polygons (a non-planar one as the triangles of the outline matplotlib fills, see
+``_triangulate``), the face colours after colormapping, alpha, edge colours and line
+widths, seen through the axes' own projection (``get_proj()``: perspective with its
+focal length, or orthographic), so the picture registers with the axes, ticks, labels,
+titles and colorbars matplotlib draws around it. limn's polygons are drawn through
+matplotlib's renderer at the place the collections would take, so the 3D content is
+vector drawing in the file of the format the extension names (SVG, PDF, ...). Everything
+else is matplotlib's own drawing, unchanged: 2D axes, titles, legends and colorbars
+(whose colour solids of 50 colours or more matplotlib embeds as one image, as in its own
+export).
 
 Lines (``Line3D`` from ``plot``, ``Line3DCollection`` from ``plot_wireframe`` and
-``quiver``, the contour lines of ``ax.contour``) and scatter points (``Path3DCollection``) go into the same limn scene as the
-polygons, so they are hidden exactly by the surfaces in front of them (a line on a
-surface's own polygon is drawn over it); their visible pieces and markers are drawn by
-matplotlib's renderer in matplotlib's own style (colour, width, dashes, marker path,
-size), at their place in limn's paint order, markers far to near as mplot3d paints them.
-Scatter points keep mplot3d's depth shading (``depthshade``; see ``_depth_shading``).
-3D texts (``Text3D`` from ``ax.text``) are limn labels: shown only where their anchor
-is visible, drawn by matplotlib itself.
+``quiver``, the contour lines of ``ax.contour``) and scatter points
+(``Path3DCollection``) go into the same limn scene as the polygons, so they are hidden
+exactly by the surfaces in front of them (a line on a surface's own polygon is drawn
+over it); their visible pieces and markers are drawn by matplotlib's renderer in
+matplotlib's own style (colour, width, dashes, marker path, size), at their place in
+limn's paint order, markers far to near as mplot3d paints them. Scatter points keep
+mplot3d's depth shading (``depthshade``; see ``_depth_shading``). 3D texts (``Text3D``
+from ``ax.text``) are limn labels: shown only where their anchor is visible, drawn by
+matplotlib itself.
 
 When data leave the axes' box, the box is scene content as well (``_axes_box``): the
 panes with their colours and outlines, the grid lines on them and the axis lines along
@@ -308,11 +310,12 @@ class _Limn3D:
             add_marks(i)
             k = int(owner[face])
             disp = disp_of(pts)
-            if not own[face].all():
+            edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
+            if edged and not own[face].all():
                 # A triangle of a polygon cut in the view: only the polygon's own edges.
                 corner = seen[first[face] : first[face + 1]]
                 orig = _polygon_edges(disp, orig, corner, own[face], W, H)
-            edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
+                edged = any(orig)
             items.append(
                 _Item(
                     [disp],

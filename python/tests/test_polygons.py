@@ -205,3 +205,50 @@ def test_the_bridge_hands_each_polygon_over_whole_with_its_owner():
     starts = np.r_[0, np.cumsum(counts)]
     for j, k in enumerate(owner):
         assert np.array_equal(v[faces[starts[j] : starts[j + 1]]], polys.corners[k])
+
+
+def test_non_planar_polygons_are_cut_into_triangles_of_their_projected_outline():
+    from limn._triangulate import view_triangles
+
+    rng = np.random.default_rng(3)
+    project = lambda p: p[:, :2]  # noqa: E731  (seen along z)
+
+    def area(q):
+        return 0.5 * np.sum(q[:, 0] * np.roll(q[:, 1], -1) - np.roll(q[:, 0], -1) * q[:, 1])
+
+    kinds = {"dart": 0, "convex": 0, "hexagon": 0}
+    for _ in range(300):
+        n = int(rng.choice([4, 6]))
+        t = np.sort(rng.uniform(0, 2 * np.pi, n))
+        if np.diff(np.r_[t, t[0] + 2 * np.pi]).max() >= np.pi:
+            continue  # keep the origin inside: the outline is star-shaped, so simple
+        r = rng.uniform(0.2, 1.0, n)
+        p = np.c_[r * np.cos(t), r * np.sin(t), rng.uniform(-1, 1, n)]
+        faces, owner, own = view_triangles([p], project)
+        assert (owner == 0).all()
+        if len(faces) == 1:  # whole: a convex quad (either diagonal covers its outline)
+            assert n == 4
+            d = np.diff(np.r_[p[:, :2], p[:2, :2]], axis=0)
+            turn = d[:-1, 0] * d[1:, 1] - d[:-1, 1] * d[1:, 0]
+            assert (turn > 0).all() or (turn < 0).all()
+            kinds["convex"] += 1
+            continue
+        kinds["dart" if n == 4 else "hexagon"] += 1
+        # n - 2 triangles of the polygon's own corners, wound as the polygon, covering
+        # its outline exactly: their areas add up to the outline's, none folds over.
+        assert len(faces) == n - 2
+        whole = area(p[:, :2])
+        parts = [area(f[:, :2]) for f in faces]
+        assert all(np.sign(a) == np.sign(whole) for a in parts)
+        assert abs(sum(parts) - whole) < 1e-12
+        # The polygon's own edges are flagged, the cuts are not; every edge once.
+        edges = set()
+        for f, o in zip(faces, own):
+            idx = [int(np.nonzero((p == c).all(axis=1))[0][0]) for c in f]
+            for e in range(3):
+                a, b = idx[e], idx[(e + 1) % 3]
+                assert bool(o[e]) == ((b - a) % n in (1, n - 1))
+                if o[e]:
+                    edges.add((a, b))
+        assert edges == {(i, (i + 1) % n) for i in range(n)}
+    assert min(kinds.values()) > 10, kinds
