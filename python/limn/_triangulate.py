@@ -9,7 +9,10 @@ a triangle over the valley's floor). The bridge therefore cuts each non-planar p
 whose projected outline is simple into triangles of that outline (ear clipping in the
 view), so that the triangles cover exactly what matplotlib fills; their corners are the
 polygon's own, so each triangle is flat and in place in 3D. Which triangle edges are the
-polygon's own edges is kept, so that only those are stroked.
+polygon's own edges is kept, so that only those are stroked. A quadrilateral whose
+outline crosses itself (a bow-tie: a twisted strip of ``fill_between`` seen edge-on)
+is filled by matplotlib as its two lobes, once each; it goes to limn as those two
+triangles, meeting where the outline crosses itself.
 """
 
 from __future__ import annotations
@@ -104,16 +107,19 @@ def ear_clip(q: np.ndarray) -> List[Tuple[int, int, int]]:
     return tris
 
 
-def _darts(corners: List[np.ndarray], project) -> np.ndarray:
+def _darts(corners: List[np.ndarray], project) -> Tuple[np.ndarray, np.ndarray]:
     """Per polygon, the reflex corner of a quadrilateral whose projected outline is a dart
-    (simple, one reflex corner), -1 for every other polygon; all quadrilaterals at once.
-    Either diagonal cuts a convex quad into triangles covering its outline, so convex
-    quads (most cells of a curved surface) go to limn whole, as do bow-ties and quads with
-    a straight or doubled corner; a dart is cut from its reflex corner."""
+    (simple, one reflex corner), -1 for every other polygon, and whether it is a
+    quadrilateral whose outline is a bow-tie (two edges crossing); all quadrilaterals at
+    once. Either diagonal cuts a convex quad into triangles covering its outline, so
+    convex quads (most cells of a curved surface) go to limn whole, as do quads with a
+    straight or doubled corner; a dart is cut from its reflex corner, a bow-tie into its
+    two lobes (matplotlib fills both)."""
     reflex = np.full(len(corners), -1)
+    bowtie = np.zeros(len(corners), dtype=bool)
     quads = np.array([k for k, p in enumerate(corners) if len(p) == 4], dtype=int)
     if not len(quads):
-        return reflex
+        return reflex, bowtie
     q = project(np.concatenate([corners[k] for k in quads])).reshape(-1, 4, 2)
     turn = _cross(np.roll(q, 1, axis=1), q, np.roll(q, -1, axis=1))  # at each corner
     with np.errstate(invalid="ignore"):
@@ -125,7 +131,29 @@ def _darts(corners: List[np.ndarray], project) -> np.ndarray:
     dart = ((pos == 3) & (neg == 1) & (area > 0)) | ((neg == 3) & (pos == 1) & (area < 0))
     odd = np.where(area[:, None] > 0, turn < 0, turn > 0)
     reflex[quads[dart]] = np.argmax(odd[dart], axis=1)
-    return reflex
+    bowtie[quads[(pos == 2) & (neg == 2)]] = True
+    return reflex, bowtie
+
+
+def _lobes(p: np.ndarray, q: np.ndarray):
+    """The two triangles of a quadrilateral (4, 3) whose projected outline (4, 2) is a
+    bow-tie: each lobe's corner where the outline crosses itself is the middle of the two
+    crossing edges' points that project there (the same point in the view). ``None``
+    when no two opposite edges cross properly."""
+    if not np.isfinite(q).all():
+        return None
+    for i in (0, 1):
+        a, b, c, d = (q[(i + j) % 4] for j in range(4))
+        den = (b[0] - a[0]) * (d[1] - c[1]) - (b[1] - a[1]) * (d[0] - c[0])
+        if den == 0:
+            continue
+        s = ((c[0] - a[0]) * (d[1] - c[1]) - (c[1] - a[1]) * (d[0] - c[0])) / den
+        u = ((c[0] - a[0]) * (b[1] - a[1]) - (c[1] - a[1]) * (b[0] - a[0])) / den
+        if 0 < s < 1 and 0 < u < 1:
+            P = [p[(i + j) % 4] for j in range(4)]
+            x = ((P[0] + s * (P[1] - P[0])) + (P[2] + u * (P[3] - P[2]))) / 2
+            return [np.array([x, P[1], P[2]]), np.array([x, P[3], P[0]])]
+    return None
 
 
 def view_triangles(
@@ -140,9 +168,17 @@ def view_triangles(
     faces: List[np.ndarray] = []
     owner: List[int] = []
     own: List[np.ndarray] = []
-    reflex = _darts(corners, project)
+    reflex, bowtie = _darts(corners, project)
     for k, p in enumerate(corners):
         n = len(p)
+        if bowtie[k]:
+            lobes = _lobes(p, project(p))
+            if lobes is not None:
+                for t in lobes:
+                    faces.append(t)
+                    owner.append(k)
+                    own.append(np.ones(3, dtype=bool))
+                continue
         if reflex[k] >= 0 and not planar(p):
             r = int(reflex[k])
             cuts = ((r, r + 1, r + 2), (r, r + 2, r + 3))
