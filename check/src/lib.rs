@@ -3,8 +3,9 @@
 //!
 //! The painter's face ids come from [`rasterize_ids`] over the ordered fragments (the last
 //! painted wins at every pixel centre); the reference renders with the camera the
-//! ordering used and its near and far planes (culling back faces exactly when the
-//! ordering was asked to cull every back face); the band of ambiguous pixel centres
+//! ordering used and its near and far planes, culling the back faces of exactly the
+//! objects whose back faces the ordering culled ([`Ordered::culled_objects`]: with
+//! `--cull auto`, the closed opaque ones), each back face by its own exact test; the band of ambiguous pixel centres
 //! surrounds every scene edge and every fragment edge (fragments also trace where faces
 //! pierce each other and where the near plane cuts them). The scene's lines are compared
 //! too ([`Painted::compare_lines`]): the painter's visible pieces against the z-buffer's
@@ -61,8 +62,10 @@ pub struct Painted {
     pub ordered: Ordered,
     /// Which fragment's face covers each pixel centre (the last painted wins).
     pub ids: IdImage,
-    /// Reference options matching the ordering: its near and far planes, culling on
-    /// exactly when the ordering was asked to cull every back face.
+    /// Reference options matching the ordering: its near and far planes, and the back
+    /// faces of the objects the ordering culled them of culled
+    /// ([`RenderOptions::cull_objects`]; `cull_back_faces` says whether it was asked to
+    /// cull every back face).
     pub ropts: RenderOptions,
     /// Scene edges (as the reference clips them) and every fragment edge.
     pub edges: Vec<Segment2>,
@@ -92,7 +95,7 @@ impl Painted {
     ) -> Result<IdImage, CheckError> {
         let opts = RenderOptions {
             depth,
-            ..self.ropts
+            ..self.ropts.clone()
         };
         Ok(render(scene, self.camera(), method, &opts)?.ids)
     }
@@ -122,6 +125,7 @@ pub fn paint(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Pain
     let ids = rasterize_ids(&polys, w, h);
     let ropts = RenderOptions {
         cull_back_faces: opts.cull == CullMode::On,
+        cull_objects: Some(ordered.culled_objects.as_slice().into()),
         near_far: Some((ordered.near, ordered.far)),
         ..RenderOptions::default()
     };

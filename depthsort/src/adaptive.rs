@@ -408,8 +408,9 @@ mod tests {
         let k = ExactKernel::new();
         let scene = torus(100, 100);
         let (mut ctx, near) = Ctx::framing(&k, &scene, 400, 300);
-        let (set, _) =
-            crate::prepare::prepare(&mut ctx, &scene, CullMode::Auto, near).expect("a valid scene");
+        let set = crate::prepare::prepare(&mut ctx, &scene, CullMode::Auto, near)
+            .expect("a valid scene")
+            .items;
         assert!(!crowded(&ctx, &set));
         ctx.faces_met = std::sync::Arc::from([]);
         assert!(crowded(&ctx, &set));

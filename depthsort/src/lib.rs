@@ -110,6 +110,10 @@ pub struct Ordered {
     /// and with one facing, so that its projected outline is exactly the union of its
     /// fragments (painters may then paint the whole face in place of its first fragment).
     pub whole_faces: Vec<bool>,
+    /// Per object: whether its back faces were culled (every object with
+    /// [`CullMode::On`], none with [`CullMode::Off`], the closed opaque ones with
+    /// [`CullMode::Auto`]), so that a reference can cull the same.
+    pub culled_objects: Vec<bool>,
 }
 
 /// Orders `scene` as seen by `camera` with the kernel and mode of `opts`.
@@ -167,6 +171,7 @@ fn empty(scene: &Scene, camera: &Camera) -> Ordered {
         near,
         far,
         whole_faces: vec![false; scene.faces.len()],
+        culled_objects: vec![false; scene.objects.len()],
     }
 }
 
@@ -191,7 +196,11 @@ fn ordered<K: Kernel>(
         .max_fragments
         .unwrap_or_else(|| default_max_fragments(scene.faces.len()));
     ctx.limit = limit;
-    let (items, whole_faces) = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
+    let prepare::PreparedFaces {
+        items,
+        whole: whole_faces,
+        culled_objects,
+    } = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
     let t1 = Instant::now();
     let order = sort(&mut ctx, items, opts);
     if ctx.exceeded {
@@ -235,6 +244,7 @@ fn ordered<K: Kernel>(
         near,
         far,
         whole_faces,
+        culled_objects,
     };
     Ok((ordered, polys))
 }

@@ -63,15 +63,24 @@ pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
     ok
 }
 
-/// Converts, culls and clips every face; returns the ids of the pieces to order, and per
-/// face whether all of it takes part unclipped with one facing (so its projected outline
-/// is exactly the union of its fragments).
+/// What [`prepare`] returns.
+pub(crate) struct PreparedFaces {
+    /// The ids of the pieces to order.
+    pub(crate) items: Vec<u32>,
+    /// Per face, whether all of it takes part unclipped with one facing (so its
+    /// projected outline is exactly the union of its fragments).
+    pub(crate) whole: Vec<bool>,
+    /// Per object, whether its back faces are culled.
+    pub(crate) culled_objects: Vec<bool>,
+}
+
+/// Converts, culls and clips every face.
 pub(crate) fn prepare<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     scene: &Scene,
     cull: CullMode,
     near: f64,
-) -> Result<(Vec<u32>, Vec<bool>), OrderError> {
+) -> Result<PreparedFaces, OrderError> {
     let mut whole = vec![false; scene.faces.len()];
     let canon = canonical_vertices(scene);
     let closed = match cull {
@@ -128,7 +137,11 @@ pub(crate) fn prepare<K: Kernel>(
     }
     ctx.stats.polygons = items.len();
     ctx.quad_halves = quad_halves.into();
-    Ok((items, whole))
+    Ok(PreparedFaces {
+        items,
+        whole,
+        culled_objects: closed,
+    })
 }
 
 /// What [`add_block`] records besides the pieces: the ids to order, and per face whether

@@ -158,8 +158,9 @@ mod tests {
         for (n, size) in [(400, 0.05), (500, 0.3), (700, 0.6)] {
             let scene = soup(n, size, 11);
             let (mut ctx, near) = Ctx::framing(&k, &scene, 400, 300);
-            let (set, _) = crate::prepare::prepare(&mut ctx, &scene, CullMode::Off, near)
-                .expect("a valid scene");
+            let set = crate::prepare::prepare(&mut ctx, &scene, CullMode::Off, near)
+                .expect("a valid scene")
+                .items;
             let probe = Probe::new(&ctx, &set);
             for block in [0..PROBE_FIRST, PROBE_FIRST..PROBE_SAMPLE] {
                 let all = probe.conflicts(block.clone(), usize::MAX);

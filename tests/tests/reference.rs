@@ -176,7 +176,7 @@ fn zbuffer_errors(case: &Case, p: &Painted, depth: DepthFormat, near_far: (f64, 
     let opts = RenderOptions {
         depth,
         near_far: Some(near_far),
-        ..p.ropts
+        ..p.ropts.clone()
     };
     let z = render(&case.scene, p.camera(), Method::ZBuffer, &opts).unwrap();
     let r = p

@@ -22,7 +22,7 @@ pub enum ZError {
         far: f64,
     },
     /// A coordinate lies outside the range a method accepts (see [`crate::MAX_COORD`] and
-    /// [`crate::MIN_RAYCAST_COORD`]).
+    /// [`crate::MIN_RAYCAST_COORD`] for ray casting's shadow rays).
     #[error("{what} coordinate {value:e} is outside the accepted range")]
     OutOfRange {
         /// Which input the coordinate belongs to ("vertex", "eye", "ray").

@@ -99,6 +99,8 @@ pub const MAX_COORD: f64 = 1.2676506002282294e30;
 /// buffers would need tens of gigabytes.
 pub const MAX_PIXELS: u64 = 1 << 28;
 
-/// The smallest non-zero coordinate magnitude ray casting accepts (2⁻¹⁰⁰ ≈ 7.9e-31), so
-/// that its exact arithmetic never underflows.
+/// The smallest non-zero coordinate magnitude (2⁻¹⁰⁰ ≈ 7.9e-31) at which ray casting's
+/// f64 expansions never underflow: triangles with a smaller coordinate are decided with
+/// big integers instead, and shadow rays (ray casting with lights that cast shadows)
+/// refuse them.
 pub const MIN_RAYCAST_COORD: f64 = 7.888609052210118e-31;

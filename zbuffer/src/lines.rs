@@ -10,7 +10,7 @@
 //! exactly half-way and the float sum lands on either side.
 
 use crate::image::{IdImage, NO_FACE};
-use crate::setup::{prepare, Collect, Frame, ScreenVert};
+use crate::setup::{prepare, Collect, Culling, Frame, ScreenVert};
 use crate::zbuf::zbuffer;
 use crate::{RenderOptions, ZError};
 use limn_scene::{Camera, Scene};
@@ -140,18 +140,13 @@ pub fn wireframe(
     let frame = Frame::new(scene, camera, opts)?;
     let (w, h) = (frame.width, frame.height);
     let mut edges = Vec::new();
-    prepare(
-        scene,
-        &frame,
-        opts.cull_back_faces,
-        Collect::Edges(&mut edges),
-    );
+    prepare(scene, &frame, Culling::of(opts), Collect::Edges(&mut edges));
     let zb = if lines.hidden_line {
         let mut prep = Default::default();
         prepare(
             scene,
             &frame,
-            opts.cull_back_faces,
+            Culling::of(opts),
             Collect::Triangles(&mut prep),
         );
         Some(zbuffer(&prep, w, h, opts.depth))
@@ -270,7 +265,7 @@ pub fn scene_lines(
     prepare(
         scene,
         &frame,
-        opts.cull_back_faces,
+        Culling::of(opts),
         Collect::Triangles(&mut prep),
     );
     let zb = zbuffer(&prep, w, h, crate::DepthFormat::F64);

@@ -19,11 +19,14 @@
 //!   decide, evaluated exactly with floating-point expansions. Exactly equal depths go
 //!   to the later face in input order (the painter's rule for coplanar faces).
 //!
-//! Accepted input: every non-zero coordinate of the eye and of face vertices must have
-//! magnitude in `[MIN_RAYCAST_COORD, MAX_COORD]` = [2⁻¹⁰⁰, 2¹⁰⁰]. `robust::orient3d` is
-//! exact for exponents in −142..201 and the expansions stay exact for products of six
-//! such numbers. Ray endpoint coordinates below 2⁻¹⁰⁰ in magnitude are flushed to zero
-//! (they are rounded values anyway).
+//! Accepted input: every finite coordinate up to [`crate::MAX_COORD`] (2¹⁰⁰), as for the
+//! other methods. A triangle whose non-zero coordinates all have magnitude in
+//! `[MIN_RAYCAST_COORD, MAX_COORD]` = [2⁻¹⁰⁰, 2¹⁰⁰] is tested with `robust::orient3d`
+//! (exact for exponents in −142..201) and f64 expansions (exact for products of six
+//! such numbers); any other triangle (a coordinate of 5e-36, say) with big integers
+//! ([`exact::Big`]), exact for every finite value; so is every test of a ray whose
+//! endpoints have such a coordinate. Shadow rays still need every vertex in range (an
+//! error names the coordinate otherwise).
 //!
 //! Depth is reported as f64 window depth of the hit point; the depth format option does
 //! not apply.
@@ -35,7 +38,7 @@ use robust::{orient3d, Coord3D};
 use crate::bvh::{Bvh, Segment};
 use crate::exact;
 use crate::image::NO_FACE;
-use crate::setup::{face_triangles, is_back_face, Frame};
+use crate::setup::{face_triangles, Culling, Frame};
 use crate::shadow_rays::{Casters, Hit as ShadowHit};
 use crate::{ZError, MIN_RAYCAST_COORD};
 
@@ -63,6 +66,9 @@ struct Tri {
     face: u32,
     /// On-screen direction of each edge `k → k+1`: (sign of dx, sign of dy), pixels.
     dir: [(i8, i8); 3],
+    /// Every coordinate within the range where `robust` and the expansions are exact;
+    /// otherwise every decision about the triangle is made with big integers.
+    in_range: bool,
 }
 
 #[derive(Clone, Copy)]
@@ -107,13 +113,6 @@ fn check_small(what: &'static str, p: DVec3) -> Result<(), ZError> {
     Ok(())
 }
 
-fn flush(p: DVec3) -> DVec3 {
-    DVec3::from_array(
-        p.to_array()
-            .map(|v| if v.abs() < MIN_RAYCAST_COORD { 0.0 } else { v }),
-    )
-}
-
 /// Screen direction signs of the edge `a → b` from clip coordinates, computed in a
 /// canonical order so that `b → a` gets exactly the opposite signs.
 fn edge_dir(frame: &Frame, a: DVec3, b: DVec3) -> (i8, i8) {
@@ -137,16 +136,19 @@ fn edge_dir(frame: &Frame, a: DVec3, b: DVec3) -> (i8, i8) {
 pub(crate) fn raycast(
     scene: &Scene,
     frame: &Frame,
-    cull: bool,
+    cull: Culling<'_>,
     mut casters: Option<&mut Casters>,
 ) -> Result<Output, ZError> {
-    check_small("eye", frame.camera.eye)?;
+    // Shadow rays are exact only in range.
+    if casters.is_some() {
+        check_small("eye", frame.camera.eye)?;
+    }
     let mut tris = Vec::new();
     let mut scratch = Vec::new();
     let mut local = Vec::new();
     let mut culled_faces = 0;
     for f in 0..scene.faces.len() {
-        if cull && is_back_face(scene, f, frame.viewpoint) {
+        if cull.drops(scene, f, frame.viewpoint) {
             culled_faces += 1;
             continue;
         }
@@ -154,14 +156,17 @@ pub(crate) fn raycast(
         face_triangles(scene, f, &mut scratch, &mut local);
         for &(t, _) in &local {
             let p = t.map(|v| scene.vertices[v as usize]);
-            for &q in &p {
-                check_small("vertex", q)?;
+            if casters.is_some() {
+                for &q in &p {
+                    check_small("vertex", q)?;
+                }
             }
             let dir = [0, 1, 2].map(|k| edge_dir(frame, p[k], p[(k + 1) % 3]));
             tris.push(Tri {
                 p,
                 face: f as u32,
                 dir,
+                in_range: p.iter().all(|&q| exact::in_range(q)),
             });
         }
     }
@@ -196,14 +201,15 @@ pub(crate) fn raycast(
             let nx = (i as f64 + 0.5) / w as f64 * 2.0 - 1.0;
             let un = |z: f64| {
                 let q = inv * DVec4::new(nx, ny, z, 1.0);
-                flush(q.truncate() / q.w)
+                q.truncate() / q.w
             };
             let (pn, pf) = (un(-1.0), un(1.0));
             if !(pn.is_finite() && pf.is_finite()) || pn == pf {
                 continue;
             }
             let seg = Segment::new(pn, pf);
-            let best = cast(&tris, &bvh, &seg, &mut stack, &mut out);
+            let in_range = exact::in_range(pn) && exact::in_range(pf);
+            let best = cast(&tris, &bvh, &seg, in_range, &mut stack, &mut out);
             if let Some(hit) = best {
                 let t = hit.an / (hit.an - hit.af);
                 let t = if t.is_finite() {
@@ -238,6 +244,7 @@ fn cast(
     tris: &[Tri],
     bvh: &Bvh,
     seg: &Segment,
+    in_range: bool,
     stack: &mut Vec<(u32, f64)>,
     out: &mut Output,
 ) -> Option<Hit> {
@@ -255,7 +262,7 @@ fn cast(
         if node.count > 0 {
             for k in node.first..node.first + node.count {
                 out.tests += 1;
-                let Some(hit) = test(&tris[k as usize], k, pn, pf) else {
+                let Some(hit) = test(&tris[k as usize], k, pn, pf, in_range) else {
                     continue;
                 };
                 best = Some(match best {
@@ -293,15 +300,25 @@ fn cast(
 
 /// The exact segment–triangle test.
 #[inline]
-fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3) -> Option<Hit> {
+fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3, ray_in_range: bool) -> Option<Hit> {
     let [a, b, c] = tri.p;
     let (cn, cf) = (c3(pn), c3(pf));
     let corners = [c3(a), c3(b), c3(c)];
+    // Out of range, every sign by big integers over the five points' smallest exponent.
+    let big = !(tri.in_range && ray_in_range);
+    let big = big.then(|| exact::Big::new(&[a, b, c, pn, pf]));
+    let orient = |p: DVec3, q: DVec3, r: DVec3, s: DVec3| match &big {
+        Some(big) => exact::big_sign(&big.orient3d(p, q, r, s)),
+        None => sgn(orient3d(c3(p), c3(q), c3(r), c3(s))),
+    };
     // Edge signs, stopping at the first edge with the other sign.
     let mut e = [0i8; 3];
     let mut s = 0i8;
     for i in 0..3 {
-        e[i] = sgn(orient3d(cn, cf, corners[i], corners[(i + 1) % 3]));
+        e[i] = match big {
+            Some(_) => orient(pn, pf, tri.p[i], tri.p[(i + 1) % 3]),
+            None => sgn(orient3d(cn, cf, corners[i], corners[(i + 1) % 3])),
+        };
         if e[i] != 0 {
             if s == 0 {
                 s = e[i];
@@ -328,8 +345,8 @@ fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3) -> Option<Hit> {
             return None;
         }
     }
-    let sn = sgn(orient3d(c3(a), c3(b), c3(c), c3(pn)));
-    let sf = sgn(orient3d(c3(a), c3(b), c3(c), c3(pf)));
+    let sn = orient(a, b, c, pn);
+    let sf = orient(a, b, c, pf);
     if sn == sf {
         return None; // same side, or the segment lies in the plane
     }
@@ -342,7 +359,8 @@ fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3) -> Option<Hit> {
     }
     let num = (an + ean).max(0.0);
     let den = (-af - eaf).max(0.0);
-    let t_hi = if num + den > 0.0 {
+    // Out of range the floats may have underflowed: no bound, no pruning.
+    let t_hi = if big.is_none() && num + den > 0.0 {
         (num / (num + den)) * (1.0 + 1e-12) + 1e-12
     } else {
         1.0
@@ -361,6 +379,18 @@ fn test(tri: &Tri, k: u32, pn: DVec3, pf: DVec3) -> Option<Hit> {
 /// Whether hit `x` is nearer than hit `y`, exactly; equal depths go to the later face.
 fn nearer(tris: &[Tri], x: &Hit, y: &Hit, pn: DVec3, pf: DVec3, fallbacks: &mut u64) -> bool {
     // t_x < t_y  ⟺  αn·βf − βn·αf > 0 (with αn ≥ 0 ≥ αf, likewise β).
+    let all_in_range = tris[x.tri as usize].in_range
+        && tris[y.tri as usize].in_range
+        && exact::in_range(pn)
+        && exact::in_range(pf);
+    if !all_in_range {
+        *fallbacks += 1;
+        return match big_sign(tris, x, y, pn, pf) {
+            1 => true,
+            -1 => false,
+            _ => tris[x.tri as usize].face > tris[y.tri as usize].face,
+        };
+    }
     let p1 = x.an * y.af;
     let p2 = y.an * x.af;
     let v = p1 - p2;
@@ -382,6 +412,28 @@ fn nearer(tris: &[Tri], x: &Hit, y: &Hit, pn: DVec3, pf: DVec3, fallbacks: &mut 
         -1 => false,
         _ => tris[x.tri as usize].face > tris[y.tri as usize].face,
     }
+}
+
+/// [`exact_sign`] with big integers, for triangles out of the expansions' range: all
+/// four `orient3d` over one common exponent, so each is its value times the same power
+/// of two and the comparison keeps its sign.
+fn big_sign(tris: &[Tri], x: &Hit, y: &Hit, pn: DVec3, pf: DVec3) -> i8 {
+    let [a, b, c] = tris[x.tri as usize].p;
+    let [d, e, f] = tris[y.tri as usize].p;
+    let big = exact::Big::new(&[a, b, c, d, e, f, pn, pf]);
+    let alphas = |[a, b, c]: [DVec3; 3]| {
+        let n = big.orient3d(a, b, c, pn);
+        let f = big.orient3d(a, b, c, pf);
+        let (sn, sf) = (exact::big_sign(&n), exact::big_sign(&f));
+        if sn < 0 || (sn == 0 && sf > 0) {
+            (-n, -f)
+        } else {
+            (n, f)
+        }
+    };
+    let (xn, xf) = alphas([a, b, c]);
+    let (yn, yf) = alphas([d, e, f]);
+    exact::big_sign(&(xn * yf - yn * xf))
 }
 
 fn exact_sign(tris: &[Tri], x: &Hit, y: &Hit, pn: DVec3, pf: DVec3) -> i32 {

@@ -14,10 +14,11 @@ use thiserror::Error;
 use crate::abuffer::{abuffer, FaceLook};
 use crate::image::{rgb_to_u8, ColorImage, DepthImage, IdImage, NO_FACE};
 use crate::pixel_rays::PixelRays;
-use crate::setup::{prepare, Collect, Frame, Prepared};
+use crate::setup::{prepare, Collect, Culling, Frame, Prepared};
 use crate::shadow_map::{ShadowMapOptions, ShadowMaps};
 use crate::shadow_rays::Casters;
 use crate::{pixel_shading, raycast, scanline, warnock, zbuf, DepthFormat, Segment2, ZError};
+use std::sync::Arc;
 
 /// An image-space hidden-surface method.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -79,13 +80,18 @@ impl FromStr for Method {
 }
 
 /// Options shared by every method.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct RenderOptions {
     /// How depth is stored (z-buffer, scan-line, Warnock and A-buffer ordering; ray
     /// casting is always exact). Default [`DepthFormat::F64`].
     pub depth: DepthFormat,
     /// Drop faces whose plane has the eye strictly behind it. Default `false`.
     pub cull_back_faces: bool,
+    /// Per object (indexed like the scene's objects), whether its back faces are
+    /// dropped; when given, it decides in place of [`RenderOptions::cull_back_faces`]
+    /// (objects beyond its end are not culled). What a painter culled per object, so
+    /// that a reference culls the same. Default `None`.
+    pub cull_objects: Option<Arc<[bool]>>,
     /// Near and far distances; when `None`, the camera's own, else chosen from the
     /// scene's bounds by `Camera::near_far`. Default `None`.
     pub near_far: Option<(f64, f64)>,
@@ -93,11 +99,22 @@ pub struct RenderOptions {
     pub background: [f64; 3],
 }
 
+impl RenderOptions {
+    /// Whether the back faces of `object` are dropped.
+    pub fn culls(&self, object: u32) -> bool {
+        match &self.cull_objects {
+            Some(c) => c.get(object as usize).copied().unwrap_or(false),
+            None => self.cull_back_faces,
+        }
+    }
+}
+
 impl Default for RenderOptions {
     fn default() -> Self {
         RenderOptions {
             depth: DepthFormat::F64,
             cull_back_faces: false,
+            cull_objects: None,
             near_far: None,
             background: [1.0; 3],
         }
@@ -146,9 +163,9 @@ pub struct Raster {
 /// Renders `scene` seen by `camera` with `method`.
 ///
 /// Errors: an invalid scene or camera, a bad near/far override, or coordinates outside
-/// the accepted range ([`crate::MAX_COORD`]; for ray casting also
-/// [`crate::MIN_RAYCAST_COORD`]). Any valid scene renders, including NaN-free
-/// degenerate faces, faces behind the eye and huge coordinates.
+/// the accepted range ([`crate::MAX_COORD`]; for ray casting with a light that casts
+/// shadows also [`crate::MIN_RAYCAST_COORD`]). Any valid scene renders, including
+/// NaN-free degenerate faces, faces behind the eye and huge coordinates.
 pub fn render(
     scene: &Scene,
     camera: &Camera,
@@ -175,7 +192,7 @@ pub fn render_with_shadow_maps(
     let (ids, depths, colors) = match method {
         Method::RayCast => {
             let mut casters = Casters::new(scene)?;
-            let out = raycast::raycast(scene, &frame, opts.cull_back_faces, casters.as_mut())?;
+            let out = raycast::raycast(scene, &frame, Culling::of(opts), casters.as_mut())?;
             shadowed = out.shadowed;
             stats.fragments = out.tests;
             stats.exact_fallbacks = out.exact_fallbacks;
@@ -272,7 +289,7 @@ fn prepared(
     prepare(
         scene,
         frame,
-        opts.cull_back_faces,
+        Culling::of(opts),
         Collect::Triangles(&mut prep),
     );
     stats.triangles = prep.tris.len();
@@ -393,12 +410,7 @@ pub fn scene_edges(
 ) -> Result<Vec<Segment2>, ZError> {
     let frame = Frame::new(scene, camera, opts)?;
     let mut edges = Vec::new();
-    prepare(
-        scene,
-        &frame,
-        opts.cull_back_faces,
-        Collect::Edges(&mut edges),
-    );
+    prepare(scene, &frame, Culling::of(opts), Collect::Edges(&mut edges));
     Ok(edges
         .into_iter()
         .map(|(a, b, _)| ([a.x, a.y], [b.x, b.y]))

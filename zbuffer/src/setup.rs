@@ -12,7 +12,6 @@
 
 use glam::{DMat4, DVec3, DVec4};
 use limn_scene::{polygon_normal, Camera, Scene, Viewpoint};
-use robust::{orient3d, Coord3D};
 
 use crate::triangulate::triangulate;
 use crate::{RenderOptions, ZError, MAX_COORD};
@@ -177,6 +176,42 @@ pub(crate) enum EdgeKind {
     Clip,
 }
 
+/// Which back faces a method drops: those of every object, of none, or of the objects a
+/// [`crate::RenderOptions::cull_objects`] marks.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Culling<'a> {
+    all: bool,
+    objects: Option<&'a [bool]>,
+}
+
+impl<'a> Culling<'a> {
+    /// Nothing culled.
+    pub(crate) const NONE: Culling<'static> = Culling {
+        all: false,
+        objects: None,
+    };
+
+    /// What `opts` asks for.
+    pub(crate) fn of(opts: &'a crate::RenderOptions) -> Culling<'a> {
+        Culling {
+            all: opts.cull_back_faces,
+            objects: opts.cull_objects.as_deref(),
+        }
+    }
+
+    /// Whether face `f` is dropped: its object's back faces are culled and it is one.
+    pub(crate) fn drops(&self, scene: &Scene, f: usize, eye: Viewpoint) -> bool {
+        let culls = match self.objects {
+            Some(c) => c
+                .get(scene.faces[f].object as usize)
+                .copied()
+                .unwrap_or(false),
+            None => self.all,
+        };
+        culls && is_back_face(scene, f, eye)
+    }
+}
+
 /// Whether the eye lies strictly behind the plane of face `f` (exact `orient3d` for
 /// triangles; the sign of the Newell normal against the centroid for larger faces; for
 /// an eye at infinity, the sign of the Newell normal dotted with its direction).
@@ -191,14 +226,9 @@ pub(crate) fn is_back_face(scene: &Scene, f: usize, eye: Viewpoint) -> bool {
         }
     };
     if vs.len() == 3 {
-        let c = |v: DVec3| Coord3D {
-            x: v.x,
-            y: v.y,
-            z: v.z,
-        };
         // Positive when the eye is below the plane, i.e. on the side from which the
-        // corners appear clockwise: behind the face.
-        return orient3d(c(p(0)), c(p(1)), c(p(2)), c(eye)) > 0.0;
+        // corners appear clockwise: behind the face (exact for every finite value).
+        return crate::exact::orient3d_sign(p(0), p(1), p(2), eye) > 0;
     }
     let pts: Vec<DVec3> = (0..vs.len()).map(p).collect();
     let n = polygon_normal(&pts);
@@ -288,7 +318,7 @@ pub(crate) enum Collect<'a> {
 }
 
 /// Culls, triangulates, clips and projects every face.
-pub(crate) fn prepare(scene: &Scene, frame: &Frame, cull: bool, mut collect: Collect<'_>) {
+pub(crate) fn prepare(scene: &Scene, frame: &Frame, cull: Culling<'_>, mut collect: Collect<'_>) {
     let clip: Vec<DVec4> = scene.vertices.iter().map(|&p| frame.clip(p)).collect();
     let codes: Vec<u8> = clip.iter().map(|&c| frame.outcode(c)).collect();
     let mut projected: Vec<u32> = vec![u32::MAX; clip.len()];
@@ -296,7 +326,7 @@ pub(crate) fn prepare(scene: &Scene, frame: &Frame, cull: bool, mut collect: Col
     let mut tris = Vec::new();
     let mut poly = Vec::new();
     for f in 0..scene.faces.len() {
-        if cull && is_back_face(scene, f, frame.viewpoint) {
+        if cull.drops(scene, f, frame.viewpoint) {
             if let Collect::Triangles(p) = &mut collect {
                 p.culled_faces += 1;
             }

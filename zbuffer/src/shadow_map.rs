@@ -21,7 +21,7 @@ use glam::{DMat4, DVec3};
 use limn_scene::{Camera, LightKind, LightSet, Projection, Scene};
 
 use crate::render::RenderOptions;
-use crate::setup::{prepare, Collect, Frame, Prepared};
+use crate::setup::{prepare, Collect, Culling, Frame, Prepared};
 use crate::{zbuf, DepthFormat, ZError};
 
 /// How shadow maps are made and read.
@@ -211,7 +211,7 @@ fn depth_view(scene: &Scene, camera: Camera, near: f64, far: f64) -> Result<View
     };
     let frame = Frame::new(scene, &camera, &opts)?;
     let mut prep = Prepared::default();
-    prepare(scene, &frame, false, Collect::Triangles(&mut prep));
+    prepare(scene, &frame, Culling::NONE, Collect::Triangles(&mut prep));
     let b = zbuf::zbuffer(&prep, camera.width, camera.height, DepthFormat::F64);
     let perspective = matches!(camera.projection, Projection::Perspective);
     let depth = b

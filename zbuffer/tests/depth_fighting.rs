@@ -32,7 +32,10 @@ fn wrong_pixels(
     };
     let band = band(scene, camera, &base);
     for depth in DepthFormat::ALL {
-        let opts = RenderOptions { depth, ..base };
+        let opts = RenderOptions {
+            depth,
+            ..base.clone()
+        };
         for m in [Method::ZBuffer, Method::ScanLine] {
             let r = render(scene, camera, m, &opts).unwrap();
             let c = compare(truth, &r.ids, Some(&band));

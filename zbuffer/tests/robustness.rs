@@ -49,12 +49,10 @@ fn invalid_input_is_an_error_not_a_panic() {
         render(&huge, &c, Method::ZBuffer, &o),
         Err(ZError::OutOfRange { .. })
     ));
+    // Any tiny coordinate is accepted (decided with big integers).
     let mut tiny = s.clone();
     tiny.vertices[0].z = 1e-200;
-    assert!(matches!(
-        render(&tiny, &c, Method::RayCast, &o),
-        Err(ZError::OutOfRange { .. })
-    ));
+    assert!(render(&tiny, &c, Method::RayCast, &o).is_ok());
     assert!(render(&tiny, &c, Method::ZBuffer, &o).is_ok());
     for nf in [
         (0.0, 1.0),
@@ -64,7 +62,7 @@ fn invalid_input_is_an_error_not_a_panic() {
     ] {
         let o = RenderOptions {
             near_far: Some(nf),
-            ..o
+            ..o.clone()
         };
         assert!(matches!(
             render(&s, &c, Method::ZBuffer, &o),
