@@ -1,0 +1,398 @@
+//! The pictures limn writes, opened in the viewers people use: headless Chromium and
+//! rsvg-convert for SVG, poppler (`pdftoppm`) and ghostscript for PDF. Inside smooth
+//! regions of the content (pixels not of the white background whose 5 × 5 neighbourhood in
+//! limn's own anti-aliased PNG varies by less than 24 levels) each viewer's raster agrees with limn's PNG within 12 levels on at
+//! least 99.5 % of the pixels: no lattice of hairlines along the mesh, no seams between
+//! pieces. A viewer that is not installed is skipped with a message (`.ci/run` installs
+//! them: Debian's `chromium`, `librsvg2-bin`, `poppler-utils`, `ghostscript`); the rasters
+//! of a failing picture are kept under `target/viewer-failures/`.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+use common::{limn, put, tempdir};
+
+/// Levels a smooth pixel may differ by.
+const LEVELS: i32 = 12;
+/// The least share of smooth pixels that must agree.
+const AGREE: f64 = 0.995;
+
+/// An 8-bit RGB raster (over white where the PNG has alpha).
+struct Raster {
+    width: usize,
+    height: usize,
+    rgb: Vec<[u8; 3]>,
+}
+
+fn read_png(path: &Path) -> Raster {
+    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+    decoder.set_transformations(png::Transformations::normalize_to_color8());
+    let mut reader = decoder.read_info().expect("a PNG");
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).expect("a frame");
+    let (w, h) = (info.width as usize, info.height as usize);
+    let channels = info.color_type.samples();
+    let rgb = (0..w * h)
+        .map(|i| {
+            let p = &buf[i * channels..];
+            let (rgb, alpha) = match channels {
+                1 => ([p[0]; 3], 255),
+                2 => ([p[0]; 3], p[1]),
+                3 => ([p[0], p[1], p[2]], 255),
+                _ => ([p[0], p[1], p[2]], p[3]),
+            };
+            // Over white, as the viewers show a page.
+            rgb.map(|c| {
+                let a = alpha as u32;
+                ((c as u32 * a + 255 * (255 - a) + 127) / 255) as u8
+            })
+        })
+        .collect();
+    Raster {
+        width: w,
+        height: h,
+        rgb,
+    }
+}
+
+/// Pixels whose 5 × 5 neighbourhood varies by less than 24 levels in every channel.
+fn smooth_interior(r: &Raster) -> Vec<bool> {
+    let (w, h) = (r.width as i64, r.height as i64);
+    let mut out = vec![false; r.rgb.len()];
+    for y in 0..h {
+        for x in 0..w {
+            let (mut lo, mut hi) = ([255u8; 3], [0u8; 3]);
+            for dy in -2..=2 {
+                for dx in -2..=2 {
+                    let (xx, yy) = ((x + dx).clamp(0, w - 1), (y + dy).clamp(0, h - 1));
+                    let p = r.rgb[(yy * w + xx) as usize];
+                    for c in 0..3 {
+                        lo[c] = lo[c].min(p[c]);
+                        hi[c] = hi[c].max(p[c]);
+                    }
+                }
+            }
+            out[(y * w + x) as usize] = (0..3).all(|c| hi[c] - lo[c] < 24);
+        }
+    }
+    out
+}
+
+/// Whether white pixels that both rasters show count.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Page {
+    /// Only the content: white where both are white is left out (filled pictures on a
+    /// white page).
+    LeftOut,
+    /// Everything: for pictures filled in the page's own white (hidden-line drawings),
+    /// where a lattice would show as grey lines on white.
+    Counted,
+}
+
+/// The share of smooth pixels (of `reference`) where `viewer` agrees within [`LEVELS`].
+fn agreement(reference: &Raster, viewer: &Raster, page: Page) -> f64 {
+    assert_eq!(
+        (viewer.width, viewer.height),
+        (reference.width, reference.height),
+        "the viewer's raster has another size"
+    );
+    let smooth = smooth_interior(reference);
+    let (mut n, mut good) = (0usize, 0usize);
+    for (i, s) in smooth.iter().enumerate() {
+        // Smooth pixels of the pictures' content: where both show the white page is left
+        // out, so that a small figure on a large page is judged by its figure.
+        let (a, b) = (reference.rgb[i], viewer.rgb[i]);
+        if !s || (page == Page::LeftOut && a == [255; 3] && b == [255; 3]) {
+            continue;
+        }
+        n += 1;
+        if (0..3).all(|c| (a[c] as i32 - b[c] as i32).abs() <= LEVELS) {
+            good += 1;
+        }
+    }
+    if n == 0 {
+        return 1.0;
+    }
+    good as f64 / n as f64
+}
+
+fn installed(program: &str) -> bool {
+    Command::new("sh")
+        .args(["-c", &format!("command -v {program}")])
+        .stdout(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success())
+}
+
+/// Runs a viewer; panics with its output when it fails.
+fn run(program: &str, args: &[&str]) {
+    let out = Command::new(program)
+        .args(args)
+        .stdin(Stdio::null())
+        .output()
+        .unwrap_or_else(|e| panic!("{program}: {e}"));
+    assert!(
+        out.status.success(),
+        "{program} {args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// The viewers' rasters of `base.svg` and `base.pdf` (those installed), as (name, PNG).
+fn view(dir: &Path, base: &str, w: usize, h: usize) -> Vec<(&'static str, PathBuf)> {
+    let mut out = Vec::new();
+    let svg = dir.join(format!("{base}.svg"));
+    let pdf = dir.join(format!("{base}.pdf"));
+    if installed("chromium") {
+        let page = put(
+            dir,
+            &format!("{base}.html"),
+            format!(
+                "<html><body style=\"margin:0\"><img src=\"{base}.svg\" width=\"{w}\" \
+                 height=\"{h}\"></body></html>"
+            ),
+        );
+        let shot = dir.join(format!("{base}.chromium.png"));
+        let profile = dir.join("chromium-profile");
+        run(
+            "chromium",
+            &[
+                "--headless",
+                "--no-sandbox",
+                "--disable-gpu",
+                "--disable-quic",
+                "--no-first-run",
+                "--disable-background-networking",
+                "--disable-component-update",
+                "--disable-sync",
+                "--hide-scrollbars",
+                "--force-device-scale-factor=1",
+                &format!("--user-data-dir={}", profile.display()),
+                &format!("--window-size={w},{h}"),
+                &format!("--screenshot={}", shot.display()),
+                &format!("file://{}", page.display()),
+            ],
+        );
+        out.push(("chromium", shot));
+    } else {
+        eprintln!("skipped: chromium is not installed");
+    }
+    if installed("rsvg-convert") {
+        let png = dir.join(format!("{base}.rsvg.png"));
+        let (ws, hs) = (w.to_string(), h.to_string());
+        let (svg, png_s) = (svg.display().to_string(), png.display().to_string());
+        run("rsvg-convert", &["-w", &ws, "-h", &hs, "-o", &png_s, &svg]);
+        out.push(("rsvg", png));
+    } else {
+        eprintln!("skipped: rsvg-convert is not installed");
+    }
+    if pdf.exists() && installed("pdftoppm") {
+        let stem = dir.join(format!("{base}.poppler"));
+        let pdf_s = pdf.display().to_string();
+        run(
+            "pdftoppm",
+            &[
+                "-r",
+                "72",
+                "-png",
+                "-singlefile",
+                &pdf_s,
+                &stem.display().to_string(),
+            ],
+        );
+        out.push(("poppler", dir.join(format!("{base}.poppler.png"))));
+    } else if pdf.exists() {
+        eprintln!("skipped: pdftoppm is not installed");
+    }
+    if pdf.exists() && installed("gs") {
+        let png = dir.join(format!("{base}.gs.png"));
+        run(
+            "gs",
+            &[
+                "-q",
+                "-dSAFER",
+                "-dNOPAUSE",
+                "-dBATCH",
+                "-sDEVICE=png16m",
+                "-r72",
+                "-dTextAlphaBits=4",
+                "-dGraphicsAlphaBits=4",
+                &format!("-sOutputFile={}", png.display()),
+                &pdf.display().to_string(),
+            ],
+        );
+        out.push(("ghostscript", png));
+    } else if pdf.exists() {
+        eprintln!("skipped: gs is not installed");
+    }
+    out
+}
+
+/// Keeps the rasters of a failing picture for inspection.
+fn keep(base: &str, files: &[PathBuf]) -> PathBuf {
+    let target = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .join("target")
+        .join("viewer-failures")
+        .join(base);
+    let _ = std::fs::create_dir_all(&target);
+    for f in files {
+        if let Some(name) = f.file_name() {
+            let _ = std::fs::copy(f, target.join(name));
+        }
+    }
+    target
+}
+
+/// Writes `base` as PNG, SVG and PDF with `args` (the input first) and checks every
+/// installed viewer against the PNG.
+fn agrees_in_viewers(dir: &Path, base: &str, args: &[&str], page: Page) {
+    for ext in ["png", "svg", "pdf"] {
+        let out = format!("{base}.{ext}");
+        let mut a: Vec<&str> = vec!["render"];
+        a.extend(args);
+        a.extend(["-o", &out, "--quiet"]);
+        let r = limn(dir, &a);
+        assert_eq!(r.code, 0, "limn {a:?}: {}", r.stderr);
+    }
+    viewers_agree(dir, base, page);
+}
+
+/// Checks every installed viewer's raster of `base.svg` and `base.pdf` against limn's
+/// own `base.png`.
+fn viewers_agree(dir: &Path, base: &str, page: Page) {
+    let reference = read_png(&dir.join(format!("{base}.png")));
+    let mut report = Vec::new();
+    let mut files = vec![dir.join(format!("{base}.png"))];
+    let mut failed = false;
+    for (viewer, png) in view(dir, base, reference.width, reference.height) {
+        let share = agreement(&reference, &read_png(&png), page);
+        report.push(format!("{viewer} {:.2} %", 100.0 * share));
+        failed |= share < AGREE;
+        files.push(png);
+    }
+    eprintln!("{base}: {}", report.join(", "));
+    if failed {
+        let kept = keep(base, &files);
+        panic!(
+            "{base}: smooth pixels agreeing with limn's PNG within {LEVELS} levels: {} \
+             (at least {:.1} % wanted; rasters kept in {})",
+            report.join(", "),
+            100.0 * AGREE,
+            kept.display()
+        );
+    }
+}
+
+#[test]
+#[ignore = "the demo's icosphere shows its mesh as light hairlines in Chromium and rsvg \
+            (92 % of smooth pixels agree)"]
+fn the_demo_is_seamless_in_every_viewer() {
+    let dir = tempdir();
+    // `limn demo` writes the built-in scene; the PNG is limn's own anti-aliased raster.
+    for ext in ["png", "svg", "pdf"] {
+        let out = format!("demo.{ext}");
+        let r = limn(dir.path(), &["demo", "-o", &out, "--quiet"]);
+        assert_eq!(r.code, 0, "{}", r.stderr);
+    }
+    viewers_agree(dir.path(), "demo", Page::LeftOut);
+}
+
+/// A UV sphere of `n` rings as OBJ with vertex normals (smooth shading), in material `m`.
+fn sphere_obj(n: usize, material: &str) -> String {
+    let mut s = format!("mtllib m.mtl\nusemtl {material}\n");
+    let m = 2 * n;
+    for i in 0..=n {
+        let th = std::f64::consts::PI * i as f64 / n as f64;
+        for j in 0..m {
+            let ph = std::f64::consts::TAU * j as f64 / m as f64;
+            let p = [th.sin() * ph.cos(), th.cos(), th.sin() * ph.sin()];
+            s += &format!(
+                "v {} {} {}\nvn {} {} {}\n",
+                p[0], p[1], p[2], p[0], p[1], p[2]
+            );
+        }
+    }
+    for i in 0..n {
+        for j in 0..m {
+            let a = i * m + j + 1;
+            let b = i * m + (j + 1) % m + 1;
+            let (c, d) = (a + m, b + m);
+            s += &format!("f {a}//{a} {b}//{b} {d}//{d}\nf {a}//{a} {d}//{d} {c}//{c}\n");
+        }
+    }
+    s
+}
+
+const MATERIALS: &str = "newmtl gold\nKd 0.8 0.6 0.2\nKs 0.5 0.5 0.5\nNs 40\nillum 2\n\
+                         newmtl glass\nKd 0.2 0.4 0.9\nd 0.5\nillum 1\n";
+
+/// Writes the spheres and their materials into `dir` and renders `input` as `base` with
+/// `extra` flags, then checks the viewers.
+fn sphere_in_viewers(base: &str, input: &str, extra: &[&str]) {
+    let dir = tempdir();
+    put(dir.path(), "m.mtl", MATERIALS);
+    put(dir.path(), "sphere.obj", sphere_obj(24, "gold"));
+    put(dir.path(), "glass.obj", sphere_obj(16, "glass"));
+    let mut a = vec![
+        input,
+        "--eye",
+        "0.5,1.2,3.5",
+        "--target",
+        "0,0,0",
+        "--size",
+        "400x300",
+    ];
+    a.extend(extra);
+    agrees_in_viewers(dir.path(), base, &a, Page::LeftOut);
+}
+
+#[test]
+fn a_gouraud_sphere_is_seamless_in_every_viewer() {
+    sphere_in_viewers("gouraud", "sphere.obj", &[]);
+}
+
+#[test]
+#[ignore = "SVG Phong pieces still show their seams in Chromium and rsvg (99.3 % agree)"]
+fn a_phong_sphere_is_seamless_in_every_viewer() {
+    sphere_in_viewers("phong", "sphere.obj", &["--shading", "phong"]);
+}
+
+#[test]
+fn a_flat_sphere_is_seamless_in_every_viewer() {
+    sphere_in_viewers("flat", "sphere.obj", &["--shading", "flat"]);
+}
+
+#[test]
+#[ignore = "a translucent smooth sphere: poppler draws the PDF's mesh shading opaque, \
+            ghostscript and the SVG viewers blend its seams twice"]
+fn a_translucent_sphere_is_seamless_in_every_viewer() {
+    sphere_in_viewers("translucent", "glass.obj", &[]);
+}
+
+fn figure_in_viewers(base: &str, figure: &str, extra: &[&str], page: Page) {
+    let dir = tempdir();
+    let docs = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../docs");
+    let figure = docs.join(figure).display().to_string();
+    let mut a = vec![figure.as_str(), "--size", "480x360"];
+    a.extend(extra);
+    agrees_in_viewers(dir.path(), base, &a, page);
+}
+
+#[test]
+fn the_shadow_figure_is_seamless_in_every_viewer() {
+    figure_in_viewers("shadows", "shadows/figure.toml", &[], Page::LeftOut);
+}
+
+#[test]
+fn a_hidden_line_drawing_is_seamless_in_every_viewer() {
+    figure_in_viewers(
+        "hidden-line",
+        "lines/figure.toml",
+        &["--style", "hidden-line"],
+        Page::Counted,
+    );
+}
