@@ -1,5 +1,12 @@
 //! Seam flaps: closing the hairlines viewers leave between adjacent fills without moving
 //! any boundary of the picture.
+//!
+//! A flap is painted in an earlier fragment's colour under a later fragment, so it must
+//! lie inside that later fragment: the flap is clipped from it in f64, and kept only
+//! where orientation tests exact on the f64 coordinates show that every point it fills
+//! is one the later fragment fills ([`flap`]). Rounding alone cannot move a boundary
+//! then, however far a corner of the later fragment lies (a crossing computed from a
+//! corner 10¹² px away is off by 10⁻⁵ px, more than the edge band of a check).
 
 use std::sync::atomic::{AtomicU32, Ordering};
 
@@ -35,11 +42,12 @@ fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
 /// with an opaque fragment of another face painted *later*, a flap in the first
 /// fragment's colour (for a smooth fragment: the mean of the edge's end colours, flat)
 /// is painted right after it: the part of the later fragment within
-/// `width` pixels of the shared edge. The later fragment covers its flaps entirely, so
-/// the picture stays exactly the same at every point (the flap only fills the
-/// anti-aliased pixels under the shared edge): silhouettes, edges against faces painted
-/// earlier and translucent faces get no flap. Every flap is a fragment of its own
-/// ([`FlapJoin::Separate`]).
+/// `width` pixels of the shared edge (or, where that part cannot be shown to lie inside
+/// the later fragment, the later fragment itself). The later fragment covers its flaps
+/// entirely, decided exactly, so the picture stays exactly the same at every point (the
+/// flap only fills the anti-aliased pixels under the shared edge): silhouettes, edges
+/// against faces painted earlier and translucent faces get no flap. Every flap is a
+/// fragment of its own ([`FlapJoin::Separate`]).
 pub fn seam_flaps(fragments: Vec<PaintFragment>, width: f64) -> Vec<PaintFragment> {
     seam_flaps_indexed(fragments, width, FlapJoin::Separate).0
 }
@@ -448,38 +456,282 @@ impl LaterNeighbours {
 /// Edges per parallel task of [`LaterNeighbours::new`], at least.
 const EDGES_PER_TASK: usize = 8192;
 
-/// The part of `poly` within `width` of the line through `a` and `b` (on `poly`'s side),
-/// by clipping `poly` with one half-plane; `None` when it is degenerate.
+/// The flap along edge `a`–`b` of later fragment `poly`: the part of `poly` within `width`
+/// of the line through `a` and `b`, by clipping `poly` with one half-plane, kept only where
+/// it is shown to lie inside `poly`, exactly, so that `poly`, painted later, covers all of
+/// it. Where rounding put a crossing of the half-plane's line with an edge of `poly`
+/// outside that edge, the crossing is moved towards the inside (to a point found in a few
+/// steps and checked exactly).
+///
+/// The flap is kept when it is all of `poly` (the same polygon), or when every corner
+/// passes [`inside_edges`]: the crossings, checked one by one, and `poly`'s own corners,
+/// which do when `poly` is convex ([`convex`]). Otherwise (`poly` turning the other way
+/// somewhere, as rounded corners a few ulps apart can make it) the flap's corners other
+/// than `a`, `b` and the crossings are left out, and the rest is kept if it is a convex
+/// triangle or quadrilateral that [`convex_inside`] shows to lie in `poly`; if not, with
+/// the crossings drawn 1/16, then 1/4 of the way towards their middle (clear of corners
+/// of `poly` next to `a` and `b`); if not, the flap is all of `poly` (the same polygon,
+/// painted again later: no pixel it covers differs). `None` when `poly` has no edge
+/// `a`–`b` or no area.
 fn flap(poly: &[[f64; 2]], a: [f64; 2], b: [f64; 2], width: f64) -> Option<Vec<[f64; 2]>> {
-    let d = [b[0] - a[0], b[1] - a[1]];
+    let m = poly.len();
+    // The edge as `poly` runs along it, u → v.
+    let k = (0..m).find(|&k| {
+        let (p, q) = (poly[k], poly[(k + 1) % m]);
+        (p == a && q == b) || (p == b && q == a)
+    })?;
+    let (u, v) = (poly[k], poly[(k + 1) % m]);
+    let d = [v[0] - u[0], v[1] - u[1]];
     let len = d[0].hypot(d[1]);
     if len.is_nan() || len <= 0.0 {
         return None;
     }
-    let mut nrm = [-d[1] / len, d[0] / len];
-    // Point the normal into the polygon (towards its centroid).
+    // The way `poly` turns: its inside lies on that side of each of its edges.
+    let side = orientation(poly)?;
+    // The normal of u → v towards the inside: turn(u, v, x) = (x − u) · (−d₁, d₀).
+    let nrm = [-side * d[1] / len, side * d[0] / len];
+    // Keep the points with distance(x) = nrm·(x − a) ≤ width.
+    let dist = |p: [f64; 2]| (p[0] - a[0]) * nrm[0] + (p[1] - a[1]) * nrm[1] - width;
+    // Where crossings that rounding put outside are moved towards: the mean corner.
     let c = poly
         .iter()
         .fold([0.0, 0.0], |s, p| [s[0] + p[0], s[1] + p[1]]);
-    let c = [c[0] / poly.len() as f64, c[1] / poly.len() as f64];
-    if (c[0] - a[0]) * nrm[0] + (c[1] - a[1]) * nrm[1] < 0.0 {
-        nrm = [-nrm[0], -nrm[1]];
-    }
-    // Keep the points with distance(x) = nrm·(x − a) ≤ width.
-    let dist = |p: [f64; 2]| (p[0] - a[0]) * nrm[0] + (p[1] - a[1]) * nrm[1] - width;
-    let mut out = Vec::with_capacity(poly.len() + 2);
-    for k in 0..poly.len() {
-        let (p, q) = (poly[k], poly[(k + 1) % poly.len()]);
+    let c = [c[0] / m as f64, c[1] / m as f64];
+    let mut out = Vec::with_capacity(m + 2);
+    let mut crossings_inside = true;
+    for k in 0..m {
+        let (p, q) = (poly[k], poly[(k + 1) % m]);
         let (dp, dq) = (dist(p), dist(q));
         if dp <= 0.0 {
             out.push(p);
         }
         if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
             let t = dp / (dp - dq);
-            out.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]);
+            let x = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
+            let (x, inside) = inside_towards(poly, side, (p, q), x, c);
+            crossings_inside &= inside;
+            out.push(x);
         }
     }
-    (out.len() >= 3).then_some(out)
+    if out.len() < 3 || !has_area(&out) {
+        return None;
+    }
+    if out == poly
+        || (crossings_inside && convex(poly, side))
+        || out.iter().all(|&x| inside_edges(poly, side, x))
+    {
+        return Some(out);
+    }
+    // Only `a`, `b` and the crossings (the corners that are not corners of `poly`), these
+    // drawn towards their middle if the chord between them cuts a corner of `poly` off.
+    let q: Vec<([f64; 2], bool)> = out
+        .into_iter()
+        .map(|p| (p, !poly.contains(&p)))
+        .filter(|&(p, crossing)| crossing || p == a || p == b)
+        .collect();
+    let crossings = q.iter().filter(|&&(_, crossing)| crossing).count() as f64;
+    let mid = q
+        .iter()
+        .filter(|&&(_, crossing)| crossing)
+        .fold([0.0, 0.0], |s, &(p, _)| [s[0] + p[0], s[1] + p[1]]);
+    let mid = [mid[0] / crossings, mid[1] / crossings];
+    let q = [0.0, 0.0625, 0.25].into_iter().find_map(|t| {
+        let q: Vec<[f64; 2]> = q
+            .iter()
+            .map(|&(p, crossing)| {
+                if crossing {
+                    [p[0] + t * (mid[0] - p[0]), p[1] + t * (mid[1] - p[1])]
+                } else {
+                    p
+                }
+            })
+            .collect();
+        convex_inside(poly, &q).then_some(q)
+    });
+    // Else all of `poly`: the same polygon covers itself.
+    q.or_else(|| Some(poly.to_vec()))
+}
+
+/// Whether `q`, a triangle or quadrilateral turning one way (convex, with area), lies in
+/// the closed region polygon `poly` fills (the nonzero rule: either way round), decided
+/// exactly: no edge of `poly` meets the inside of `q` (each is separated from it by the
+/// line of an edge of `q` or by its own line), so `poly` winds the same number of times
+/// round every point inside `q`; and that number, at a point found inside `q`, is not 0.
+fn convex_inside(poly: &[[f64; 2]], q: &[[f64; 2]]) -> bool {
+    let n = q.len();
+    if !(3..=4).contains(&n) {
+        return false;
+    }
+    // The lines of `q`'s edges separate only if `q` is convex (no turn back along a line).
+    let Some(qs) = orientation(q) else {
+        return false;
+    };
+    if !convex(q, qs) {
+        return false;
+    }
+    let m = poly.len();
+    let separated = |s: [f64; 2], e: [f64; 2]| {
+        (0..n).any(|k| {
+            let (u, v) = (q[k], q[(k + 1) % n]);
+            turn(u, v, s) * qs <= 0.0 && turn(u, v, e) * qs <= 0.0
+        }) || (s != e && {
+            let sides: Vec<f64> = q.iter().map(|&c| turn(s, e, c)).collect();
+            sides.iter().all(|&o| o >= 0.0) || sides.iter().all(|&o| o <= 0.0)
+        })
+    };
+    if !(0..m).all(|k| separated(poly[k], poly[(k + 1) % m])) {
+        return false;
+    }
+    // A point strictly inside `q` (its mean corner, if rounding leaves it there).
+    let y = q.iter().fold([0.0, 0.0], |s, p| [s[0] + p[0], s[1] + p[1]]);
+    let y = [y[0] / n as f64, y[1] / n as f64];
+    (0..n).all(|k| turn(q[k], q[(k + 1) % n], y) * qs > 0.0) && winding(poly, y) != 0
+}
+
+/// Whether `x` lies on side `side` (the sign of [`turn`]) of every edge of `poly`, or on
+/// an edge's line, decided exactly. Such points form a convex set, inside `poly` where it
+/// has an inside: at a point strictly on that side of every edge, each edge turns the same
+/// way round it, so `poly` winds round it and the nonzero rule fills it. A polygon with
+/// area whose corners all pass lies in that set (which then has an inside), so inside
+/// `poly`.
+fn inside_edges(poly: &[[f64; 2]], side: f64, x: [f64; 2]) -> bool {
+    let m = poly.len();
+    (0..m).all(|k| turn(poly[k], poly[(k + 1) % m], x) * side >= 0.0)
+}
+
+/// How many times `poly` winds round `y` (which must not lie on an edge), exactly: the
+/// signed crossings of the ray from `y` towards +x.
+fn winding(poly: &[[f64; 2]], y: [f64; 2]) -> i32 {
+    let m = poly.len();
+    let mut w = 0;
+    for k in 0..m {
+        let (p, q) = (poly[k], poly[(k + 1) % m]);
+        if p[1] <= y[1] {
+            if q[1] > y[1] && turn(p, q, y) > 0.0 {
+                w += 1;
+            }
+        } else if q[1] <= y[1] && turn(p, q, y) < 0.0 {
+            w -= 1;
+        }
+    }
+    w
+}
+
+/// A crossing `x` computed on edge `e` of `poly` (turning `side`), moved inside if
+/// rounding put it out, and whether it passes [`inside_edges`]: `x` if it does, else the
+/// first point on the way from `x` to `c` (at 2⁻⁴⁸, 2⁻⁴⁴, …, 2⁻⁴ and ½ of the way) that
+/// does, else the first one on the inner side of `e` at least, else `x` ([`flap`]
+/// decides what to keep).
+fn inside_towards(
+    poly: &[[f64; 2]],
+    side: f64,
+    e: ([f64; 2], [f64; 2]),
+    x: [f64; 2],
+    c: [f64; 2],
+) -> ([f64; 2], bool) {
+    if inside_edges(poly, side, x) {
+        return (x, true);
+    }
+    let towards = [c[0] - x[0], c[1] - x[1]];
+    let steps = || {
+        (0..=12)
+            .map(|e| {
+                if e == 12 {
+                    0.5
+                } else {
+                    (-48.0 + 4.0 * e as f64).exp2()
+                }
+            })
+            .map(|s| [x[0] + s * towards[0], x[1] + s * towards[1]])
+    };
+    if let Some(y) = steps().find(|&y| inside_edges(poly, side, y)) {
+        return (y, true);
+    }
+    let y = steps()
+        .find(|&y| turn(e.0, e.1, y) * side >= 0.0)
+        .unwrap_or(x);
+    (y, false)
+}
+
+/// Whether `poly`, turning `side` ([`orientation`]), is convex, exactly: no turn the other
+/// way, no straight turn back along the same line, and its edges going round once (the
+/// signs of their steps in y change at most twice round the polygon). Its corners then
+/// pass [`inside_edges`].
+fn convex(poly: &[[f64; 2]], side: f64) -> bool {
+    let m = poly.len();
+    if m == 3 {
+        return true;
+    }
+    let step = |k: usize| {
+        let (p, q) = (poly[k % m], poly[(k + 1) % m]);
+        [q[0] - p[0], q[1] - p[1]]
+    };
+    // A step's direction along a line: the sign of its x, or of its y when x is 0 (exact:
+    // a difference of two f64 has the sign of the exact difference).
+    let along = |s: [f64; 2]| {
+        if s[0] != 0.0 {
+            s[0].signum()
+        } else {
+            s[1].signum()
+        }
+    };
+    let turns_one_way = (0..m).all(|k| {
+        let o = turn(poly[k], poly[(k + 1) % m], poly[(k + 2) % m]) * side;
+        if o != 0.0 {
+            return o > 0.0;
+        }
+        let (s, t) = (step(k), step(k + 1));
+        s == [0.0, 0.0] || t == [0.0, 0.0] || along(s) == along(t)
+    });
+    if !turns_one_way {
+        return false;
+    }
+    let signs: Vec<f64> = (0..m)
+        .map(|k| step(k)[1])
+        .filter(|&dy| dy != 0.0)
+        .map(f64::signum)
+        .collect();
+    let changes = (0..signs.len())
+        .filter(|&k| signs[k] != signs[(k + 1) % signs.len()])
+        .count();
+    changes <= 2
+}
+
+/// The way `poly` turns, exactly: the sign of the turn at its lowest-leftmost corner
+/// (between the nearest other corners before and after it), which a simple polygon makes
+/// the way it winds. `None` when that turn is straight (no area there).
+fn orientation(poly: &[[f64; 2]]) -> Option<f64> {
+    let m = poly.len();
+    if m == 3 {
+        let o = turn(poly[0], poly[1], poly[2]);
+        return (o != 0.0).then(|| o.signum());
+    }
+    let lowest = (0..m).min_by(|&i, &j| {
+        let (p, q) = (poly[i], poly[j]);
+        p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+    })?;
+    let v = poly[lowest];
+    let before = (1..m)
+        .map(|s| poly[(lowest + m - s) % m])
+        .find(|&p| p != v)?;
+    let after = (1..m).map(|s| poly[(lowest + s) % m]).find(|&p| p != v)?;
+    let o = turn(before, v, after);
+    (o != 0.0).then(|| o.signum())
+}
+
+/// Whether some three corners of `q` make a turn (exact): `q` encloses some area.
+fn has_area(q: &[[f64; 2]]) -> bool {
+    let Some(p) = q.iter().copied().find(|&p| p != q[0]) else {
+        return false;
+    };
+    q.iter().any(|&r| turn(q[0], p, r) != 0.0)
+}
+
+/// The turn `p → q → r`: positive one way, negative the other, zero when the three are
+/// collinear; its sign exact on the f64 coordinates (Shewchuk's adaptive predicate).
+fn turn(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> f64 {
+    let c = |p: [f64; 2]| robust::Coord { x: p[0], y: p[1] };
+    robust::orient2d(c(p), c(q), c(r))
 }
 
 #[cfg(test)]
@@ -692,5 +944,200 @@ mod tests {
             pixels(out),
             pixels(seam_flaps_indexed(vec![a, b], 0.5, FlapJoin::Separate).0)
         );
+    }
+
+    /// How many times `poly` winds round `y`, or `None` when `y` lies on an edge (exact).
+    fn winds(poly: &[[f64; 2]], y: [f64; 2]) -> Option<i32> {
+        let m = poly.len();
+        let mut w = 0;
+        for k in 0..m {
+            let (p, q) = (poly[k], poly[(k + 1) % m]);
+            let within = |i: usize| p[i].min(q[i]) <= y[i] && y[i] <= p[i].max(q[i]);
+            if turn(p, q, y) == 0.0 && within(0) && within(1) {
+                return None;
+            }
+            if p[1] <= y[1] {
+                if q[1] > y[1] && turn(p, q, y) > 0.0 {
+                    w += 1;
+                }
+            } else if q[1] <= y[1] && turn(p, q, y) < 0.0 {
+                w -= 1;
+            }
+        }
+        Some(w)
+    }
+
+    /// Points near `p`: a few ulps off in each direction.
+    fn around(p: [f64; 2]) -> impl Iterator<Item = [f64; 2]> {
+        let step = |v: f64, k: i64| f64::from_bits((v.to_bits() as i64 + k) as u64);
+        (-3..=3).flat_map(move |i| (-3..=3).map(move |j| [step(p[0], i), step(p[1], j)]))
+    }
+
+    /// Asserts that every point near the corners of `q` and on a grid over it that `q`
+    /// fills, `poly` fills too (points on an edge of either are left out).
+    fn assert_inside(q: &[[f64; 2]], poly: &[[f64; 2]], what: &str) {
+        let (lo, hi) = q
+            .iter()
+            .fold(([f64::MAX; 2], [f64::MIN; 2]), |(lo, hi), p| {
+                (
+                    [lo[0].min(p[0]), lo[1].min(p[1])],
+                    [hi[0].max(p[0]), hi[1].max(p[1])],
+                )
+            });
+        let grid = (0..=40).flat_map(|i| {
+            (0..=40).map(move |j| {
+                let t = [i as f64 / 40.0, j as f64 / 40.0];
+                [
+                    lo[0] + t[0] * (hi[0] - lo[0]),
+                    lo[1] + t[1] * (hi[1] - lo[1]),
+                ]
+            })
+        });
+        let near: Vec<[f64; 2]> = q.iter().chain(poly).flat_map(|&p| around(p)).collect();
+        for y in grid.chain(near) {
+            if let (Some(wq), Some(wp)) = (winds(q, y), winds(poly, y)) {
+                assert!(
+                    wq == 0 || wp != 0,
+                    "{what}: {y:?} in the flap {q:?}, not in {poly:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn flaps_lie_inside_the_later_triangle_however_far_its_corner() {
+        let mut rng = 7u64;
+        let mut next = move || {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            (rng >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut made = 0;
+        for _ in 0..3000 {
+            let a = [10.0 + 20.0 * next(), 10.0 + 20.0 * next()];
+            let b = [a[0] + 1.0 + 10.0 * next(), a[1] + 10.0 * (next() - 0.5)];
+            // The third corner 1 to 10¹³ px away, on either side of a–b.
+            let far = 10f64.powf(13.0 * next());
+            let c = [a[0] + far * (next() - 0.5), a[1] + far * (next() - 0.5)];
+            let j = [a, b, c];
+            let side = turn(a, b, c).signum();
+            if side == 0.0 {
+                continue;
+            }
+            let Some(q) = flap(&j, a, b, 0.5) else {
+                continue;
+            };
+            made += 1;
+            for x in &q {
+                for k in 0..3 {
+                    assert!(
+                        turn(j[k], j[(k + 1) % 3], *x) * side >= 0.0,
+                        "corner {x:?} of {q:?} outside {j:?}"
+                    );
+                }
+            }
+        }
+        assert!(made > 2500, "{made} flaps");
+    }
+
+    #[test]
+    fn flaps_into_fragments_whose_rounded_corners_turn_back_lie_inside_them() {
+        // Fragments of two height fields 1e-6 apart as the exact ordering rounds them:
+        // corners a few ulps apart, so that the outline turns back a little.
+        let polys: [&[[f64; 2]]; 3] = [
+            &[
+                [572.0729321591806, 351.0551786280025],
+                [581.9661419330993, 346.3159617122005],
+                [571.6246000135313, 314.80090034161185],
+                [572.0727834664935, 351.0550193807249],
+                [572.0729321591807, 351.0551786280026],
+            ],
+            &[
+                [237.924513390518, 469.9188319643267],
+                [227.4063287864017, 474.0739464949276],
+                [227.40601531533767, 474.07394076661217],
+                [221.00680953502126, 460.38157342240174],
+                [237.9246603265551, 469.9186404599667],
+                [237.92466032655503, 469.9186404599667],
+            ],
+            &[
+                [553.9399445071069, 287.63111485480096],
+                [555.621326503819, 283.30780795630784],
+                [552.929481859497, 288.10381358310855],
+                [553.9396762324975, 287.63130584886],
+                [553.9399445071069, 287.631114854801],
+            ],
+        ];
+        for poly in polys {
+            let m = poly.len();
+            for k in 0..m {
+                let (a, b) = (poly[k], poly[(k + 1) % m]);
+                let q = flap(poly, a, b, 0.5);
+                if (b[0] - a[0]).hypot(b[1] - a[1]) > 1.0 {
+                    let q = q.as_ref().expect("a flap along every long edge");
+                    assert!(holds_edge(q, a, b), "{q:?} holds {a:?}–{b:?}");
+                }
+                if let Some(q) = q {
+                    assert_inside(&q, poly, &format!("edge {k}"));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn convex_is_decided_exactly() {
+        let is_convex = |p: &[[f64; 2]]| convex(p, orientation(p).expect("turns"));
+        let square = [[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+        assert!(is_convex(&square));
+        let mut back = square;
+        back.reverse();
+        assert!(is_convex(&back));
+        // A corner in the middle of an edge, and a corner twice.
+        assert!(is_convex(&[
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [0.0, 4.0]
+        ]));
+        assert!(is_convex(&[
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [0.0, 4.0]
+        ]));
+        // A spike out along an edge's line, a notch, a star going round twice.
+        assert!(!is_convex(&[
+            [0.0, 0.0],
+            [6.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [0.0, 4.0]
+        ]));
+        assert!(!is_convex(&[
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [2.0, 1.0],
+            [4.0, 4.0],
+            [0.0, 4.0]
+        ]));
+        let star: Vec<[f64; 2]> = (0..5)
+            .map(|k| {
+                let a = std::f64::consts::TAU * (2 * k) as f64 / 5.0;
+                [a.cos(), a.sin()]
+            })
+            .collect();
+        assert!(!is_convex(&star));
+        // Rounded corners a few ulps apart that turn back.
+        let rounded = [
+            [572.0729321591806, 351.0551786280025],
+            [581.9661419330993, 346.3159617122005],
+            [571.6246000135313, 314.80090034161185],
+            [572.0727834664935, 351.0550193807249],
+            [572.0729321591807, 351.0551786280026],
+        ];
+        assert!(!is_convex(&rounded));
     }
 }
