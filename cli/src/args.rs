@@ -376,6 +376,16 @@ pub struct CheckArgs {
     /// Write an image with mismatching pixels marked (PNG).
     #[arg(long, value_name = "DIFF.png")]
     pub diff: Option<PathBuf>,
+    /// Width in pixels of the seam flaps of the picture compared, as `render` draws it
+    /// (0 = none). The flaps lie under later faces, so no width changes the result.
+    #[arg(
+        long,
+        value_name = "PX",
+        default_value_t = 0.5,
+        value_parser = parse_seams,
+        allow_negative_numbers = true
+    )]
+    pub seams: f64,
     /// Camera, ordering and reporting flags.
     #[command(flatten)]
     pub view: ViewArgs,

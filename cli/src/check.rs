@@ -1,13 +1,15 @@
 //! `limn check`: the painter's order against an image-space reference, pixel by pixel
-//! (through [`limn_check`], the routine the tests use), and the visible line pieces
-//! against the z-buffer's depth-tested lines.
+//! (through [`limn_check`], the routine the tests use; the faces compared are those of the
+//! picture `render` draws, with its whole-face covers and seam flaps), and the visible
+//! line pieces against the z-buffer's depth-tested lines.
 
 use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 use limn_check::paint;
+use limn_paint::{picture, Style};
 use limn_zbuffer::{
-    default_band_tolerance, diff_png, DepthFormat, Method, ShadowMapOptions, NO_FACE,
+    default_band_tolerance, diff_png, rasterize_ids, DepthFormat, Method, ShadowMapOptions, NO_FACE,
 };
 use serde_json::json;
 
@@ -31,7 +33,23 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         check_writable(path, &scene.files)?;
     }
     progress.phase("ordering");
-    let painted = paint(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
+    let mut painted = paint(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
+    // The faces of the picture `render` draws: whole-face covers and seam flaps included.
+    let pic = picture(
+        scene,
+        &painted.ordered,
+        &Style {
+            seams: a.seams,
+            ..Style::default()
+        },
+    );
+    let polys: Vec<(Vec<[f64; 2]>, u32)> = pic
+        .fragments
+        .into_iter()
+        .map(|f| (f.points, f.face))
+        .collect();
+    let c = &painted.ordered.camera;
+    painted.ids = rasterize_ids(&polys, c.width, c.height);
     let ordered = &painted.ordered;
     let (w, h) = (ordered.camera.width, ordered.camera.height);
     let method = match a.against {
@@ -79,6 +97,7 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         "against": method.name(),
         "sort": oo.sort.name(),
         "arith": oo.arith.name(),
+        "seams": a.seams,
         "width": w,
         "height": h,
         "pixels": cmp.pixels,
