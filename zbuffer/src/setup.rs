@@ -13,7 +13,6 @@
 use glam::{DMat4, DVec3, DVec4};
 use limn_scene::{polygon_normal, Camera, Scene, Viewpoint};
 
-use crate::triangulate::triangulate;
 use crate::{RenderOptions, ZError, MAX_COORD};
 
 /// Guard band half-size in units of the picture's half-size (NDC).
@@ -237,34 +236,34 @@ pub(crate) fn is_back_face(scene: &Scene, f: usize, eye: Viewpoint) -> bool {
 }
 
 /// The triangles of face `f` as scene vertex indices, with the kind of each edge
-/// (edge `k` runs from corner `k` to corner `k + 1`).
+/// (edge `k` runs from corner `k` to corner `k + 1`): the kernel's triangles of the face
+/// ([`limn_kernel::face_triangles`]), whose edges of the outline it names (corners
+/// repeated in a row are skipped there, so adjacency in the corner list would not tell).
 pub(crate) fn face_triangles(
     scene: &Scene,
     f: usize,
-    scratch: &mut Vec<[usize; 3]>,
+    scratch: &mut Vec<DVec3>,
     out: &mut Vec<([u32; 3], [EdgeKind; 3])>,
 ) {
     let vs = &scene.faces[f].vertices;
-    let n = vs.len();
-    if n == 3 {
+    if vs.len() == 3 {
         out.push(([vs[0], vs[1], vs[2]], [EdgeKind::Boundary; 3]));
         return;
     }
-    let pts: Vec<DVec3> = vs.iter().map(|&v| scene.vertices[v as usize]).collect();
     scratch.clear();
-    triangulate(&pts, scratch);
-    let kind = |a: usize, b: usize| {
-        if (a + 1) % n == b || (b + 1) % n == a {
+    scratch.extend(vs.iter().map(|&v| scene.vertices[v as usize]));
+    let Ok(tris) = limn_kernel::face_triangles(scratch) else {
+        return;
+    };
+    let kind = |outline: bool| {
+        if outline {
             EdgeKind::Boundary
         } else {
             EdgeKind::Diagonal
         }
     };
-    for t in scratch.iter() {
-        out.push((
-            [vs[t[0]], vs[t[1]], vs[t[2]]],
-            [kind(t[0], t[1]), kind(t[1], t[2]), kind(t[2], t[0])],
-        ));
+    for t in tris {
+        out.push((t.corners.map(|i| vs[i]), t.outline.map(kind)));
     }
 }
 

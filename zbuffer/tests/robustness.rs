@@ -478,3 +478,38 @@ fn smooth_per_pixel(cam: Camera) {
         count(Shading::Flat)
     );
 }
+
+#[test]
+fn a_corner_given_twice_in_a_row_keeps_its_edge_an_edge() {
+    // A square whose second corner is repeated: the edge from it to the third corner is an
+    // edge of the face (in the edge band), the square's diagonal is not.
+    let mut s = Scene::default();
+    let m = s.add_material(limn_scene::Material::unlit("m", [0.5, 0.5, 0.5]));
+    let o = s.add_object("square");
+    for p in [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]] {
+        s.add_vertex(DVec3::new(p[0], p[1], 0.0));
+    }
+    s.add_face(&[0, 1, 1, 2, 3], m, o).unwrap();
+    let c = Camera::new(DVec3::new(0.5, 0.5, 3.0), DVec3::new(0.5, 0.5, 0.0), 64, 64);
+    let edges = scene_edges(&s, &c, &RenderOptions::default()).unwrap();
+    // Pixel x and y do not depend on the near and far planes.
+    let vp = c.view_projection(1.0, 10.0);
+    let project = |v: usize| {
+        let p = c.project_with(&vp, s.vertices[v]);
+        [p.x, p.y]
+    };
+    let has = |a: usize, b: usize| {
+        let (pa, pb) = (project(a), project(b));
+        edges
+            .iter()
+            .any(|&(x, y)| (x == pa && y == pb) || (x == pb && y == pa))
+    };
+    assert!(
+        has(0, 1) && has(1, 2) && has(2, 3) && has(3, 0),
+        "{edges:?}"
+    );
+    assert!(
+        !has(0, 2) && !has(1, 3),
+        "a diagonal is in the band: {edges:?}"
+    );
+}
