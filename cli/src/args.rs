@@ -5,9 +5,14 @@ use std::path::PathBuf;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::error::ErrorKind;
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
-use limn_depthsort::{Arith, CullMode, SortMode};
-use limn_paint::Format;
-use limn_scene::Shading;
+use limn::values::{
+    parse_background, parse_bias, parse_crease, parse_distance, parse_fov, parse_seams, parse_size,
+    parse_tolerance, parse_vec3,
+};
+use limn::{
+    Against, Arith, Background, CheckOptions, CullMode, Format, Look, Method, RenderOptions,
+    Shading, SortMode, ViewOptions,
+};
 
 /// Draw 3D polygon scenes as resolution-independent pictures with hidden surfaces
 /// removed exactly.
@@ -326,15 +331,6 @@ pub enum FillArg {
     None,
 }
 
-fn parse_crease(s: &str) -> Result<f64, String> {
-    let v: f64 = s.parse().map_err(|e| format!("{e}"))?;
-    if v.is_finite() && (0.0..=180.0).contains(&v) {
-        Ok(v)
-    } else {
-        Err("the crease angle must be 0 to 180 degrees".into())
-    }
-}
-
 /// `limn demo`.
 #[derive(Debug, Clone, Args)]
 pub struct DemoArgs {
@@ -391,128 +387,92 @@ pub struct CheckArgs {
     pub view: ViewArgs,
 }
 
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let (w, h) = s
-        .split_once(['x', 'X'])
-        .ok_or_else(|| format!("expected WIDTHxHEIGHT, got `{s}`"))?;
-    let w: u32 = w
-        .trim()
-        .parse()
-        .map_err(|_| format!("bad width in `{s}`"))?;
-    let h: u32 = h
-        .trim()
-        .parse()
-        .map_err(|_| format!("bad height in `{s}`"))?;
-    if w == 0 || h == 0 || w > 65536 || h > 65536 {
-        return Err(format!("size `{s}` out of range (1 to 65536 per side)"));
-    }
-    Ok((w, h))
-}
-
-fn parse_fov(s: &str) -> Result<f64, String> {
-    let f: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{s}` is not a number"))?;
-    if !(f > 0.0 && f < 180.0) {
-        return Err(format!("field of view `{s}` is outside (0, 180) degrees"));
-    }
-    Ok(f)
-}
-
-/// A `--background` value.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Background {
-    /// Transparent: no background is painted.
-    None,
-    /// An opaque colour, channels in 0..1.
-    Colour([f64; 3]),
-}
-
-fn parse_background(s: &str) -> Result<Background, String> {
-    let t = s.trim();
-    if t.eq_ignore_ascii_case("none") {
-        return Ok(Background::None);
-    }
-    if let Some(h) = t.strip_prefix('#') {
-        let ch = |i: usize| h.get(i..i + 2).and_then(|c| u8::from_str_radix(c, 16).ok());
-        return match (h.len(), ch(0), ch(2), ch(4)) {
-            (6, Some(r), Some(g), Some(b)) => {
-                Ok(Background::Colour([r, g, b].map(|v| v as f64 / 255.0)))
-            }
-            _ => Err(format!("`{s}` is not a #rrggbb colour")),
-        };
-    }
-    let v = parse_vec3(t).map_err(|_| format!("`{s}` is not #rrggbb, R,G,B or none"))?;
-    if v.iter().any(|c| !(0.0..=1.0).contains(c)) {
-        return Err(format!("colour channels in `{s}` must be between 0 and 1"));
-    }
-    Ok(Background::Colour(v))
-}
-
-fn parse_distance(s: &str) -> Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{s}` is not a number"))?;
-    if !(v.is_finite() && v > 0.0) {
-        return Err(format!("distance `{s}` must be a positive number"));
-    }
-    Ok(v)
-}
-
-fn parse_bias(s: &str) -> Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{s}` is not a number"))?;
-    if !(v.is_finite() && (0.0..=1.0).contains(&v)) {
-        return Err(format!("shadow bias `{s}` must be 0 to 1"));
-    }
-    Ok(v)
-}
-
-fn parse_tolerance(s: &str) -> Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{s}` is not a number"))?;
-    if !(v > 0.0 && v <= 1.0) {
-        return Err(format!(
-            "shading tolerance `{s}` must be above 0 and at most 1"
-        ));
-    }
-    Ok(v)
-}
-
-fn parse_seams(s: &str) -> Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("`{s}` is not a number"))?;
-    if !(0.0..=10.0).contains(&v) {
-        return Err(format!("seam width `{s}` must be between 0 and 10 pixels"));
-    }
-    Ok(v)
-}
-
-fn parse_vec3(s: &str) -> Result<[f64; 3], String> {
-    let parts: Vec<&str> = s.split(',').collect();
-    if parts.len() != 3 {
-        return Err(format!("expected X,Y,Z, got `{s}`"));
-    }
-    let mut v = [0.0; 3];
-    for (o, p) in v.iter_mut().zip(parts) {
-        let x: f64 = p
-            .trim()
-            .parse()
-            .map_err(|_| format!("`{p}` is not a number"))?;
-        if !x.is_finite() {
-            return Err(format!("`{p}` is not finite"));
+impl MethodArg {
+    /// The library's method.
+    pub fn method(self) -> Method {
+        match self {
+            MethodArg::Painter => Method::Painter,
+            MethodArg::Zbuffer => Method::ZBuffer,
+            MethodArg::Scanline => Method::ScanLine,
+            MethodArg::Abuffer => Method::ABuffer,
+            MethodArg::Warnock => Method::Warnock,
+            MethodArg::Raycast => Method::RayCast,
         }
-        *o = x;
     }
-    Ok(v)
+}
+
+impl AgainstArg {
+    /// The library's reference.
+    pub fn against(self) -> Against {
+        match self {
+            AgainstArg::Zbuffer => Against::ZBuffer,
+            AgainstArg::Raycast => Against::RayCast,
+            AgainstArg::Warnock => Against::Warnock,
+            AgainstArg::Scanline => Against::ScanLine,
+        }
+    }
+}
+
+impl ViewArgs {
+    /// The library's view options.
+    pub fn options(&self) -> ViewOptions {
+        ViewOptions {
+            size: self.size,
+            eye: self.eye,
+            target: self.target,
+            up: self.up,
+            fov: self.fov,
+            ortho: self.ortho,
+            sort: self.sort,
+            arith: self.arith,
+            cull: self.cull,
+            near: self.near,
+            far: self.far,
+            max_fragments: self.max_fragments,
+            allow_outside: self.allow_outside,
+            shading: self.shading,
+            matrix: None,
+        }
+    }
+}
+
+impl RenderArgs {
+    /// The library's render options.
+    pub fn options(&self) -> RenderOptions {
+        RenderOptions {
+            view: self.view.options(),
+            format: self.format,
+            outline: self.outline,
+            seams: self.seams,
+            background: self.background,
+            shading_tolerance: self.shading_tolerance,
+            method: self.method.method(),
+            shadow_map_size: self.shadow_map_size,
+            shadow_bias: self.shadow_bias,
+            standalone: self.standalone,
+            style: self.style.map(|s| match s {
+                StyleArg::Filled => Look::Filled,
+                StyleArg::HiddenLine => Look::HiddenLine,
+            }),
+            crease: self.crease,
+            dashed: self.hidden.map(|h| h == HiddenArg::Dashed),
+            fill: self.fill.map(|f| f == FillArg::Background),
+            stats: self.view.stats.clone(),
+        }
+    }
+}
+
+impl CheckArgs {
+    /// The library's check options.
+    pub fn options(&self) -> CheckOptions {
+        CheckOptions {
+            view: self.view.options(),
+            against: self.against.against(),
+            diff: self.diff.clone(),
+            seams: self.seams,
+            stats: self.view.stats.clone(),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -532,20 +492,6 @@ mod tests {
             Some(Some(2.5))
         );
         assert!(Cli::try_parse_from(["limn", "render", "a.obj", "--ortho", "-1"]).is_err());
-    }
-
-    #[test]
-    fn vectors_and_sizes_parse() {
-        assert_eq!(parse_vec3("-1,2.5,3e2"), Ok([-1.0, 2.5, 300.0]));
-        assert!(parse_vec3("1,2").is_err());
-        assert!(parse_vec3("1,nan,2").is_err());
-        assert_eq!(parse_size("800x600"), Ok((800, 600)));
-        assert!(parse_size("0x600").is_err());
-        assert!(parse_size("800").is_err());
-        assert_eq!(parse_fov("30"), Ok(30.0));
-        for bad in ["0", "180", "-5", "nan", "inf", "wide"] {
-            assert!(parse_fov(bad).is_err(), "{bad}");
-        }
     }
 
     #[test]

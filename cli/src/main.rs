@@ -1,26 +1,27 @@
 //! The `limn` command: render 3D polygon scenes as exact vector pictures, render the
-//! built-in demo, and check vector results against image-space references.
+//! built-in demo, and check vector results against image-space references. Argument
+//! parsing and messages over the `limn` library, which does the work.
 
 mod args;
-mod check;
-mod demo;
-mod losses;
-mod output;
 mod progress;
-mod raster;
-mod render;
-mod setup;
-mod stats;
+mod terminal;
 
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::Parser;
+use limn::{Input, Rendered, Request};
+
+use crate::terminal::Terminal;
 
 /// The allocator: ordering and composing make and free millions of small vectors
 /// on both cores, where mimalloc's per-thread heaps cost less than the system
 /// allocator's (BENCHMARKS.md, "Allocator").
 #[global_allocator]
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+/// Exit status when `check` finds mismatches outside the edge band.
+const MISMATCH: u8 = 3;
 
 fn main() -> ExitCode {
     let cli = match args::Cli::try_parse() {
@@ -47,50 +48,80 @@ fn main() -> ExitCode {
         }
     }
     let run = match cli.command {
-        args::Command::Render(a) => render::render(a),
-        args::Command::Demo(a) => demo::run(a),
-        args::Command::Check(a) => check::check(a),
+        args::Command::Render(a) => render(
+            &Request {
+                input: Input::File(a.input.clone()),
+                output: a.output.clone(),
+                options: a.options(),
+            },
+            a.view.quiet,
+        ),
+        args::Command::Demo(a) => {
+            let output = a
+                .output
+                .clone()
+                .unwrap_or_else(|| PathBuf::from("demo.svg"));
+            match limn::demo::request(output, a.outline, a.stats.clone()) {
+                Ok(req) => render(&req, a.quiet),
+                Err(e) => Err(e),
+            }
+        }
+        args::Command::Check(a) => check(&a),
     };
     match run {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("limn: error: {}", message(&e));
+            eprintln!("limn: error: {}", e.message());
             ExitCode::from(1)
         }
     }
 }
 
-/// The error and its causes on one line, `: `-separated, leaving out a cause whose text
-/// the message already contains (many errors repeat their source in their own text).
-fn message(e: &anyhow::Error) -> String {
-    let mut out = String::new();
-    for cause in e.chain() {
-        let s = cause.to_string();
-        if out.contains(&s) {
-            continue;
+/// Runs a render and says what it wrote.
+fn render(req: &Request<'_>, quiet: bool) -> Result<ExitCode, limn::Error> {
+    let mut term = Terminal::start(quiet);
+    let done: Rendered<'_> = limn::render(req, &mut term)?;
+    term.finish();
+    if !quiet && done.output.as_os_str() != "-" {
+        match &done.stats {
+            Some(s) => eprintln!(
+                "limn: wrote {} ({} faces, {} fragments, {} splits, {:.0} ms)",
+                done.output.display(),
+                s.faces_in,
+                s.fragments_out,
+                s.splits,
+                s.ms.total
+            ),
+            None => eprintln!(
+                "limn: wrote {} ({})",
+                done.output.display(),
+                done.method.name()
+            ),
         }
-        if !out.is_empty() {
-            out.push_str(": ");
-        }
-        out.push_str(&s);
     }
-    out
+    // The process ends after this: freeing the scene, the order and the picture one
+    // allocation at a time (millions on large scenes) takes longer than the system takes
+    // to reclaim the whole process.
+    std::mem::forget(done);
+    Ok(ExitCode::SUCCESS)
 }
 
-#[cfg(test)]
-mod tests {
-    use anyhow::Context;
-
-    #[test]
-    fn causes_repeated_in_the_message_are_left_out() {
-        let inner = std::io::Error::other("disk on fire");
-        let e = Err::<(), _>(inner)
-            .context("a.obj:3: disk on fire")
-            .unwrap_err();
-        assert_eq!(super::message(&e), "a.obj:3: disk on fire");
-        let e = Err::<(), _>(std::io::Error::other("disk on fire"))
-            .context("cannot write out.svg")
-            .unwrap_err();
-        assert_eq!(super::message(&e), "cannot write out.svg: disk on fire");
+/// Runs `limn check`: the report on standard output (or to `--stats`), status 3 when the
+/// pictures disagree.
+fn check(a: &args::CheckArgs) -> Result<ExitCode, limn::Error> {
+    let mut term = Terminal::start(a.view.quiet);
+    let report = limn::check(&Input::File(a.input.clone()), &a.options(), &mut term)?;
+    term.finish();
+    if a.view.stats.is_none() {
+        print!("{}", report.to_json_text());
     }
+    if report.agrees() {
+        return Ok(ExitCode::SUCCESS);
+    }
+    if !a.view.quiet {
+        for f in &report.failures {
+            eprintln!("limn: {f}");
+        }
+    }
+    Ok(ExitCode::from(MISMATCH))
 }

@@ -15,10 +15,82 @@ use std::fs::{File, Metadata, OpenOptions};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context, Result};
+use crate::error::Error;
 
 /// Links followed at most before giving up (as the operating system does).
 const MAX_LINKS: usize = 40;
+
+/// Why an output was not written.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum OutputError {
+    /// The output is one of the files the scene was read from.
+    #[error(
+        "refusing to write {path}: the scene was read from {input} (choose another output with -o)"
+    )]
+    IsInput {
+        /// The output.
+        path: PathBuf,
+        /// The input it is.
+        input: PathBuf,
+    },
+    /// The output is a folder.
+    #[error("cannot write {path}: it is a folder")]
+    Folder {
+        /// The output.
+        path: PathBuf,
+    },
+    /// The output is a read-only file.
+    #[error("refusing to replace {path}: the file is read-only")]
+    ReadOnly {
+        /// The output.
+        path: PathBuf,
+    },
+    /// Following the output's symbolic links did not end.
+    #[error("cannot write {path}: more than {MAX_LINKS} symbolic links")]
+    Links {
+        /// The output.
+        path: PathBuf,
+    },
+    /// A symbolic link on the way could not be read.
+    #[error("cannot read the link {path}")]
+    Link {
+        /// The link.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// The output could not be opened.
+    #[error("cannot open {path} for writing")]
+    Open {
+        /// The output.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// No temporary file could be made beside the output.
+    #[error("cannot create a file in {dir}")]
+    Create {
+        /// The folder.
+        dir: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// Writing, flushing or renaming into place failed.
+    #[error("cannot write {path}")]
+    Write {
+        /// The output.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// Writing to standard output failed.
+    #[error("cannot write to standard output")]
+    Stdout {
+        /// Why.
+        source: std::io::Error,
+    },
+}
 
 /// Where and how a write goes.
 enum Plan {
@@ -33,24 +105,26 @@ enum Plan {
 
 /// Checks, before any work is done, that `path` may be written (see the module docs):
 /// so that a refused output costs nothing and leaves no other output behind.
-pub fn check_writable(path: &Path, read: &[PathBuf]) -> Result<()> {
+pub fn check_writable(path: &Path, read: &[PathBuf]) -> Result<(), OutputError> {
     plan(path, read).map(|_| ())
 }
 
 /// Writes what `fill` produces to `path` (`-` = standard output), refusing to write over
-/// any of the files in `read` (see the module docs).
+/// any of the files in `read` (see the module docs). An error of `fill` is returned as
+/// it is, and nothing is left at `path`.
 pub fn write_atomic<T>(
     path: &Path,
     read: &[PathBuf],
-    fill: impl FnOnce(&mut dyn Write) -> Result<T>,
-) -> Result<T> {
+    fill: impl FnOnce(&mut dyn Write) -> Result<T, Error>,
+) -> Result<T, Error> {
     match plan(path, read)? {
         Plan::Stdout => {
             let stdout = std::io::stdout();
             let mut lock = stdout.lock();
             let mut buf = std::io::BufWriter::new(&mut lock);
             let v = fill(&mut buf)?;
-            buf.flush().context("cannot write to standard output")?;
+            buf.flush()
+                .map_err(|source| OutputError::Stdout { source })?;
             Ok(v)
         }
         Plan::Direct(target) => write_direct(path, &target, fill),
@@ -58,7 +132,7 @@ pub fn write_atomic<T>(
     }
 }
 
-fn plan(path: &Path, read: &[PathBuf]) -> Result<Plan> {
+fn plan(path: &Path, read: &[PathBuf]) -> Result<Plan, OutputError> {
     if path.as_os_str() == "-" {
         return Ok(Plan::Stdout);
     }
@@ -66,27 +140,32 @@ fn plan(path: &Path, read: &[PathBuf]) -> Result<Plan> {
     let existing = match std::fs::metadata(&target) {
         Ok(m) => Some(m),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => None,
-        Err(e) => return Err(e).with_context(|| format!("cannot write {}", path.display())),
+        Err(source) => {
+            return Err(OutputError::Write {
+                path: path.to_path_buf(),
+                source,
+            })
+        }
     };
     if let Some(meta) = &existing {
         if let Some(input) = read.iter().find(|f| same_file(meta, f)) {
-            bail!(
-                "refusing to write {}: the scene was read from {} (choose another output with -o)",
-                path.display(),
-                input.display()
-            );
+            return Err(OutputError::IsInput {
+                path: path.to_path_buf(),
+                input: input.clone(),
+            });
         }
         if meta.is_dir() {
-            bail!("cannot write {}: it is a folder", path.display());
+            return Err(OutputError::Folder {
+                path: path.to_path_buf(),
+            });
         }
         if !meta.is_file() {
             return Ok(Plan::Direct(target));
         }
         if meta.permissions().readonly() {
-            bail!(
-                "refusing to replace {}: the file is read-only",
-                path.display()
-            );
+            return Err(OutputError::ReadOnly {
+                path: path.to_path_buf(),
+            });
         }
     }
     Ok(Plan::Replace(target, existing))
@@ -94,13 +173,15 @@ fn plan(path: &Path, read: &[PathBuf]) -> Result<Plan> {
 
 /// The path a write to `path` lands on: symbolic links followed (a dangling link names
 /// the file to create).
-fn follow_links(path: &Path) -> Result<PathBuf> {
+fn follow_links(path: &Path) -> Result<PathBuf, OutputError> {
     let mut p = path.to_path_buf();
     for _ in 0..MAX_LINKS {
         match std::fs::symlink_metadata(&p) {
             Ok(m) if m.file_type().is_symlink() => {
-                let to = std::fs::read_link(&p)
-                    .with_context(|| format!("cannot read the link {}", p.display()))?;
+                let to = std::fs::read_link(&p).map_err(|source| OutputError::Link {
+                    path: p.clone(),
+                    source,
+                })?;
                 p = if to.is_absolute() {
                     to
                 } else {
@@ -110,10 +191,9 @@ fn follow_links(path: &Path) -> Result<PathBuf> {
             _ => return Ok(p),
         }
     }
-    bail!(
-        "cannot write {}: more than {MAX_LINKS} symbolic links",
-        path.display()
-    )
+    Err(OutputError::Links {
+        path: path.to_path_buf(),
+    })
 }
 
 /// Whether `meta` describes the same file as `other` (same device and inode on Unix,
@@ -135,16 +215,18 @@ fn same_file(meta: &Metadata, other: &Path) -> bool {
 fn write_direct<T>(
     path: &Path,
     target: &Path,
-    fill: impl FnOnce(&mut dyn Write) -> Result<T>,
-) -> Result<T> {
+    fill: impl FnOnce(&mut dyn Write) -> Result<T, Error>,
+) -> Result<T, Error> {
     let file = OpenOptions::new()
         .write(true)
         .open(target)
-        .with_context(|| format!("cannot open {} for writing", path.display()))?;
+        .map_err(|source| OutputError::Open {
+            path: path.to_path_buf(),
+            source,
+        })?;
     let mut w = std::io::BufWriter::new(file);
     let v = fill(&mut w)?;
-    w.flush()
-        .with_context(|| format!("cannot write {}", path.display()))?;
+    w.flush().map_err(write_error(path))?;
     Ok(v)
 }
 
@@ -153,8 +235,8 @@ fn write_replacing<T>(
     path: &Path,
     target: &Path,
     existing: Option<&Metadata>,
-    fill: impl FnOnce(&mut dyn Write) -> Result<T>,
-) -> Result<T> {
+    fill: impl FnOnce(&mut dyn Write) -> Result<T, Error>,
+) -> Result<T, Error> {
     let dir = match target.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -163,21 +245,28 @@ fn write_replacing<T>(
         .prefix(".limn-")
         .suffix(".tmp")
         .tempfile_in(dir)
-        .with_context(|| format!("cannot create a file in {}", dir.display()))?;
+        .map_err(|source| OutputError::Create {
+            dir: dir.to_path_buf(),
+            source,
+        })?;
     let mut w = std::io::BufWriter::new(tmp);
     let v = fill(&mut w)?;
     let tmp = w
         .into_inner()
-        .map_err(|e| e.into_error())
-        .with_context(|| format!("cannot write {}", path.display()))?;
-    tmp.as_file()
-        .sync_all()
-        .with_context(|| format!("cannot write {}", path.display()))?;
+        .map_err(|e| write_error(path)(e.into_error()))?;
+    tmp.as_file().sync_all().map_err(write_error(path))?;
     set_permissions(tmp.as_file(), existing);
     tmp.persist(target)
-        .map_err(|e| e.error)
-        .with_context(|| format!("cannot write {}", path.display()))?;
+        .map_err(|e| write_error(path)(e.error))?;
     Ok(v)
+}
+
+/// The error of a failed write to `path`.
+fn write_error(path: &Path) -> impl Fn(std::io::Error) -> OutputError + '_ {
+    move |source| OutputError::Write {
+        path: path.to_path_buf(),
+        source,
+    }
 }
 
 /// Temporary files are private (0600): a replaced file keeps its permissions, a new one

@@ -5,20 +5,17 @@
 //! * middle: two closed boxes passing through each other, lit;
 //! * right: a closed, shaded icosphere with a specular highlight.
 
+use std::borrow::Cow;
 use std::path::PathBuf;
-use std::process::ExitCode;
-use std::time::Instant;
 
-use anyhow::Result;
 use glam::{DMat3, DVec3};
-use limn_depthsort::{order, OrderOptions};
-use limn_paint::{painter_for, picture, Format, Outline, Painter, Style, SvgOptions, SvgPainter};
-use limn_scene::{shapes, Camera, Light, LightKind, Material, Scene, SceneError};
+use limn_load::SceneOptions;
+use limn_scene::{shapes, Light, LightKind, Material, Scene, SceneError};
 
-use crate::args::DemoArgs;
-use crate::output::write_atomic;
-use crate::setup::format_of;
-use crate::stats::{write_stats, Drawn, Timing};
+use crate::error::Error;
+use crate::input::Input;
+use crate::options::RenderOptions;
+use crate::render::Request;
 
 /// The demo's shading tolerance: 4/255 per channel. Its glossy sphere in SVG takes
 /// about 1.2 MB at the default 1/255 (gradients and flat pieces, see BENCHMARKS.md),
@@ -93,69 +90,35 @@ pub fn scene() -> Result<Scene, SceneError> {
     Ok(s)
 }
 
-/// Runs `limn demo`: the built-in scene, framed, written like `render` writes.
-pub fn run(a: DemoArgs) -> Result<ExitCode> {
-    let t0 = Instant::now();
-    let scene = scene()?;
-    let output = a
-        .output
-        .clone()
-        .unwrap_or_else(|| PathBuf::from("demo.svg"));
-    let format = format_of(&output, None)?;
-    let cam = Camera::framing(&scene, 960, 540)?;
-    let t1 = Instant::now();
-    let oo = OrderOptions::default();
-    let ordered = order(&scene, &cam, &oo)?;
-    let t2 = Instant::now();
-    let style = Style {
-        seamless: true,
-        smooth: true,
-        background: Some([1.0, 1.0, 1.0, 1.0]),
-        outline: a.outline.then_some(Outline {
-            color: [0.1, 0.1, 0.1, 1.0],
-            width: 1.0,
-        }),
-        tolerance: DEMO_TOLERANCE,
-        ..Style::default()
-    };
-    let pic = picture(&scene, &ordered, &style);
-    let painter: Box<dyn Painter> = match format {
-        Format::Svg => Box::new(SvgPainter::new(SvgOptions {
-            tolerance: DEMO_TOLERANCE,
-            ..SvgOptions::default()
-        })),
-        _ => painter_for(format),
-    };
-    let ps = write_atomic(&output, &[], |w| Ok(painter.paint(&pic, w)?))?;
-    let t3 = Instant::now();
-    let timing = Timing {
-        load: (t1 - t0).as_secs_f64() * 1e3,
-        order: (t2 - t1).as_secs_f64() * 1e3,
-        write: (t3 - t2).as_secs_f64() * 1e3,
-        total: t0.elapsed().as_secs_f64() * 1e3,
-    };
-    write_stats(
-        &a.stats,
-        &scene,
-        &ordered,
-        &oo,
-        &Drawn {
-            paint: &ps,
-            marks: &Default::default(),
+/// The demo's render: the built-in scene, framed at 960×540 on white, written to
+/// `output` like any render (its format from the extension).
+pub fn request(
+    output: PathBuf,
+    outline: bool,
+    stats: Option<PathBuf>,
+) -> Result<Request<'static>, Error> {
+    let scene = scene().map_err(|source| Error::Scene {
+        input: "demo".into(),
+        source,
+    })?;
+    Ok(Request {
+        input: Input::Scene {
+            scene: Cow::Owned(scene),
+            settings: SceneOptions {
+                size: Some((960, 540)),
+                background: Some([1.0; 3]),
+                ..SceneOptions::default()
+            },
+            name: "demo".into(),
         },
-        &timing,
-        &[],
-    )?;
-    if !a.quiet && output.as_os_str() != "-" {
-        eprintln!(
-            "limn: wrote {} ({} faces, {} fragments, {} splits)",
-            output.display(),
-            ordered.stats.faces_in,
-            ordered.stats.fragments_out,
-            ordered.stats.splits
-        );
-    }
-    Ok(ExitCode::SUCCESS)
+        output: Some(output),
+        options: RenderOptions {
+            outline,
+            shading_tolerance: DEMO_TOLERANCE,
+            stats,
+            ..RenderOptions::default()
+        },
+    })
 }
 
 #[cfg(test)]

@@ -1,11 +1,8 @@
-//! `limn check`: the painter's order against an image-space reference, pixel by pixel
+//! A check: the painter's order against an image-space reference, pixel by pixel
 //! (through [`limn_check`], the routine the tests use; the faces compared are those of the
-//! picture `render` draws, with its whole-face covers and seam flaps), and the visible
+//! picture a render draws, with its whole-face covers and seam flaps), and the visible
 //! line pieces against the z-buffer's depth-tested lines.
 
-use std::process::ExitCode;
-
-use anyhow::{Context, Result};
 use limn_check::paint;
 use limn_paint::{picture, Style};
 use limn_zbuffer::{
@@ -13,33 +10,62 @@ use limn_zbuffer::{
 };
 use serde_json::json;
 
-use crate::args::{AgainstArg, CheckArgs};
-use crate::output::{check_writable, write_atomic};
-use crate::progress::Progress;
-use crate::setup::{camera, load, order_options};
+use crate::error::Error;
+use crate::events::Events;
+use crate::input::{load, Input};
+use crate::options::CheckOptions;
+use crate::output::{check_writable, write_atomic, OutputError};
+use crate::settings::{camera, order_options};
 
-/// Exit status when mismatches remain outside the edge band.
-const MISMATCH: u8 = 3;
+/// What a check found.
+#[derive(Debug, Clone)]
+pub struct CheckReport {
+    /// The report as JSON (what `limn check` prints).
+    pub json: serde_json::Value,
+    /// Pixels whose face disagrees with the reference outside the edge band.
+    pub mismatches_outside_band: usize,
+    /// Why the check failed, one sentence each (empty when the pictures agree).
+    pub failures: Vec<String>,
+}
+
+impl CheckReport {
+    /// Whether the pictures agree: no face, shadow or line disagreement outside the band.
+    pub fn agrees(&self) -> bool {
+        self.failures.is_empty()
+    }
+
+    /// The report as pretty-printed JSON with a final newline.
+    pub fn to_json_text(&self) -> String {
+        serde_json::to_string_pretty(&self.json).unwrap_or_default() + "\n"
+    }
+}
 
 /// Orders the scene, resolves which fragment covers each pixel centre, and compares the
-/// face ids with a reference.
-pub fn check(a: CheckArgs) -> Result<ExitCode> {
-    let progress = Progress::start(a.view.quiet);
-    let loaded = load(&a.input, &a.view)?;
+/// face ids with a reference. Writes the difference image and the report when asked.
+pub fn check(
+    input: &Input<'_>,
+    o: &CheckOptions,
+    events: &mut dyn Events,
+) -> Result<CheckReport, Error> {
+    let loaded = load(input, &o.view, events)?;
     let scene = &loaded.scene;
-    let cam = camera(scene, &a.view, loaded.opts.size, &a.input)?;
-    let oo = order_options(&a.view, &loaded.opts)?;
-    for path in a.diff.iter().chain(&a.view.stats) {
+    let name = &loaded.name;
+    let cam = camera(scene, &o.view, loaded.settings.size, name)?;
+    let oo = order_options(&o.view, &loaded.settings)?;
+    for path in o.diff.iter().chain(&o.stats) {
         check_writable(path, &scene.files)?;
     }
-    progress.phase("ordering");
-    let mut painted = paint(scene, &cam, &oo).with_context(|| format!("{}", a.input.display()))?;
-    // The faces of the picture `render` draws: whole-face covers and seam flaps included.
+    events.phase("ordering");
+    let mut painted = paint(scene, &cam, &oo).map_err(|source| Error::Check {
+        input: name.clone(),
+        source,
+    })?;
+    // The faces of the picture a render draws: whole-face covers and seam flaps included.
     let pic = picture(
         scene,
         &painted.ordered,
         &Style {
-            seams: a.seams,
+            seams: o.seams,
             ..Style::default()
         },
     );
@@ -52,15 +78,10 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
     painted.ids = rasterize_ids(&polys, c.width, c.height);
     let ordered = &painted.ordered;
     let (w, h) = (ordered.camera.width, ordered.camera.height);
-    let method = match a.against {
-        AgainstArg::Zbuffer => Method::ZBuffer,
-        AgainstArg::Raycast => Method::RayCast,
-        AgainstArg::Warnock => Method::Warnock,
-        AgainstArg::Scanline => Method::ScanLine,
-    };
-    progress.phase("rendering the reference");
+    let method = o.against.method();
+    events.phase("rendering the reference");
     let reference = painted.reference(scene, method, DepthFormat::F64)?;
-    progress.phase("comparing");
+    events.phase("comparing");
     let tol = default_band_tolerance(w, h);
     let cmp = painted.compare(&reference);
     let lines = painted.compare_lines(scene)?;
@@ -72,12 +93,9 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         let r = painted.reference_shadows(scene, method, &ShadowMapOptions::default())?;
         Some(painted.compare_shadows(&r))
     };
-    if let Some(path) = &a.diff {
+    if let Some(path) = &o.diff {
         let png = diff_png(&painted.ids, &reference, Some(&painted.band))?;
-        write_atomic(path, &scene.files, |out| {
-            out.write_all(&png)?;
-            Ok(())
-        })?;
+        write_bytes(path, &scene.files, &png)?;
     }
     let per_face: serde_json::Map<String, serde_json::Value> = cmp
         .per_face
@@ -93,11 +111,11 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
         })
         .collect();
     let v = json!({
-        "input": a.input.display().to_string(),
+        "input": name,
         "against": method.name(),
         "sort": oo.sort.name(),
         "arith": oo.arith.name(),
-        "seams": a.seams,
+        "seams": o.seams,
         "width": w,
         "height": h,
         "pixels": cmp.pixels,
@@ -127,55 +145,61 @@ pub fn check(a: CheckArgs) -> Result<ExitCode> {
             "mismatches_outside_band": c.mismatches_outside_band,
         })),
     });
-    if ordered.stats.faces_near_clipped > 0 && !a.view.quiet {
-        eprintln!(
-            "limn: warning: {} faces come closer to the eye than the near plane ({:.6e}); the \
+    if ordered.stats.faces_near_clipped > 0 {
+        events.warning(&format!(
+            "{} faces come closer to the eye than the near plane ({:.6e}); the \
              painter and {} both cut them there, so this comparison does not cover the cut \
              parts (set --near to move it)",
             ordered.stats.faces_near_clipped,
             ordered.near,
             method.name()
-        );
+        ));
     }
-    drop(progress);
-    let text = serde_json::to_string_pretty(&v)? + "\n";
-    match &a.view.stats {
-        Some(p) => write_atomic(p, &scene.files, |out| {
-            out.write_all(text.as_bytes())?;
-            Ok(())
-        })?,
-        None => print!("{text}"),
-    }
+    let mut failures = Vec::new();
     if cmp.mismatches_outside_band > 0 {
-        if !a.view.quiet {
-            eprintln!(
-                "limn: {} pixels disagree with {} outside the edge band",
-                cmp.mismatches_outside_band,
-                method.name()
-            );
-        }
-        return Ok(ExitCode::from(MISMATCH));
+        failures.push(format!(
+            "{} pixels disagree with {} outside the edge band",
+            cmp.mismatches_outside_band,
+            method.name()
+        ));
     }
     if let Some(c) = shadows.filter(|c| method == Method::RayCast && c.mismatches_outside_band > 0)
     {
-        if !a.view.quiet {
-            eprintln!(
-                "limn: {} pixels are shadowed from other lights than by the exact shadow rays \
-                 outside the edge band",
-                c.mismatches_outside_band
-            );
-        }
-        return Ok(ExitCode::from(MISMATCH));
+        failures.push(format!(
+            "{} pixels are shadowed from other lights than by the exact shadow rays \
+             outside the edge band",
+            c.mismatches_outside_band
+        ));
     }
     if lines.fails() {
-        if !a.view.quiet {
-            eprintln!(
-                "limn: {} of {} line pixels disagree with the z-buffer's lines outside the band \
-                 (more than 1 %)",
-                lines.mismatches_outside_band, lines.pixels
-            );
-        }
-        return Ok(ExitCode::from(MISMATCH));
+        failures.push(format!(
+            "{} of {} line pixels disagree with the z-buffer's lines outside the band \
+             (more than 1 %)",
+            lines.mismatches_outside_band, lines.pixels
+        ));
     }
-    Ok(ExitCode::SUCCESS)
+    let report = CheckReport {
+        json: v,
+        mismatches_outside_band: cmp.mismatches_outside_band,
+        failures,
+    };
+    if let Some(p) = &o.stats {
+        write_bytes(p, &scene.files, report.to_json_text().as_bytes())?;
+    }
+    Ok(report)
+}
+
+/// Writes `bytes` to `path` safely.
+fn write_bytes(
+    path: &std::path::Path,
+    read: &[std::path::PathBuf],
+    bytes: &[u8],
+) -> Result<(), Error> {
+    write_atomic(path, read, |out| {
+        out.write_all(bytes).map_err(|source| OutputError::Write {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        Ok(())
+    })
 }

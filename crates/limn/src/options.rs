@@ -1,0 +1,269 @@
+//! Every option of a render and a check, by name, with the command's defaults. An option
+//! left `None` falls back to the scene file's setting, then to the default.
+
+use std::path::PathBuf;
+
+use limn_depthsort::{Arith, CullMode, SortMode};
+use limn_paint::Format;
+use limn_scene::Shading;
+
+/// The default seam width in pixels (`--seams`).
+pub const DEFAULT_SEAMS: f64 = 0.5;
+/// The default shading tolerance per colour channel (`--shading-tolerance`): one 8-bit
+/// step.
+pub const DEFAULT_SHADING_TOLERANCE: f64 = 1.0 / 255.0;
+/// The default shadow-map size of the image-space methods (`--shadow-map-size`).
+pub const DEFAULT_SHADOW_MAP_SIZE: u32 = 2048;
+/// The default shadow-map depth bias (`--shadow-bias`).
+pub const DEFAULT_SHADOW_BIAS: f64 = 1e-3;
+/// The default crease angle of hidden-line drawings in degrees (`--crease`).
+pub const DEFAULT_CREASE: f64 = 30.0;
+/// The default picture size in pixels (`--size`).
+pub const DEFAULT_SIZE: (u32, u32) = (800, 600);
+
+/// How to look at the scene and how to order it: what `render` and `check` share.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ViewOptions {
+    /// Picture size in pixels.
+    pub size: Option<(u32, u32)>,
+    /// Eye position.
+    pub eye: Option<[f64; 3]>,
+    /// Point looked at.
+    pub target: Option<[f64; 3]>,
+    /// Up direction.
+    pub up: Option<[f64; 3]>,
+    /// Vertical field of view in degrees.
+    pub fov: Option<f64>,
+    /// Orthographic projection: `Some(Some(h))` shows `h` world units vertically,
+    /// `Some(None)` frames the scene.
+    pub ortho: Option<Option<f64>>,
+    /// Visibility ordering.
+    pub sort: Option<SortMode>,
+    /// Arithmetic of the geometric decisions.
+    pub arith: Option<Arith>,
+    /// Back-face culling.
+    pub cull: Option<CullMode>,
+    /// Distance of the near clipping plane from the eye.
+    pub near: Option<f64>,
+    /// Distance of the far clipping plane from the eye.
+    pub far: Option<f64>,
+    /// Most fragments the ordering may make before giving up.
+    pub max_fragments: Option<usize>,
+    /// Follow references (material libraries, buffers, textures, meshes) outside the
+    /// input's folder.
+    pub allow_outside: bool,
+    /// Interpolation across lit faces with vertex normals.
+    pub shading: Option<Shading>,
+    /// A view-projection matrix (world to OpenGL clip coordinates, column-major) that
+    /// replaces the scene's camera, the eye, target, up, field of view and projection.
+    pub matrix: Option<[f64; 16]>,
+}
+
+/// How to compute the picture.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Method {
+    /// Painter's order of exact fragments: a vector picture (the default).
+    #[default]
+    Painter,
+    /// Z-buffer.
+    ZBuffer,
+    /// Scan-line z-buffer.
+    ScanLine,
+    /// A-buffer (transparency).
+    ABuffer,
+    /// Warnock area subdivision.
+    Warnock,
+    /// Exact ray casting at pixel centres.
+    RayCast,
+}
+
+impl Method {
+    /// Every method.
+    pub const ALL: [Method; 6] = [
+        Method::Painter,
+        Method::ZBuffer,
+        Method::ScanLine,
+        Method::ABuffer,
+        Method::Warnock,
+        Method::RayCast,
+    ];
+
+    /// The method's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Painter => "painter",
+            Method::ZBuffer => "zbuffer",
+            Method::ScanLine => "scanline",
+            Method::ABuffer => "abuffer",
+            Method::Warnock => "warnock",
+            Method::RayCast => "raycast",
+        }
+    }
+
+    /// The method of a name.
+    pub fn from_name(s: &str) -> Option<Method> {
+        Method::ALL.into_iter().find(|m| m.name() == s)
+    }
+
+    /// The image-space method, or `None` for the painter.
+    pub fn raster(self) -> Option<limn_zbuffer::Method> {
+        match self {
+            Method::Painter => None,
+            Method::ZBuffer => Some(limn_zbuffer::Method::ZBuffer),
+            Method::ScanLine => Some(limn_zbuffer::Method::ScanLine),
+            Method::ABuffer => Some(limn_zbuffer::Method::ABuffer),
+            Method::Warnock => Some(limn_zbuffer::Method::Warnock),
+            Method::RayCast => Some(limn_zbuffer::Method::RayCast),
+        }
+    }
+}
+
+/// What the picture shows of the faces.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Look {
+    /// Filled faces (the default).
+    #[default]
+    Filled,
+    /// Silhouettes, creases and boundaries of the faces as lines, hidden exactly.
+    HiddenLine,
+}
+
+/// A background: none (transparent), or an RGB colour with channels in 0..1.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Background {
+    /// No background.
+    None,
+    /// A colour.
+    Colour([f64; 3]),
+}
+
+/// Every option of `limn render`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderOptions {
+    /// Camera and ordering.
+    pub view: ViewOptions,
+    /// Output format [default: the output's extension, else the scene file's, else SVG].
+    pub format: Option<Format>,
+    /// Stroke every model edge.
+    pub outline: bool,
+    /// Width in pixels of the seam flaps that close hairline gaps between adjacent
+    /// fragments (0 to 10; 0 draws none).
+    pub seams: f64,
+    /// Background.
+    pub background: Option<Background>,
+    /// Largest difference per colour channel between the painted picture and per-point
+    /// shading where the format cannot interpolate exactly.
+    pub shading_tolerance: f64,
+    /// How to compute the picture.
+    pub method: Method,
+    /// Shadow-map size of the image-space methods.
+    pub shadow_map_size: u32,
+    /// Shadow-map depth bias of the image-space methods.
+    pub shadow_bias: f64,
+    /// A TikZ file that compiles on its own.
+    pub standalone: bool,
+    /// Filled or hidden-line.
+    pub style: Option<Look>,
+    /// Hidden-line drawings: the angle between faces above which their shared edge is
+    /// drawn, in degrees.
+    pub crease: Option<f64>,
+    /// Hidden-line drawings: draw hidden lines dashed (else leave them out).
+    pub dashed: Option<bool>,
+    /// Hidden-line drawings: fill faces with the background (else draw lines only).
+    pub fill: Option<bool>,
+    /// Where to write the statistics as JSON (`-` for standard output).
+    pub stats: Option<PathBuf>,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            view: ViewOptions::default(),
+            format: None,
+            outline: false,
+            seams: DEFAULT_SEAMS,
+            background: None,
+            shading_tolerance: DEFAULT_SHADING_TOLERANCE,
+            method: Method::Painter,
+            shadow_map_size: DEFAULT_SHADOW_MAP_SIZE,
+            shadow_bias: DEFAULT_SHADOW_BIAS,
+            standalone: false,
+            style: None,
+            crease: None,
+            dashed: None,
+            fill: None,
+            stats: None,
+        }
+    }
+}
+
+/// The image-space references `limn check` compares with.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Against {
+    /// Exact ray casting at pixel centres (the default).
+    #[default]
+    RayCast,
+    /// Z-buffer.
+    ZBuffer,
+    /// Warnock area subdivision.
+    Warnock,
+    /// Scan-line z-buffer.
+    ScanLine,
+}
+
+impl Against {
+    /// Every reference.
+    pub const ALL: [Against; 4] = [
+        Against::ZBuffer,
+        Against::RayCast,
+        Against::Warnock,
+        Against::ScanLine,
+    ];
+
+    /// The image-space method.
+    pub fn method(self) -> limn_zbuffer::Method {
+        match self {
+            Against::RayCast => limn_zbuffer::Method::RayCast,
+            Against::ZBuffer => limn_zbuffer::Method::ZBuffer,
+            Against::Warnock => limn_zbuffer::Method::Warnock,
+            Against::ScanLine => limn_zbuffer::Method::ScanLine,
+        }
+    }
+
+    /// The reference's name.
+    pub fn name(self) -> &'static str {
+        self.method().name()
+    }
+
+    /// The reference of a name.
+    pub fn from_name(s: &str) -> Option<Against> {
+        Against::ALL.into_iter().find(|a| a.name() == s)
+    }
+}
+
+/// Every option of `limn check`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CheckOptions {
+    /// Camera and ordering.
+    pub view: ViewOptions,
+    /// The reference.
+    pub against: Against,
+    /// Where to write a PNG of the disagreeing pixels.
+    pub diff: Option<PathBuf>,
+    /// Seam width of the picture compared, as in [`RenderOptions::seams`].
+    pub seams: f64,
+    /// Where to write the report as JSON (`-` for standard output).
+    pub stats: Option<PathBuf>,
+}
+
+impl Default for CheckOptions {
+    fn default() -> Self {
+        CheckOptions {
+            view: ViewOptions::default(),
+            against: Against::RayCast,
+            diff: None,
+            seams: DEFAULT_SEAMS,
+            stats: None,
+        }
+    }
+}

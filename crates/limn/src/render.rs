@@ -1,0 +1,214 @@
+//! A render, from input to written file: load → (hidden-line preparation) → order →
+//! compose → write, or an image-space method per pixel; the statistics and warnings.
+
+use std::any::Any;
+use std::borrow::Cow;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use limn_depthsort::{order, order_with_marks, OrderError, OrderOptions, Ordered, VisibleMarks};
+use limn_paint::{
+    hidden_line_picture, hidden_line_scene, painter_for, picture_with_marks, Format, Painter,
+    SvgOptions, SvgPainter, TikzOptions, TikzPainter,
+};
+use limn_scene::{Camera, Scene};
+
+use crate::error::Error;
+use crate::events::Events;
+use crate::input::{load, Input};
+use crate::losses::losses;
+use crate::options::{Method, RenderOptions};
+use crate::output::{check_writable, write_atomic};
+use crate::raster::raster;
+use crate::settings;
+use crate::stats::RenderStats;
+
+/// What to render, where, and how.
+#[derive(Debug, Clone)]
+pub struct Request<'a> {
+    /// The scene.
+    pub input: Input<'a>,
+    /// Where to write the picture (`-` for standard output) [default: the input file
+    /// beside itself, with the format's extension].
+    pub output: Option<PathBuf>,
+    /// Every option.
+    pub options: RenderOptions,
+}
+
+/// A finished render.
+pub struct Rendered<'a> {
+    /// Where the picture went.
+    pub output: PathBuf,
+    /// Its format.
+    pub format: Format,
+    /// How it was computed.
+    pub method: Method,
+    /// The statistics of a painter's render (`None` for the image-space methods).
+    pub stats: Option<RenderStats>,
+    /// Every warning of the render, loading and drawing.
+    pub warnings: Vec<String>,
+    /// The scene, the order and the picture, kept so that a caller about to exit can
+    /// leave them to the system instead of freeing millions of allocations one by one
+    /// (`std::mem::forget` on the whole result).
+    _scene: Cow<'a, Scene>,
+    _parts: Box<dyn Any>,
+}
+
+impl std::fmt::Debug for Rendered<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Rendered")
+            .field("output", &self.output)
+            .field("format", &self.format)
+            .field("method", &self.method)
+            .field("stats", &self.stats)
+            .field("warnings", &self.warnings)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Warnings passed on to the caller's events and kept for the statistics.
+struct Kept<'e> {
+    events: &'e mut dyn Events,
+    warnings: Vec<String>,
+}
+
+impl Events for Kept<'_> {
+    fn warning(&mut self, text: &str) {
+        self.warnings.push(text.to_string());
+        self.events.warning(text);
+    }
+    fn phase(&mut self, name: &'static str) {
+        self.events.phase(name);
+    }
+}
+
+/// Milliseconds between two instants.
+fn ms(from: Instant, to: Instant) -> f64 {
+    (to - from).as_secs_f64() * 1e3
+}
+
+/// Runs a render: writes the picture (and the statistics, when asked) safely — nothing
+/// is left behind on error, and no file the scene was read from is written over.
+pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered<'a>, Error> {
+    let t0 = Instant::now();
+    let o = &req.options;
+    let mut ev = Kept {
+        events,
+        warnings: Vec::new(),
+    };
+    let loaded = load(&req.input, &o.view, &mut ev)?;
+    let scene: &Scene = &loaded.scene;
+    let name = &loaded.name;
+    let cam = settings::camera(scene, &o.view, loaded.settings.size, name)?;
+    let oo = settings::order_options(&o.view, &loaded.settings)?;
+    let (output, format) = settings::output_and_format(
+        &req.input,
+        req.output.as_deref(),
+        o.format,
+        &loaded.settings,
+    )?;
+    if o.standalone && format != Format::Tikz {
+        return Err(Error::Standalone(format));
+    }
+    check_writable(&output, &scene.files)?;
+    if let Some(stats) = &o.stats {
+        check_writable(stats, &scene.files)?;
+    }
+    if o.method != Method::Painter {
+        if format != Format::Png {
+            return Err(Error::RasterFormat(o.method.name()));
+        }
+        ev.phase("rendering");
+        raster(scene, &cam, o, &oo, &output, &mut ev)?;
+        let warnings = ev.warnings;
+        return Ok(Rendered {
+            output,
+            format,
+            method: o.method,
+            stats: None,
+            warnings,
+            _scene: loaded.scene,
+            _parts: Box::new(()),
+        });
+    }
+    let t1 = Instant::now();
+    ev.phase("ordering");
+    let hidden_line = settings::hidden_line_style(o, &loaded.settings);
+    let background = settings::background(o, &loaded.settings);
+    let drawn_scene = hidden_line.as_ref().map(|h| {
+        let fill = background.map_or([1.0; 3], |b| [b[0], b[1], b[2]]);
+        hidden_line_scene(scene, &cam, h, fill)
+    });
+    let ordered_scene = drawn_scene.as_ref().map_or(scene, |d| &d.0);
+    let (ordered, marks) =
+        order_scene(ordered_scene, &cam, &oo).map_err(|e| Error::order(e, name))?;
+    let t2 = Instant::now();
+    ev.phase("writing");
+    let tolerance = settings::tolerance(o, scene, format);
+    let style = settings::style(o, &loaded.settings, background, tolerance);
+    let pic = match (&hidden_line, &drawn_scene) {
+        (Some(h), Some((s, first))) => hidden_line_picture(s, &ordered, &marks, *first, h, &style),
+        _ => picture_with_marks(ordered_scene, &ordered, &marks, &style),
+    };
+    let painter: Box<dyn Painter> = match format {
+        Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
+            standalone: o.standalone,
+            ..TikzOptions::default()
+        })),
+        Format::Svg => Box::new(SvgPainter::new(SvgOptions {
+            tolerance,
+            ..SvgOptions::default()
+        })),
+        _ => painter_for(format),
+    };
+    let ps = write_atomic(&output, &scene.files, |w| Ok(painter.paint(&pic, w)?))?;
+    let t3 = Instant::now();
+    for w in losses(scene, &ordered, &ps, format, cam.near.is_some()) {
+        ev.warning(&w);
+    }
+    let timing = [ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t0, Instant::now())];
+    let stats = RenderStats::new(
+        scene,
+        &ordered,
+        &oo,
+        (&ps, &marks.stats),
+        timing,
+        ev.warnings.clone(),
+    );
+    if let Some(path) = &o.stats {
+        let text = stats.to_json_text();
+        write_atomic(path, &scene.files, |w| {
+            w.write_all(text.as_bytes())
+                .map_err(|source| crate::output::OutputError::Write {
+                    path: path.clone(),
+                    source,
+                })?;
+            Ok(())
+        })?;
+    }
+    let warnings = ev.warnings;
+    let parts = (drawn_scene, ordered, marks, pic);
+    Ok(Rendered {
+        output,
+        format,
+        method: Method::Painter,
+        stats: Some(stats),
+        warnings,
+        _scene: loaded.scene,
+        _parts: Box::new(parts),
+    })
+}
+
+/// Orders `scene` and hides its lines, markers and labels. A scene without any is only
+/// ordered: hiding marks makes an occluder of every fragment (a copy of its exact
+/// polygon, its planes and screen bins) even when there is nothing to hide.
+pub fn order_scene(
+    scene: &Scene,
+    cam: &Camera,
+    oo: &OrderOptions,
+) -> Result<(Ordered, VisibleMarks), OrderError> {
+    if scene.lines.is_empty() && scene.points.is_empty() && scene.labels.is_empty() {
+        return Ok((order(scene, cam, oo)?, VisibleMarks::default()));
+    }
+    order_with_marks(scene, cam, oo)
+}
