@@ -4,9 +4,12 @@
 >>> v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], float)
 >>> stats = limn.render_mesh(v, [[0, 1, 2]], "tri.svg")   # doctest: +SKIP
 
-``render_mesh`` draws one mesh; ``Scene`` holds several meshes, lines, point markers,
-labels, lights and a camera
-(perspective, orthographic, or a 4x4 view-projection matrix); ``limn.matplotlib.savefig``
+``render_mesh`` draws one mesh; ``load`` reads a mesh or scene file (OBJ, STL, PLY,
+glTF, GLB, TOML) as the command reads it; ``Scene`` holds several meshes, lines, point
+markers, labels, lights and a camera
+(perspective, orthographic, or a 4x4 view-projection matrix), and renders with every
+option of ``limn render`` (same names, ``-`` as ``_``, same defaults, same file safety);
+``limn.matplotlib.savefig``
 writes a matplotlib figure whose 3D axes are ordered exactly by limn (surfaces, bars,
 lines, scatter points, 3D texts and, when data leave it, the axes' box).
 """
@@ -20,7 +23,7 @@ import numpy as np
 
 from . import _limn
 
-__all__ = ["render_mesh", "Scene", "__version__"]
+__all__ = ["load", "render_mesh", "Scene", "__version__"]
 __version__ = _limn.__version__
 
 
@@ -116,6 +119,7 @@ def render_mesh(
     sort: str = "adaptive",
     arith: str = "exact",
     format: Optional[str] = None,
+    **options: Any,
 ) -> Dict[str, Any]:
     """Render one mesh to ``path`` and return the statistics ``limn --stats`` prints.
 
@@ -132,31 +136,33 @@ def render_mesh(
     eye, target, up, fov: the camera; without ``eye`` the scene is framed as the
     command frames it (from the right, above and in front). size: (width, height) in
     pixels. sort: adaptive, bsp, newell or simple. arith: exact or float. format: svg,
-    pdf, eps, png or tikz (default: from the extension).
+    pdf, eps, png or tikz (default: from the extension). Any other keyword is an option
+    of ``Scene.render``.
 
     Raises ValueError for wrong shapes, NaN, indices out of range, faces of fewer than
     three corners, counts that do not add up to the number of indices, and bad options
     (the message names the face); OSError when the file cannot be written. Nothing is
     written on error.
     """
-    t = lambda x: None if x is None else tuple(float(c) for c in x)  # noqa: E731
-    f, n = _faces(faces, counts)
-    return _limn.render_mesh(
-        _vertices(vertices),
-        f,
-        str(path),
-        counts=n,
-        colors=_colors(colors),
-        opacity=opacity,
-        eye=t(eye),
-        target=t(target),
-        up=t(up),
-        fov=float(fov),
-        size=(int(size[0]), int(size[1])),
-        sort=sort,
-        arith=arith,
-        format=format,
-    )
+    s = Scene()
+    s.add_mesh(vertices, faces, counts=counts, colors=colors, opacity=opacity)
+    s.set_camera(eye=eye, target=target, up=up, fov=fov, size=size)
+    return s.render(path, format=format, sort=sort, arith=arith, **options)
+
+
+def load(path: Any, *, allow_outside: bool = False) -> "Scene":
+    """Read a mesh or scene file as ``limn render`` reads it: OBJ (with MTL materials and
+    textures), STL, PLY, glTF/GLB, or a TOML scene file (meshes, lights, camera, lines,
+    points, labels and render settings, which ``render`` then uses as the command does).
+
+    allow_outside: follow references (material libraries, buffers, textures, meshes)
+    outside the file's folder. The file's warnings are issued as ``UserWarning`` (text
+    starting ``limn: ``). Raises ``OSError`` when the file cannot be read and
+    ``ValueError`` (naming file and line) when it is not valid.
+    """
+    s = Scene.__new__(Scene)
+    s._s = _limn.load(str(path), allow_outside=bool(allow_outside))
+    return s
 
 
 class Scene:
@@ -358,35 +364,124 @@ class Scene:
         path: Any,
         *,
         format: Optional[str] = None,
-        sort: str = "adaptive",
-        arith: str = "exact",
-        outline: Optional[Tuple[float, float, float, float]] = None,
-        background: Optional[Tuple[float, float, float]] = None,
+        sort: Optional[str] = None,
+        arith: Optional[str] = None,
+        cull: Optional[str] = None,
+        outline: Any = False,
+        background: Any = None,
+        style: Optional[str] = None,
+        hidden: Optional[str] = None,
+        fill: Optional[str] = None,
+        crease: Optional[float] = None,
+        seams: float = 0.5,
+        shading: Optional[str] = None,
+        shading_tolerance: float = 1.0 / 255.0,
+        method: str = "painter",
+        shadow_map_size: int = 2048,
+        shadow_bias: float = 1e-3,
+        standalone: bool = False,
+        max_fragments: Optional[int] = None,
+        near: Optional[float] = None,
+        far: Optional[float] = None,
+        threads: Optional[int] = None,
+        stats: Any = None,
     ) -> Dict[str, Any]:
-        """Render to ``path`` (format from the extension unless given); return the
-        statistics ``limn --stats`` prints. outline: (r, g, b, width) strokes the model's
-        edges; background: (r, g, b) paints the page."""
+        """Render to ``path`` with the options of ``limn render`` (the same names with
+        ``_`` for ``-``, the same defaults; unset ones fall back to a loaded scene file's
+        settings); return the statistics ``limn --stats`` prints (for ``method`` other
+        than ``"painter"``: ``{"method", "warnings"}``).
+
+        format: svg, pdf, eps, png or tikz (default: the extension). sort: adaptive, bsp,
+        newell, simple. arith: exact, float. cull: auto, on, off. outline: ``True``
+        strokes every model edge; ``(r, g, b, width)`` in that colour and width.
+        background: ``(r, g, b)``, ``"#rrggbb"`` or ``"none"``. style: filled,
+        hidden-line; hidden: omit, dashed; fill: background, none; crease: degrees.
+        seams: seam flap width in pixels (0 to 10). shading: flat, gouraud, phong;
+        shading_tolerance: per channel (0, 1]. method: painter, zbuffer, scanline,
+        abuffer, warnock, raycast (a PNG). standalone: a TikZ file that compiles alone.
+        max_fragments: give up beyond. near, far: clipping distances. threads: worker
+        threads (the picture is the same for every count). stats: also write the
+        statistics as JSON to this path.
+
+        Writes safely: a temporary file renamed into place (nothing left on error), a
+        symbolic link written through, a device or FIFO written directly; a folder, a
+        read-only file and the files the scene was read from are refused (``OSError``).
+        Warnings are issued as ``UserWarning`` (text starting ``limn: ``) and listed in
+        the statistics. Raises ``ValueError`` for bad options and scenes.
+        """
+        colour = width = None
+        if isinstance(outline, (tuple, list)):
+            if len(outline) != 4:
+                raise ValueError("outline must be True, False or (r, g, b, width)")
+            colour = tuple(float(c) for c in outline[:3])
+            width = float(outline[3])
+            outline = True
+        if isinstance(background, (tuple, list)):
+            background = tuple(float(c) for c in background)
         return self._s.render(
-            str(path), format=format, sort=sort, arith=arith, outline=outline, background=background
+            str(path),
+            format=format,
+            sort=sort,
+            arith=arith,
+            cull=cull,
+            outline=bool(outline),
+            outline_color=colour,
+            outline_width=width,
+            background=background,
+            style=style,
+            hidden=hidden,
+            fill=fill,
+            crease=None if crease is None else float(crease),
+            seams=float(seams),
+            shading=shading,
+            shading_tolerance=float(shading_tolerance),
+            method=method,
+            shadow_map_size=int(shadow_map_size),
+            shadow_bias=float(shadow_bias),
+            standalone=bool(standalone),
+            max_fragments=max_fragments,
+            near=near,
+            far=far,
+            threads=threads,
+            stats=None if stats is None else str(stats),
         )
 
     def check(
-        self, against: str = "raycast", *, sort: str = "adaptive", arith: str = "exact"
+        self,
+        against: str = "raycast",
+        *,
+        sort: Optional[str] = None,
+        arith: Optional[str] = None,
+        seams: float = 0.5,
+        diff: Any = None,
+        stats: Any = None,
+        threads: Optional[int] = None,
     ) -> Dict[str, Any]:
-        """Compare the painted order with an image-space reference (raycast, zbuffer,
-        scanline, abuffer, warnock) at every pixel centre; ``mismatches_outside_band`` is
-        0 when they agree outside the band of centres too close to an edge to call."""
-        return self._s.check(against, sort=sort, arith=arith)
+        """Compare the picture ``render`` draws (seam flaps ``seams`` pixels wide
+        included) with an image-space reference (raycast, zbuffer, scanline, warnock) at
+        every pixel centre, as ``limn check`` does; return its report, with ``agrees``
+        (no pixel outside the band of centres too close to an edge to call disagrees, nor
+        any shadow or line pixel) and ``failures`` (why not). diff: write a PNG of the
+        disagreeing pixels; stats: write the report as JSON."""
+        return self._s.check(
+            against,
+            sort=sort,
+            arith=arith,
+            seams=float(seams),
+            diff=None if diff is None else str(diff),
+            stats=None if stats is None else str(stats),
+            threads=threads,
+        )
 
     def paint(
-        self, *, sort: str = "adaptive", arith: str = "exact", seams: float = 0.5
+        self, *, sort: Optional[str] = None, arith: Optional[str] = None, seams: float = 0.5
     ) -> list:
         """The painted polygons, back to front: ``(face, points (n, 2) in pixels with y
         down, fill (r, g, b, a), original_edges)``; seam flaps included."""
         return self._s.paint(sort=sort, arith=arith, seams=seams)
 
     def paint_with_marks(
-        self, *, sort: str = "adaptive", arith: str = "exact", seams: float = 0.5
+        self, *, sort: Optional[str] = None, arith: Optional[str] = None, seams: float = 0.5
     ) -> Tuple[list, list]:
         """``paint()``'s polygons and the visible lines, markers, labels and arrow heads
         as dicts in paint order. Each has ``before`` (paint it before that polygon; the

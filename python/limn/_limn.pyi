@@ -7,25 +7,10 @@ import numpy.typing as npt
 
 __version__: str
 
-# Faces (render_mesh, Scene.add_mesh): without counts, an (M, k) array of M faces of k >= 3
-# corners; with counts ((M,), each face's corner count, 3 or more), the flat (K,) indices
-# of every face one face after another, K being the sum of the counts.
-def render_mesh(
-    vertices: npt.NDArray[np.float64],
-    faces: npt.NDArray[np.int64],
-    path: str,
-    counts: Optional[npt.NDArray[np.int64]] = ...,
-    colors: Optional[npt.NDArray[np.float64]] = ...,
-    opacity: Optional[float] = ...,
-    eye: Optional[Tuple[float, float, float]] = ...,
-    target: Optional[Tuple[float, float, float]] = ...,
-    up: Tuple[float, float, float] = ...,
-    fov: float = ...,
-    size: Tuple[int, int] = ...,
-    sort: str = ...,
-    arith: str = ...,
-    format: Optional[str] = ...,
-) -> Dict[str, Any]: ...
+# Faces (Scene.add_mesh): without counts, an (M, k) array of M faces of k >= 3 corners;
+# with counts ((M,), each face's corner count, 3 or more), the flat (K,) indices of every
+# face one face after another, K being the sum of the counts.
+def load(path: str, allow_outside: bool = ...) -> "Scene": ...
 
 class Scene:
     face_count: int
@@ -89,17 +74,45 @@ class Scene:
         self,
         path: str,
         format: Optional[str] = ...,
-        sort: str = ...,
-        arith: str = ...,
-        outline: Optional[Tuple[float, float, float, float]] = ...,
-        background: Optional[Tuple[float, float, float]] = ...,
+        sort: Optional[str] = ...,
+        arith: Optional[str] = ...,
+        cull: Optional[str] = ...,
+        outline: bool = ...,
+        outline_color: Optional[Tuple[float, float, float]] = ...,
+        outline_width: Optional[float] = ...,
+        background: Any = ...,
+        style: Optional[str] = ...,
+        hidden: Optional[str] = ...,
+        fill: Optional[str] = ...,
+        crease: Optional[float] = ...,
+        seams: float = ...,
+        shading: Optional[str] = ...,
+        shading_tolerance: float = ...,
+        method: str = ...,
+        shadow_map_size: int = ...,
+        shadow_bias: float = ...,
+        standalone: bool = ...,
+        max_fragments: Optional[int] = ...,
+        near: Optional[float] = ...,
+        far: Optional[float] = ...,
+        threads: Optional[int] = ...,
+        stats: Optional[str] = ...,
     ) -> Dict[str, Any]: ...
-    def check(self, against: str = ..., sort: str = ..., arith: str = ...) -> Dict[str, Any]: ...
+    def check(
+        self,
+        against: str = ...,
+        sort: Optional[str] = ...,
+        arith: Optional[str] = ...,
+        seams: float = ...,
+        diff: Optional[str] = ...,
+        stats: Optional[str] = ...,
+        threads: Optional[int] = ...,
+    ) -> Dict[str, Any]: ...
     def paint(
-        self, sort: str = ..., arith: str = ..., seams: float = ...
+        self, sort: Optional[str] = ..., arith: Optional[str] = ..., seams: float = ...
     ) -> List[Tuple[int, npt.NDArray[np.float64], Tuple[float, float, float, float], List[bool]]]: ...
     def paint_with_marks(
-        self, sort: str = ..., arith: str = ..., seams: float = ...
+        self, sort: Optional[str] = ..., arith: Optional[str] = ..., seams: float = ...
     ) -> Tuple[
         List[Tuple[int, npt.NDArray[np.float64], Tuple[float, float, float, float], List[bool]]],
         List[Dict[str, Any]],

@@ -1,250 +1,203 @@
-//! Ordering and writing: options by name, the picture written atomically (nothing is
-//! left on error), and the statistics `limn --stats` prints, as a dict.
+//! Render and check options from Python keywords to the library's, by the command's
+//! names and defaults; the statistics and reports as dicts (the JSON the command writes).
 
-use std::io::Write;
-use std::path::{Path, PathBuf};
-use std::time::Instant;
+use std::path::PathBuf;
 
-use limn_depthsort::{order_with_marks, Arith, MarkStats, OrderOptions, Ordered, SortMode};
-use limn_paint::{painter_for, picture_with_marks, Format, PaintStats, Style};
-use limn_scene::{Effects, Scene};
-use numpy::{PyReadonlyArray1, PyReadonlyArray2};
+use limn::values::parse_background;
+use limn::{
+    Against, Arith, Background, CheckOptions, CullMode, Format, Look, Method, RenderOptions,
+    SceneOptions, Shading, SortMode, ViewOptions,
+};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::PyAny;
 
-use crate::camera::CameraSpec;
-use crate::errors::{os_error, value_error};
-use crate::mesh::{add_mesh, vec3, Colors, Faces};
+use crate::errors::value_error;
 
-/// Ordering options by name, as the command takes them.
-pub(crate) fn order_options(sort: &str, arith: &str) -> PyResult<OrderOptions> {
-    let sort = SortMode::from_name(sort).ok_or_else(|| {
-        value_error(format!(
-            "unknown sort `{sort}` (adaptive, bsp, newell or simple)"
-        ))
-    })?;
-    let arith = Arith::from_name(arith)
-        .ok_or_else(|| value_error(format!("unknown arith `{arith}` (exact or float)")))?;
-    Ok(OrderOptions {
-        sort,
-        arith,
-        ..OrderOptions::default()
+/// A name the library knows, or a `ValueError` listing the names.
+fn named<T: Copy>(what: &str, given: &str, all: &[T], name: fn(T) -> &'static str) -> PyResult<T> {
+    all.iter()
+        .copied()
+        .find(|&v| name(v) == given)
+        .ok_or_else(|| {
+            let names: Vec<&str> = all.iter().map(|&v| name(v)).collect();
+            value_error(format!("unknown {what} `{given}` ({})", names.join(", ")))
+        })
+}
+
+/// Ordering options by name.
+pub(crate) fn order_names(
+    view: &mut ViewOptions,
+    sort: Option<&str>,
+    arith: Option<&str>,
+    cull: Option<&str>,
+) -> PyResult<()> {
+    if let Some(s) = sort {
+        view.sort = Some(named("sort", s, &SortMode::ALL, SortMode::name)?);
+    }
+    if let Some(a) = arith {
+        view.arith = Some(named("arith", a, &Arith::ALL, Arith::name)?);
+    }
+    if let Some(c) = cull {
+        view.cull = Some(named("cull", c, &CullMode::ALL, CullMode::name)?);
+    }
+    Ok(())
+}
+
+/// A background: `None`, `"none"`, `"#rrggbb"`, `"r,g,b"` or an `(r, g, b)` sequence.
+fn background(b: &Bound<'_, PyAny>) -> PyResult<Background> {
+    if let Ok(s) = b.extract::<String>() {
+        return parse_background(&s).map_err(value_error);
+    }
+    let (r, g, bl): (f64, f64, f64) = b
+        .extract()
+        .map_err(|_| value_error("background must be (r, g, b), \"#rrggbb\" or \"none\""))?;
+    Ok(Background::Colour([r, g, bl]))
+}
+
+/// Every keyword of `Scene.render`, as the command's flags.
+#[derive(Default)]
+pub(crate) struct RenderKeywords<'a, 'py> {
+    pub format: Option<&'a str>,
+    pub sort: Option<&'a str>,
+    pub arith: Option<&'a str>,
+    pub cull: Option<&'a str>,
+    pub outline: bool,
+    pub outline_color: Option<(f64, f64, f64)>,
+    pub outline_width: Option<f64>,
+    pub background: Option<&'a Bound<'py, PyAny>>,
+    pub style: Option<&'a str>,
+    pub hidden: Option<&'a str>,
+    pub fill: Option<&'a str>,
+    pub crease: Option<f64>,
+    pub seams: f64,
+    pub shading: Option<&'a str>,
+    pub shading_tolerance: f64,
+    pub method: &'a str,
+    pub shadow_map_size: u32,
+    pub shadow_bias: f64,
+    pub standalone: bool,
+    pub max_fragments: Option<usize>,
+    pub near: Option<f64>,
+    pub far: Option<f64>,
+    pub stats: Option<PathBuf>,
+}
+
+impl RenderKeywords<'_, '_> {
+    /// The library's options for a scene viewed with `view`, and the scene-file settings
+    /// the outline colour and width override.
+    pub(crate) fn options(
+        &self,
+        view: &ViewOptions,
+        settings: &SceneOptions,
+    ) -> PyResult<(RenderOptions, SceneOptions)> {
+        let mut view = view.clone();
+        order_names(&mut view, self.sort, self.arith, self.cull)?;
+        view.near = self.near.or(view.near);
+        view.far = self.far.or(view.far);
+        view.max_fragments = self.max_fragments;
+        if let Some(s) = self.shading {
+            view.shading = Some(named("shading", s, &Shading::ALL, Shading::name)?);
+        }
+        let format = self
+            .format
+            .map(|f| named("format", f, &Format::ALL, Format::name))
+            .transpose()?;
+        let style = self
+            .style
+            .map(|s| named("style", s, &Look::ALL, Look::name))
+            .transpose()?;
+        let dashed = match self.hidden {
+            None => None,
+            Some("dashed") => Some(true),
+            Some("omit") => Some(false),
+            Some(h) => return Err(value_error(format!("unknown hidden `{h}` (omit, dashed)"))),
+        };
+        let fill = match self.fill {
+            None => None,
+            Some("background") => Some(true),
+            Some("none") => Some(false),
+            Some(f) => {
+                return Err(value_error(format!(
+                    "unknown fill `{f}` (background, none)"
+                )))
+            }
+        };
+        let method = named("method", self.method, &Method::ALL, Method::name)?;
+        let mut settings = settings.clone();
+        if let Some((r, g, b)) = self.outline_color {
+            settings.outline_color = Some([r, g, b]);
+        }
+        if let Some(w) = self.outline_width {
+            if !(w >= 0.0 && w.is_finite()) {
+                return Err(value_error(format!("outline width {w} is not valid")));
+            }
+            settings.outline_width = Some(w);
+        }
+        let o = RenderOptions {
+            view,
+            format,
+            outline: self.outline,
+            seams: self.seams,
+            background: self.background.map(background).transpose()?,
+            shading_tolerance: self.shading_tolerance,
+            method,
+            shadow_map_size: self.shadow_map_size,
+            shadow_bias: self.shadow_bias,
+            standalone: self.standalone,
+            style,
+            crease: self.crease,
+            dashed,
+            fill,
+            stats: self.stats.clone(),
+        };
+        Ok((o, settings))
+    }
+}
+
+/// Check options by name.
+pub(crate) fn check_options(
+    view: &ViewOptions,
+    against: &str,
+    sort: Option<&str>,
+    arith: Option<&str>,
+    seams: f64,
+    diff: Option<PathBuf>,
+    stats: Option<PathBuf>,
+) -> PyResult<CheckOptions> {
+    let mut view = view.clone();
+    order_names(&mut view, sort, arith, None)?;
+    Ok(CheckOptions {
+        view,
+        against: named("reference", against, &Against::ALL, Against::name)?,
+        diff,
+        seams,
+        stats,
     })
 }
 
-/// The output format: the name given, else the path's extension.
-pub(crate) fn format_of(path: &Path, format: Option<&str>) -> PyResult<Format> {
-    if let Some(f) = format {
-        return Format::from_name(f).ok_or_else(|| {
-            value_error(format!("unknown format `{f}` (svg, pdf, eps, png or tikz)"))
-        });
-    }
-    let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("");
-    Format::from_extension(ext).ok_or_else(|| {
-        value_error(format!(
-            "{}: unknown extension `.{ext}` (use .svg, .pdf, .eps, .png, .tikz or format=)",
-            path.display()
-        ))
-    })
-}
-
-/// Writes through a temporary file in the same folder, renamed over `path` once
-/// complete: a failure leaves no file behind.
-pub(crate) fn write_atomic(
-    path: &Path,
-    write: impl FnOnce(&mut dyn Write) -> Result<PaintStats, limn_paint::PaintError>,
-) -> PyResult<PaintStats> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    if path.is_dir() {
-        return Err(os_error(path, "is a folder"));
-    }
-    let mut tmp = tempfile::NamedTempFile::new_in(&dir).map_err(|e| os_error(path, e))?;
-    let stats = {
-        let mut w = std::io::BufWriter::new(tmp.as_file_mut());
-        let stats = write(&mut w).map_err(|e| os_error(path, e))?;
-        w.flush().map_err(|e| os_error(path, e))?;
-        stats
-    };
-    tmp.persist(path).map_err(|e| os_error(path, e.error))?;
-    Ok(stats)
-}
-
-/// Milliseconds since `t`.
-fn ms(t: Instant) -> f64 {
-    t.elapsed().as_secs_f64() * 1e3
-}
-
-/// Orders `scene` and writes its picture to `path`; the statistics as `limn --stats`
-/// prints them.
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn render_scene<'py>(
+/// A JSON value as the Python object `json.loads` makes of it.
+pub(crate) fn json_object<'py>(
     py: Python<'py>,
-    scene: &Scene,
-    spec: &CameraSpec,
-    path: &Path,
-    format: Option<&str>,
-    oo: &OrderOptions,
-    style: &Style,
-    t_load: f64,
-) -> PyResult<Bound<'py, PyDict>> {
-    let t0 = Instant::now();
-    let format = format_of(path, format)?;
-    let cam = spec.camera(scene)?;
-    let (ordered, marks) = py
-        .detach(|| order_with_marks(scene, &cam, oo))
-        .map_err(value_error)?;
-    let t_order = ms(t0);
-    let t1 = Instant::now();
-    let pic = picture_with_marks(scene, &ordered, &marks, style);
-    let ps = write_atomic(path, |w| painter_for(format).paint(&pic, w))?;
-    let t_write = ms(t1);
-    stats_dict(
-        py,
-        scene,
-        &ordered,
-        oo,
-        (&ps, &marks.stats),
-        [t_load, t_order, t_write],
-    )
+    v: &serde_json::Value,
+) -> PyResult<Bound<'py, PyAny>> {
+    let text = serde_json::to_string(v).map_err(value_error)?;
+    py.import("json")?.call_method1("loads", (text,))
 }
 
-/// The statistics of `limn --stats`, with the same keys.
-pub(crate) fn stats_dict<'py>(
-    py: Python<'py>,
-    scene: &Scene,
-    ordered: &Ordered,
-    oo: &OrderOptions,
-    (ps, marks): (&PaintStats, &MarkStats),
-    [load, order, write]: [f64; 3],
-) -> PyResult<Bound<'py, PyDict>> {
-    let s = &ordered.stats;
-    let d = PyDict::new(py);
-    let mut effects: Vec<&str> = Effects::of(scene).names();
-    if s.faces_culled > 0 {
-        effects.push("backface-culling");
+/// Runs `f` on a pool of `threads` workers (all cores when `None`).
+pub(crate) fn on_threads<T: Send>(
+    threads: Option<usize>,
+    f: impl FnOnce() -> T + Send,
+) -> PyResult<T> {
+    match threads {
+        None => Ok(f()),
+        Some(0) => Err(value_error("threads must be at least 1")),
+        Some(n) => {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map_err(|e| value_error(format!("cannot start {n} threads: {e}")))?;
+            Ok(pool.install(f))
+        }
     }
-    let counts: [(&str, usize); 18] = [
-        ("faces_in", s.faces_in),
-        ("faces_culled", s.faces_culled),
-        ("faces_degenerate", s.faces_degenerate),
-        ("faces_clipped", s.faces_clipped),
-        ("faces_coincident", s.faces_coincident),
-        ("faces_near_clipped", s.faces_near_clipped),
-        ("polygons", s.polygons),
-        ("candidate_pairs", s.candidate_pairs),
-        ("constraints", s.constraints),
-        ("components", s.components),
-        ("largest_component", s.largest_component),
-        ("splits", s.splits),
-        ("parts_apart", s.parts_apart),
-        ("fragments_before_merge", s.fragments_before_merge),
-        ("fragments_out", s.fragments_out),
-        ("fragments_made", s.fragments_made),
-        ("fragment_limit", s.fragment_limit),
-        ("fragments_in_shadow", s.fragments_in_shadow),
-    ];
-    for (k, v) in counts {
-        d.set_item(k, v)?;
-    }
-    d.set_item("paths_out", ps.paths)?;
-    d.set_item("bytes_out", ps.bytes)?;
-    d.set_item("filter_fallbacks", s.filter_fallbacks)?;
-    d.set_item("sort", oo.sort.name())?;
-    d.set_item("arith", oo.arith.name())?;
-    d.set_item("effects", effects)?;
-    d.set_item("warnings", scene.warnings.clone())?;
-    let l = PyDict::new(py);
-    let mark_counts: [(&str, usize); 9] = [
-        ("lines", marks.lines),
-        ("segments_in", marks.segments_in),
-        ("pieces_out", marks.pieces_out),
-        ("hidden_pieces", marks.hidden_pieces),
-        ("markers", marks.markers_in),
-        ("markers_shown", marks.markers_shown),
-        ("labels", marks.labels_in),
-        ("labels_shown", marks.labels_shown),
-        ("exact_tests", marks.exact_tests),
-    ];
-    for (k, v) in mark_counts {
-        l.set_item(k, v)?;
-    }
-    l.set_item("line_paths_out", ps.lines)?;
-    l.set_item("ms", marks.ms)?;
-    d.set_item("lines", l)?;
-    let t = PyDict::new(py);
-    t.set_item("load", load)?;
-    t.set_item("order", order)?;
-    t.set_item("write", write)?;
-    t.set_item("total", load + order + write)?;
-    t.set_item("prepare", s.ms_prepare)?;
-    t.set_item("sort", s.ms_order)?;
-    t.set_item("merge", s.ms_merge)?;
-    d.set_item("ms", t)?;
-    Ok(d)
-}
-
-/// The picture style of the command's `render` (seam flaps on, no outlines, no
-/// background).
-pub(crate) fn command_style() -> Style {
-    Style {
-        seamless: true,
-        smooth: true,
-        ..Style::default()
-    }
-}
-
-/// Renders one mesh; see the Python wrapper `limn.render_mesh` for the documentation.
-#[pyfunction]
-#[pyo3(signature = (vertices, faces, path, counts=None, colors=None, opacity=None, eye=None,
-    target=None, up=(0.0, 1.0, 0.0), fov=45.0, size=(800, 600), sort="adaptive", arith="exact",
-    format=None))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn render_mesh<'py>(
-    py: Python<'py>,
-    vertices: PyReadonlyArray2<'py, f64>,
-    faces: Bound<'py, PyAny>,
-    path: PathBuf,
-    counts: Option<PyReadonlyArray1<'py, i64>>,
-    colors: Colors<'py>,
-    opacity: Option<f64>,
-    eye: Option<(f64, f64, f64)>,
-    target: Option<(f64, f64, f64)>,
-    up: (f64, f64, f64),
-    fov: f64,
-    size: (i64, i64),
-    sort: &str,
-    arith: &str,
-    format: Option<&str>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let t0 = Instant::now();
-    let oo = order_options(sort, arith)?;
-    format_of(&path, format)?;
-    let mut scene = Scene::default();
-    let faces = Faces {
-        faces: &faces,
-        counts: counts.as_ref(),
-    };
-    add_mesh(&mut scene, "mesh", &vertices, &faces, &colors, opacity)?;
-    scene.validate().map_err(value_error)?;
-    let spec = CameraSpec {
-        eye: vec3("eye", eye)?,
-        target: vec3("target", target)?,
-        up: vec3("up", Some(up))?.unwrap_or(glam::DVec3::Y),
-        fov,
-        size: crate::camera::size(size)?,
-        ..CameraSpec::default()
-    };
-    render_scene(
-        py,
-        &scene,
-        &spec,
-        &path,
-        format,
-        &oo,
-        &command_style(),
-        ms(t0),
-    )
 }

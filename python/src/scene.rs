@@ -1,30 +1,69 @@
 //! `limn.Scene`: several meshes, lights and a camera; render, check against a
 //! reference, or hand the painted polygons to another drawing system.
 
+use std::borrow::Cow;
 use std::collections::{HashMap, VecDeque};
 use std::path::PathBuf;
-use std::time::Instant;
 
 use glam::DVec3;
-use limn_check::paint;
+use limn::{Collected, Input, Request, SceneOptions, ViewOptions};
 use limn_depthsort::order_with_marks;
-use limn_paint::{picture_with_marks, Mark, MarkKind, Outline, Style};
+use limn_paint::{picture_with_marks, Mark, MarkKind, Style};
 use limn_scene::{Light, LightKind, Scene};
-use limn_zbuffer::{DepthFormat, Method};
 use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyAny, PyDict};
 
-use crate::camera::CameraSpec;
-use crate::errors::value_error;
+use crate::errors::{raise, value_error, warn};
 use crate::mesh::{add_mesh, vec3, Colors, Faces};
-use crate::render::{command_style, order_options, render_scene};
+use crate::render::{check_options, json_object, on_threads, order_names, RenderKeywords};
 
 /// A scene; see the Python stub `limn/_limn.pyi` for the documentation.
 #[pyclass(name = "Scene", module = "limn")]
 pub(crate) struct PyScene {
     scene: Scene,
-    camera: CameraSpec,
+    /// What a scene file said (size, background, outline, style, …); unset otherwise.
+    settings: SceneOptions,
+    /// The scene's name in messages: its file, or `scene`.
+    name: String,
+    /// The camera set with `set_camera` (and a loaded file's `allow_outside`).
+    view: ViewOptions,
+}
+
+impl PyScene {
+    /// The input of a render or check: this scene, borrowed.
+    fn input(&self) -> Input<'_> {
+        Input::Scene {
+            scene: Cow::Borrowed(&self.scene),
+            settings: self.settings.clone(),
+            name: self.name.clone(),
+        }
+    }
+}
+
+/// Loads a mesh or scene file; see the Python wrapper `limn.load`.
+#[pyfunction]
+#[pyo3(signature = (path, allow_outside=false))]
+pub(crate) fn load(py: Python<'_>, path: PathBuf, allow_outside: bool) -> PyResult<PyScene> {
+    let view = ViewOptions {
+        allow_outside,
+        ..ViewOptions::default()
+    };
+    let mut events = Collected::default();
+    let input = Input::File(path);
+    let loaded = py
+        .detach(|| {
+            limn::load(&input, &view, &mut events)
+                .map(|l| (l.scene.into_owned(), l.settings, l.name))
+        })
+        .map_err(raise)?;
+    warn(py, &events.warnings)?;
+    Ok(PyScene {
+        scene: loaded.0,
+        settings: loaded.1,
+        name: loaded.2,
+        view,
+    })
 }
 
 /// A painted polygon: face, points `(n, 2)` in pixels, fill RGBA, original edges.
@@ -81,18 +120,6 @@ fn mark_dict<'py>(py: Python<'py>, m: &Mark) -> PyResult<Bound<'py, PyDict>> {
     Ok(d)
 }
 
-/// One of the reference methods by name.
-fn method(name: &str) -> PyResult<Method> {
-    Method::ALL
-        .into_iter()
-        .find(|m| m.name() == name)
-        .ok_or_else(|| {
-            value_error(format!(
-                "unknown reference `{name}` (raycast, zbuffer, scanline, abuffer or warnock)"
-            ))
-        })
-}
-
 /// An RGB colour in 0..1 from Python.
 fn rgb(what: &str, c: (f64, f64, f64)) -> PyResult<[f64; 3]> {
     let c = [c.0, c.1, c.2];
@@ -109,7 +136,9 @@ impl PyScene {
     fn new() -> Self {
         PyScene {
             scene: Scene::default(),
-            camera: CameraSpec::default(),
+            settings: SceneOptions::default(),
+            name: "scene".into(),
+            view: ViewOptions::default(),
         }
     }
 
@@ -253,18 +282,10 @@ impl PyScene {
         height: Option<f64>,
         matrix: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<()> {
-        if !(fov > 0.0 && fov < 180.0) {
-            return Err(value_error(format!("fov {fov} is outside (0, 180)")));
-        }
         let ortho = match projection {
             "perspective" if height.is_none() => None,
             "perspective" => return Err(value_error("height needs projection=\"orthographic\"")),
-            "orthographic" => match height {
-                Some(h) if !(h > 0.0 && h.is_finite()) => {
-                    return Err(value_error(format!("height {h} must be positive")))
-                }
-                h => Some(h),
-            },
+            "orthographic" => Some(height),
             _ => {
                 return Err(value_error(format!(
                     "unknown projection `{projection}` (perspective or orthographic)"
@@ -272,20 +293,27 @@ impl PyScene {
             }
         };
         let matrix = matrix.as_ref().map(crate::mesh::matrix).transpose()?;
-        if let Some(m) = matrix {
-            if !m.is_finite() {
-                return Err(value_error("the view-projection matrix is not finite"));
-            }
+        let ok = |v: i64| (1..=65536).contains(&v);
+        if !ok(size.0) || !ok(size.1) {
+            return Err(value_error(format!(
+                "size ({}, {}) must be two whole numbers from 1 to 65536",
+                size.0, size.1
+            )));
         }
-        self.camera = CameraSpec {
-            eye: vec3("eye", eye)?,
-            target: vec3("target", target)?,
-            up: vec3("up", Some(up))?.unwrap_or(DVec3::Y),
-            fov,
-            size: crate::camera::size(size)?,
+        let p = |v: Option<DVec3>| v.map(|d| d.to_array());
+        let view = ViewOptions {
+            size: Some((size.0 as u32, size.1 as u32)),
+            eye: p(vec3("eye", eye)?),
+            target: p(vec3("target", target)?),
+            up: p(vec3("up", Some(up))?),
+            fov: Some(fov),
             ortho,
-            matrix,
+            matrix: matrix.map(|m| m.to_cols_array()),
+            allow_outside: self.view.allow_outside,
+            ..ViewOptions::default()
         };
+        view.validate().map_err(raise)?;
+        self.view = view;
         Ok(())
     }
 
@@ -295,95 +323,133 @@ impl PyScene {
         self.scene.faces.len()
     }
 
-    /// Renders to `path`; returns the statistics of `limn --stats`.
-    #[pyo3(signature = (path, format=None, sort="adaptive", arith="exact", outline=None,
-        background=None))]
+    /// Renders to `path` with the command's options; returns the statistics of
+    /// `limn --stats` (for a painter's render) or `{"method", "warnings"}`.
+    #[pyo3(signature = (path, format=None, sort=None, arith=None, cull=None, outline=false,
+        outline_color=None, outline_width=None, background=None, style=None, hidden=None,
+        fill=None, crease=None, seams=limn::DEFAULT_SEAMS, shading=None,
+        shading_tolerance=limn::DEFAULT_SHADING_TOLERANCE, method="painter",
+        shadow_map_size=limn::DEFAULT_SHADOW_MAP_SIZE, shadow_bias=limn::DEFAULT_SHADOW_BIAS,
+        standalone=false, max_fragments=None, near=None, far=None, threads=None, stats=None))]
     #[allow(clippy::too_many_arguments)]
     fn render<'py>(
         &self,
         py: Python<'py>,
         path: PathBuf,
         format: Option<&str>,
-        sort: &str,
-        arith: &str,
-        outline: Option<(f64, f64, f64, f64)>,
-        background: Option<(f64, f64, f64)>,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let oo = order_options(sort, arith)?;
-        self.scene.validate().map_err(value_error)?;
-        let mut style = command_style();
-        if let Some((r, g, b, w)) = outline {
-            let c = rgb("outline color", (r, g, b))?;
-            if !(w >= 0.0 && w.is_finite()) {
-                return Err(value_error(format!("outline width {w} is not valid")));
-            }
-            style.outline = Some(Outline {
-                color: [c[0], c[1], c[2], 1.0],
-                width: w,
-            });
-        }
-        if let Some(c) = background {
-            let c = rgb("background", c)?;
-            style.background = Some([c[0], c[1], c[2], 1.0]);
-        }
-        render_scene(
-            py,
-            &self.scene,
-            &self.camera,
-            &path,
+        sort: Option<&str>,
+        arith: Option<&str>,
+        cull: Option<&str>,
+        outline: bool,
+        outline_color: Option<(f64, f64, f64)>,
+        outline_width: Option<f64>,
+        background: Option<Bound<'py, PyAny>>,
+        style: Option<&str>,
+        hidden: Option<&str>,
+        fill: Option<&str>,
+        crease: Option<f64>,
+        seams: f64,
+        shading: Option<&str>,
+        shading_tolerance: f64,
+        method: &str,
+        shadow_map_size: u32,
+        shadow_bias: f64,
+        standalone: bool,
+        max_fragments: Option<usize>,
+        near: Option<f64>,
+        far: Option<f64>,
+        threads: Option<usize>,
+        stats: Option<PathBuf>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let kw = RenderKeywords {
             format,
-            &oo,
-            &style,
-            0.0,
-        )
+            sort,
+            arith,
+            cull,
+            outline,
+            outline_color,
+            outline_width,
+            background: background.as_ref(),
+            style,
+            hidden,
+            fill,
+            crease,
+            seams,
+            shading,
+            shading_tolerance,
+            method,
+            shadow_map_size,
+            shadow_bias,
+            standalone,
+            max_fragments,
+            near,
+            far,
+            stats,
+        };
+        let (options, settings) = kw.options(&self.view, &self.settings)?;
+        let req = Request {
+            input: Input::Scene {
+                scene: Cow::Borrowed(&self.scene),
+                settings,
+                name: self.name.clone(),
+            },
+            output: Some(path),
+            options,
+        };
+        let mut events = Collected::default();
+        let done = py
+            .detach(|| on_threads(threads, || limn::render(&req, &mut events)))?
+            .map_err(raise)?;
+        warn(py, &done.warnings)?;
+        match &done.stats {
+            Some(s) => json_object(py, &s.to_json()),
+            None => {
+                let d = PyDict::new(py);
+                d.set_item("method", done.method.name())?;
+                d.set_item("warnings", done.warnings.clone())?;
+                Ok(d.into_any())
+            }
+        }
     }
 
-    /// Compares the painted order with an image-space reference pixel by pixel.
-    #[pyo3(signature = (against="raycast", sort="adaptive", arith="exact"))]
+    /// Compares the painted picture with an image-space reference pixel by pixel; the
+    /// report `limn check` prints, with `agrees` and `failures`.
+    #[pyo3(signature = (against="raycast", sort=None, arith=None, seams=limn::DEFAULT_SEAMS,
+        diff=None, stats=None, threads=None))]
+    #[allow(clippy::too_many_arguments)]
     fn check<'py>(
         &self,
         py: Python<'py>,
         against: &str,
-        sort: &str,
-        arith: &str,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let method = method(against)?;
-        let oo = order_options(sort, arith)?;
-        self.scene.validate().map_err(value_error)?;
-        let cam = self.camera.camera(&self.scene)?;
-        let t0 = Instant::now();
-        let (cmp, painted) = py
-            .detach(|| {
-                let painted = paint(&self.scene, &cam, &oo)?;
-                let reference = painted.reference(&self.scene, method, DepthFormat::F64)?;
-                Ok::<_, limn_check::CheckError>((painted.compare(&reference), painted))
-            })
-            .map_err(value_error)?;
-        let d = PyDict::new(py);
-        d.set_item("against", method.name())?;
-        d.set_item("sort", oo.sort.name())?;
-        d.set_item("arith", oo.arith.name())?;
-        d.set_item("width", cam.width)?;
-        d.set_item("height", cam.height)?;
-        d.set_item("pixels", cmp.pixels)?;
-        d.set_item("mismatches", cmp.mismatches)?;
-        d.set_item("mismatches_outside_band", cmp.mismatches_outside_band)?;
-        d.set_item("band_pixels", cmp.band_pixels)?;
-        d.set_item("fragments", painted.ordered.fragments.len())?;
-        d.set_item("splits", painted.ordered.stats.splits)?;
-        d.set_item("ms", t0.elapsed().as_secs_f64() * 1e3)?;
+        sort: Option<&str>,
+        arith: Option<&str>,
+        seams: f64,
+        diff: Option<PathBuf>,
+        stats: Option<PathBuf>,
+        threads: Option<usize>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let o = check_options(&self.view, against, sort, arith, seams, diff, stats)?;
+        let input = self.input();
+        let mut events = Collected::default();
+        let report = py
+            .detach(|| on_threads(threads, || limn::check(&input, &o, &mut events)))?
+            .map_err(raise)?;
+        warn(py, &events.warnings)?;
+        let d = json_object(py, &report.json)?;
+        d.set_item("agrees", report.agrees())?;
+        d.set_item("failures", report.failures.clone())?;
         Ok(d)
     }
 
     /// The painted picture as polygons in paint order (back to front), in pixels (x
     /// right, y down): a list of `(face, points (n, 2), fill (r, g, b, a), original
     /// edges)`, seam flaps `seams` pixels wide included.
-    #[pyo3(signature = (sort="adaptive", arith="exact", seams=0.5))]
+    #[pyo3(signature = (sort=None, arith=None, seams=limn::DEFAULT_SEAMS))]
     fn paint<'py>(
         &self,
         py: Python<'py>,
-        sort: &str,
-        arith: &str,
+        sort: Option<&str>,
+        arith: Option<&str>,
         seams: f64,
     ) -> PyResult<Vec<Painted<'py>>> {
         Ok(self.paint_with_marks(py, sort, arith, seams)?.0)
@@ -395,26 +461,28 @@ impl PyScene {
     /// `"marker"`: `at`, `shape`, `size`, `color`, `stroke`; `index`: the input line,
     /// point or label (in the order they were added; `None` for heads); `"label"`: `at`, `offset`,
     /// `anchor`, `text`, `size`, `color`; `"head"`: `points (3, 2)`, `color`).
-    #[pyo3(signature = (sort="adaptive", arith="exact", seams=0.5))]
+    #[pyo3(signature = (sort=None, arith=None, seams=limn::DEFAULT_SEAMS))]
     fn paint_with_marks<'py>(
         &self,
         py: Python<'py>,
-        sort: &str,
-        arith: &str,
+        sort: Option<&str>,
+        arith: Option<&str>,
         seams: f64,
     ) -> PyResult<(Vec<Painted<'py>>, Vec<Bound<'py, PyDict>>)> {
-        let oo = order_options(sort, arith)?;
-        if !(seams >= 0.0 && seams.is_finite()) {
-            return Err(value_error(format!("seams {seams} is not valid")));
-        }
+        let mut view = self.view.clone();
+        order_names(&mut view, sort, arith, None)?;
+        limn::values::seams(seams).map_err(value_error)?;
+        view.validate().map_err(raise)?;
         self.scene.validate().map_err(value_error)?;
-        let cam = self.camera.camera(&self.scene)?;
+        let cam =
+            limn::camera(&self.scene, &view, self.settings.size, &self.name).map_err(raise)?;
+        let oo = limn::order_options(&view, &self.settings).map_err(raise)?;
         let (ordered, marks) = py
             .detach(|| order_with_marks(&self.scene, &cam, &oo))
             .map_err(value_error)?;
         let style = Style {
             seams,
-            ..command_style()
+            ..Style::default()
         };
         let pic = picture_with_marks(&self.scene, &ordered, &marks, &style);
         let polys = pic

@@ -47,6 +47,8 @@ pub fn check(
     o: &CheckOptions,
     events: &mut dyn Events,
 ) -> Result<CheckReport, Error> {
+    o.view.validate()?;
+    crate::values::seams(o.seams).map_err(Error::Value)?;
     let loaded = load(input, &o.view, events)?;
     let scene = &loaded.scene;
     let name = &loaded.name;

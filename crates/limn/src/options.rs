@@ -7,6 +7,9 @@ use limn_depthsort::{Arith, CullMode, SortMode};
 use limn_paint::Format;
 use limn_scene::Shading;
 
+use crate::error::Error;
+use crate::values;
+
 /// The default seam width in pixels (`--seams`).
 pub const DEFAULT_SEAMS: f64 = 0.5;
 /// The default shading tolerance per colour channel (`--shading-tolerance`): one 8-bit
@@ -128,6 +131,24 @@ pub enum Look {
     HiddenLine,
 }
 
+impl Look {
+    /// Every look.
+    pub const ALL: [Look; 2] = [Look::Filled, Look::HiddenLine];
+
+    /// The look's name (`--style`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Look::Filled => "filled",
+            Look::HiddenLine => "hidden-line",
+        }
+    }
+
+    /// The look of a name.
+    pub fn from_name(s: &str) -> Option<Look> {
+        Look::ALL.into_iter().find(|l| l.name() == s)
+    }
+}
+
 /// A background: none (transparent), or an RGB colour with channels in 0..1.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Background {
@@ -194,6 +215,63 @@ impl Default for RenderOptions {
             fill: None,
             stats: None,
         }
+    }
+}
+
+/// A range check's verdict as an option error.
+fn v<T>(r: Result<T, String>) -> Result<(), Error> {
+    r.map(|_| ()).map_err(Error::Value)
+}
+
+impl ViewOptions {
+    /// Checks every value's range (the command's parser checks them as it reads them).
+    pub fn validate(&self) -> Result<(), Error> {
+        if let Some((w, h)) = self.size {
+            v(values::size(w, h))?;
+        }
+        for p in [self.eye, self.target, self.up].into_iter().flatten() {
+            v(values::vec3(p))?;
+        }
+        if let Some(f) = self.fov {
+            v(values::fov(f))?;
+        }
+        for d in [self.ortho.flatten(), self.near, self.far]
+            .into_iter()
+            .flatten()
+        {
+            v(values::distance(d))?;
+        }
+        if let Some(m) = self.matrix {
+            if m.iter().any(|x| !x.is_finite()) {
+                return Err(Error::Value(
+                    "the view-projection matrix is not finite".into(),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+impl RenderOptions {
+    /// Checks every value's range (the command's parser checks them as it reads them).
+    pub fn validate(&self) -> Result<(), Error> {
+        self.view.validate()?;
+        v(values::seams(self.seams))?;
+        v(values::tolerance(self.shading_tolerance))?;
+        v(values::shadow_map_size(self.shadow_map_size))?;
+        v(values::bias(self.shadow_bias))?;
+        if let Some(Background::Colour(c)) = self.background {
+            v(values::colour(c))?;
+        }
+        if let Some(c) = self.crease {
+            v(values::crease(c))?;
+        }
+        if self.method != Method::Painter && (self.stats.is_some() || self.outline) {
+            return Err(Error::Conflict(
+                "--stats and --outline apply to the painter only, not to --method".into(),
+            ));
+        }
+        Ok(())
     }
 }
 

@@ -51,7 +51,7 @@ pub struct Rendered<'a> {
     /// leave them to the system instead of freeing millions of allocations one by one
     /// (`std::mem::forget` on the whole result).
     _scene: Cow<'a, Scene>,
-    _parts: Box<dyn Any>,
+    _parts: Box<dyn Any + Send>,
 }
 
 impl std::fmt::Debug for Rendered<'_> {
@@ -92,6 +92,7 @@ fn ms(from: Instant, to: Instant) -> f64 {
 pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered<'a>, Error> {
     let t0 = Instant::now();
     let o = &req.options;
+    o.validate()?;
     let mut ev = Kept {
         events,
         warnings: Vec::new(),
