@@ -32,6 +32,7 @@ pub mod kernel_split;
 pub mod obj;
 pub mod pipeline;
 pub mod ply;
+pub mod render;
 pub mod scene_toml;
 pub mod stl;
 pub mod writers;
@@ -42,7 +43,7 @@ mod sound;
 pub type Run = fn(&[u8]);
 
 /// Every target by name, as the corpus folders and the cargo-fuzz binaries name them.
-pub const TARGETS: [(&str, Run); 8] = [
+pub const TARGETS: [(&str, Run); 9] = [
     ("obj", obj::run),
     ("stl", stl::run),
     ("ply", ply::run),
@@ -51,6 +52,7 @@ pub const TARGETS: [(&str, Run); 8] = [
     ("kernel_split", kernel_split::run),
     ("pipeline", pipeline::run),
     ("writers", writers::run),
+    ("render", render::run),
 ];
 
 /// `Debug` of a slice as a `vec![...]` literal, so structured cases print as Rust.
