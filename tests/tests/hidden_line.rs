@@ -3,8 +3,9 @@
 //! same under rotation, translation and permutation.
 
 use glam::{DQuat, DVec3};
+use limn::hidden_line_scene;
 use limn_depthsort::{feature_edges, order_with_marks, EdgeKind, OrderOptions};
-use limn_paint::{hidden_line_scene, HiddenLineStyle};
+use limn_paint::HiddenLineStyle;
 use limn_scene::shapes::{cuboid, torus, uv_sphere};
 use limn_scene::{Camera, Material, Scene, Viewpoint};
 

@@ -8,13 +8,14 @@ use std::time::Instant;
 
 use limn_depthsort::{order, order_with_marks, OrderError, OrderOptions, Ordered, VisibleMarks};
 use limn_paint::{
-    hidden_line_picture, hidden_line_scene, painter_for, picture_with_marks, Format, Painter,
-    SvgOptions, SvgPainter, TikzOptions, TikzPainter,
+    hidden_line_picture, painter_for, picture_with_marks, Format, Painter, SvgOptions, SvgPainter,
+    TikzOptions, TikzPainter,
 };
 use limn_scene::{Camera, Scene};
 
 use crate::error::Error;
 use crate::events::Events;
+use crate::hidden_line::hidden_line_scene;
 use crate::input::{load, Input};
 use crate::losses::losses;
 use crate::options::{Method, RenderOptions};

@@ -2,8 +2,8 @@
 //! where visible (hidden parts left out or dashed), faces filled with the background
 //! colour or not at all.
 //!
-//! The edges become lines of the scene ([`hidden_line_scene`]) and are hidden by the same
-//! exact machinery as any line: an edge lies in the planes of its own faces, so the
+//! The edges become lines of the scene (the `limn` crate's hidden-line stage, before
+//! ordering) and are hidden by the same exact machinery as any line: an edge lies in the planes of its own faces, so the
 //! in-plane rule keeps it drawn over them. Without fills ([`HiddenLineStyle::fill`] off)
 //! the picture holds only lines, and the visible pieces of the edges are joined into
 //! polylines as long as possible (pieces meeting end to end, at equal pixel points), for
@@ -11,8 +11,8 @@
 
 use std::collections::HashMap;
 
-use limn_depthsort::{feature_edges, Ordered, VisibleMarks};
-use limn_scene::{Camera, Material, Polyline, Scene, Viewpoint};
+use limn_depthsort::{Ordered, VisibleMarks};
+use limn_scene::Scene;
 
 use crate::{picture_with_marks, LinePiece, LineStyle, Mark, MarkKind, Picture, Style};
 
@@ -45,38 +45,10 @@ impl Default for HiddenLineStyle {
     }
 }
 
-/// `scene` prepared for a hidden-line drawing seen by `camera`: every material becomes the
-/// unlit, opaque `fill` colour, and the feature edges are appended to the lines (in a new
-/// object `edges`). Returns the scene and the index of the first edge line.
-pub fn hidden_line_scene(
-    scene: &Scene,
-    camera: &Camera,
-    style: &HiddenLineStyle,
-    fill: [f64; 3],
-) -> (Scene, usize) {
-    let mut s = scene.clone();
-    for m in &mut s.materials {
-        *m = Material::unlit(&m.name, fill);
-    }
-    let first = s.lines.len();
-    let object = s.add_object("edges");
-    let view = camera.viewpoint().unwrap_or(Viewpoint::At(camera.eye));
-    for e in feature_edges(scene, view, style.crease) {
-        s.lines.push(Polyline {
-            points: vec![e.a, e.b],
-            color: style.color,
-            width: style.width,
-            dash: Vec::new(),
-            head: false,
-            object,
-        });
-    }
-    (s, first)
-}
-
-/// The picture of a hidden-line drawing: `scene`, `ordered` and `marks` come from
-/// [`hidden_line_scene`] and `limn_depthsort::order_with_marks`; lines from `first_edge`
-/// on are the edges.
+/// The picture of a hidden-line drawing: `scene` is the scene with its feature edges
+/// appended to its lines from `first_edge` on, its materials the fill colour (the `limn`
+/// crate's `hidden_line_scene`); `ordered` and `marks` come from
+/// `limn_depthsort::order_with_marks`.
 pub fn hidden_line_picture(
     scene: &Scene,
     ordered: &Ordered,

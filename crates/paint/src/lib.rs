@@ -109,7 +109,7 @@ pub use covers::covers;
 pub use eps::{EpsOptions, EpsPainter};
 pub use error::PaintError;
 pub use format::Format;
-pub use hidden_line::{hidden_line_picture, hidden_line_scene, HiddenLineStyle};
+pub use hidden_line::{hidden_line_picture, HiddenLineStyle};
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
     Outline, PaintFragment, Picture, Texture, TextureMap,
