@@ -4,7 +4,7 @@
 //! * [`checker`]: an exact (rational) checker of the painter's invariant.
 //! * [`exact`]: exact runs of the orderings, ready for the checker.
 //! * [`sample`]: which face the painter shows at sample points, for invariance tests.
-//! * [`reference`]: the painter's face ids against the image-space references.
+//! * [`reference`](mod@reference): the painter's face ids against the image-space references.
 //! * [`hard_input`]: near-parallel scenes with narrow views, exact symmetries and an exact single-ray check.
 //! * [`near_parallel`]: crossings at tiny angles, near-coincident stacks, needles.
 

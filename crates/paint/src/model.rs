@@ -9,7 +9,7 @@ pub use limn_scene::{LabelAnchor, MarkerShape, Texture};
 pub struct PaintFragment {
     /// Polygon corners in order (either orientation).
     pub points: Vec<[f64; 2]>,
-    /// Linear-RGB fill colour with alpha = opacity, each in [0,1].
+    /// Linear-RGB fill colour with alpha = opacity, each in `[0, 1]`.
     pub fill: [f64; 4],
     /// Optional per-vertex colours (Gouraud); same length as points.
     pub vertex_colors: Option<Vec<[f64; 4]>>,
@@ -17,7 +17,7 @@ pub struct PaintFragment {
     pub face: u32,
     /// Index into Picture::objects.
     pub object: u32,
-    /// Per edge i (points[i] -> points[i+1 mod n]): is it an original model edge (outlined
+    /// Per edge `i` (`points[i]` to `points[(i + 1) % n]`): is it an original model edge (outlined
     /// when outlines are on)?
     pub original_edges: Vec<bool>,
     /// A texture drawn over the fragment: each point's colour is [`PaintFragment::fill`]

@@ -1,7 +1,7 @@
 //! Texture images and how they are sampled.
 //!
 //! A [`Texture`] is a decoded RGBA image, 8 bits per channel, top row first. Materials
-//! hold it behind an [`Arc`](std::sync::Arc), so a texture used by many faces is stored
+//! hold it behind an [`Arc`], so a texture used by many faces is stored
 //! once. Texture coordinates `(s, t)` are in image space: `s` runs left to right and `t`
 //! top to bottom over `[0, 1]` (the glTF convention; the OBJ loader turns its `v`, which
 //! runs bottom to top, into `t = 1 − v`).
