@@ -40,7 +40,6 @@ mod components;
 mod detached;
 mod feature_edges;
 mod geom;
-mod interval;
 mod marks;
 mod merge;
 mod meshed;
