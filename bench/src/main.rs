@@ -9,6 +9,7 @@ mod effects;
 mod large;
 mod limn_runs;
 mod lines_bench;
+mod measure;
 mod peers;
 mod raster;
 mod scenes;

@@ -16,7 +16,7 @@ use limn_paint::{picture, Style, SvgPainter};
 use limn_scene::{shapes, Camera, Light, LightKind, Material, Scene, Shading};
 use limn_zbuffer::{render, Method, RenderOptions, ShadowMapOptions};
 
-use crate::effects::{flat_only_picture, median, time, write};
+use crate::measure::{flat_only_picture, median, time, write};
 
 /// A lit UV sphere of `rings × segments` quads' triangles floating over a ground
 /// square, under one directional light (with or without shadows) and ambient light.

@@ -8,7 +8,7 @@ use std::fmt;
 
 use arbitrary::{Arbitrary, Unstructured};
 use glam::DVec3;
-use limn_kernel::check::{check_polygon, check_split};
+use limn_kernel::{check_polygon, check_split};
 use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane};
 
 use crate::VecLit;

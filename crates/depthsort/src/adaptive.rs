@@ -5,11 +5,12 @@
 use limn_kernel::Kernel;
 
 use crate::broad::{box_pairs, estimated_box_pairs};
-use crate::bsp::{choose_splitter, partition, push_parts_as, Task, SCORE_SAMPLE};
+use crate::bsp::{push_parts_as, Task};
 use crate::components::Components;
 use crate::detached::order_apart;
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
+use crate::partition::{choose_splitter, partition, SCORE_SAMPLE};
 use crate::pieces::Ctx;
 use crate::probe::{cycles_everywhere, PROBE_MIN};
 use crate::separation::SeparatingAxes;

@@ -38,15 +38,16 @@ mod by_vertex;
 mod coincident;
 mod components;
 mod detached;
+mod eye;
 mod feature_edges;
 mod geom;
-mod interval;
 mod marks;
 mod merge;
 mod meshed;
 mod newell;
 mod occlusion;
 mod options;
+mod partition;
 mod pieces;
 mod piercing;
 mod prepare;
@@ -186,7 +187,7 @@ fn ordered<K: Kernel>(
 ) -> Result<(Ordered, Vec<K::Polygon>), OrderError> {
     let t0 = Instant::now();
     let fallbacks0 = kernel.fallbacks();
-    let eye = view::Eye::of(kernel, camera)?;
+    let eye = eye::Eye::of(kernel, camera)?;
     let (near, far) = camera.near_far(scene);
     let vp = camera.view_projection(near, far);
     // The depth margin's scale: the far distance, or device depth's range.

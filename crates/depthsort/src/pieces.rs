@@ -9,10 +9,10 @@ use glam::{DMat4, DVec3};
 use limn_kernel::{Kernel, PolygonSide, Side};
 use limn_scene::Camera;
 
+use crate::eye::Eye;
 use crate::geom::{bbox, Box2};
 use crate::options::Stats;
 use crate::rng::SplitMix;
-use crate::view::Eye;
 
 /// No piece.
 pub(crate) const NONE: u32 = u32::MAX;

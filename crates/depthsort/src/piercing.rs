@@ -3,16 +3,15 @@
 //! exact splits (each piece's two halves split exactly, projected and tested against the
 //! other) costs several exact splits whose results are thrown away. The kernel gives each
 //! corner's position as a box holding the true corner and the other plane's equation
-//! there with a bound on its error (its filter's); everything after is computed in
-//! [`Interval`]s that hold the exact values. The answer `true` is given only when it
-//! holds for the exact pieces, and it is then the exact order's answer (a conflict).
-//! Otherwise (`false`: apart, touching, or too close to tell) the exact path decides. No
-//! tolerance: bounds that cannot tell say so.
+//! there with a bound on its error (its filter's); everything after is computed in the
+//! kernel's [`Interval`]s, which hold the exact values. The answer `true` is given only
+//! when it holds for the exact pieces, and it is then the exact order's answer (a
+//! conflict). Otherwise (`false`: apart, touching, or too close to tell) the exact path
+//! decides. No tolerance: bounds that cannot tell say so.
 
 use glam::DVec3;
-use limn_kernel::Kernel;
+use limn_kernel::{Interval, Kernel};
 
-use crate::interval::{dot_near, Interval};
 use crate::pieces::Ctx;
 
 /// Corners of a piece the test looks at, at most (pieces of a soup have three to six).
@@ -140,11 +139,11 @@ fn cut(s: &Seen, dir: [f64; 3]) -> Option<(f64, f64)> {
         }
         // The crossing a + t (b − a), t = |ha| / (|ha| + |hb|), along `dir`.
         let t = h[i].share_of(h[j]);
-        let along = |c: &([f64; 3], f64)| dot_near(c.0, c.1, dir);
+        let along = |c: &([f64; 3], f64)| Interval::dot_near(c.0, c.1, dir);
         let (sa, sb) = (along(&s.corners[i]), along(&s.corners[j]));
         let at = sa + t * (sb - sa);
-        lo_hi = lo_hi.min(at.hi);
-        hi_lo = hi_lo.max(at.lo);
+        lo_hi = lo_hi.min(at.hi());
+        hi_lo = hi_lo.max(at.lo());
     }
     Some((lo_hi, hi_lo))
 }

@@ -9,8 +9,8 @@
 
 use limn_kernel::Kernel;
 
-use crate::bsp::{choose_splitter, partition};
 use crate::detached::order_apart;
+use crate::partition::{choose_splitter, partition};
 use crate::pieces::Ctx;
 
 /// Sets of at least this many pieces are split into parts ordered apart; smaller parts

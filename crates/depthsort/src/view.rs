@@ -1,6 +1,6 @@
-//! The eye and the view volume as the orderings see them: a finite eye point or an eye
-//! at infinity (parallel projection), the exact predicates that involve it, and the
-//! planes bounding what the camera sees.
+//! The eye and the view volume as the orderings see them: the exact predicates that
+//! involve the eye (a finite point or a point at infinity, see [`Eye`]), and the planes
+//! bounding what the camera sees.
 //!
 //! A perspective camera's eye is a point and the orderings classify it like any point.
 //! An orthographic camera's eye (or an affine view-projection matrix's) lies at infinity
@@ -9,31 +9,12 @@
 //! `d · ((a − c) × (b − c))`, both exact in the exact kernel. Planes "through the eye"
 //! become planes parallel to `d`.
 
-use glam::{DVec3, DVec4};
+use glam::DVec4;
 use limn_kernel::{Kernel, Orientation, Side};
-use limn_scene::{Camera, Viewpoint};
 
+use crate::eye::Eye;
 use crate::options::OrderError;
 use crate::pieces::Ctx;
-
-/// The eye: a point, or a direction towards an eye at infinity.
-#[derive(Debug, Clone, Copy)]
-pub(crate) enum Eye<P> {
-    /// A finite eye.
-    At(P),
-    /// An eye at infinity in this direction (from the scene towards the viewer).
-    Toward(DVec3),
-}
-
-impl<P> Eye<P> {
-    /// The eye of `camera`, with finite points converted by `kernel`.
-    pub fn of<K: Kernel<Point = P>>(kernel: &K, camera: &Camera) -> Result<Eye<P>, OrderError> {
-        Ok(match camera.viewpoint()? {
-            Viewpoint::At(p) => Eye::At(kernel.point(p)?),
-            Viewpoint::Toward(d) => Eye::Toward(d),
-        })
-    }
-}
 
 impl<K: Kernel> Ctx<'_, K> {
     /// The side of `plane` the eye lies on (exact in the exact kernel).

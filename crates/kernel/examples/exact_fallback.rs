@@ -8,8 +8,8 @@
 use std::hint::black_box;
 use std::time::Instant;
 
-use limn_kernel::predicates::{exact_side_of_intersection, ExactPath};
 use limn_kernel::Plane;
+use limn_kernel::{exact_side_of_intersection, ExactPath};
 
 fn torus(u: usize, v: usize, nu: usize, nv: usize) -> [f64; 3] {
     let (a, b) = (

@@ -8,8 +8,9 @@
 //! simplicity over speed (a few microseconds per predicate). It is written here rather
 //! than taken from a crate because what it needs (exact ring operations on f64 values
 //! and a sign) is about a hundred lines on top of `num-bigint`, while rational crates
-//! would normalise by gcd on every operation. It is public so that exact evaluations
-//! outside the kernel (the hiding of lines and points) use the same numbers.
+//! would normalise by gcd on every operation. The type is exported so that exact
+//! evaluations outside the kernel (the hiding of lines and points) use the same numbers,
+//! through [`crate::ExactAffine`] and [`crate::Quotient`].
 
 use std::cmp::Ordering;
 use std::ops::{Add, Mul, Neg, Sub};
@@ -57,6 +58,11 @@ impl Dyadic {
         }
     }
 
+    /// A point's coordinates as exact numbers (each f64 exactly).
+    pub fn point3(p: [f64; 3]) -> [Dyadic; 3] {
+        point3(p)
+    }
+
     /// `±m · 2^e` for a magnitude `m` given as little-endian 64-bit limbs.
     pub(crate) fn from_limbs(neg: bool, limbs: &[u64], e: i64) -> Dyadic {
         let digits: Vec<u32> = limbs
@@ -80,7 +86,7 @@ impl Dyadic {
     }
 
     /// The value as `(mantissa, exponent)`: it equals `mantissa · 2^exponent`.
-    pub fn parts(&self) -> (&BigInt, i64) {
+    pub(crate) fn parts(&self) -> (&BigInt, i64) {
         (&self.m, self.e)
     }
 
@@ -174,13 +180,13 @@ impl Neg for &Dyadic {
 }
 
 /// `a·b + c·d + e·f`, exactly.
-pub fn dot3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> Dyadic {
+pub(crate) fn dot3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> Dyadic {
     let s = &(&a[0] * &b[0]) + &(&a[1] * &b[1]);
     &s + &(&a[2] * &b[2])
 }
 
 /// The cross product `a × b`, exactly.
-pub fn cross3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
+pub(crate) fn cross3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
     [
         &(&a[1] * &b[2]) - &(&a[2] * &b[1]),
         &(&a[2] * &b[0]) - &(&a[0] * &b[2]),
@@ -189,12 +195,12 @@ pub fn cross3(a: &[Dyadic; 3], b: &[Dyadic; 3]) -> [Dyadic; 3] {
 }
 
 /// A point's coordinates as exact dyadic numbers.
-pub fn point3(p: [f64; 3]) -> [Dyadic; 3] {
+pub(crate) fn point3(p: [f64; 3]) -> [Dyadic; 3] {
     p.map(Dyadic::from_f64)
 }
 
 /// `a / b` rounded to a nearby f64 (within a few ulps) for `b ≠ 0`.
-pub fn quotient_f64(a: &Dyadic, b: &Dyadic) -> f64 {
+pub(crate) fn quotient_f64(a: &Dyadic, b: &Dyadic) -> f64 {
     if a.is_zero() {
         return 0.0;
     }

@@ -71,7 +71,7 @@ impl ExactKernel {
     pub fn side_of_vertex(&self, poly: &ExactPolygon, i: usize, plane: &Plane) -> Side {
         let mut fb = 0;
         let s = if self.filter {
-            poly.side_filtered(i, plane, &crate::predicates::PlaneF::new(plane), &mut fb)
+            poly.side_filtered(i, plane, &plane.filter(), &mut fb)
         } else {
             poly.side_exact(i, plane)
         };

@@ -244,9 +244,9 @@ pub struct FaceTriangle {
 
 /// The triangles that cover what the exact kernel draws of the face with these corners,
 /// for image-space renderers: the face's one convex polygon fanned from its first
-/// corner, or the triangles of the rule in `face_split.rs` (a coordinate projection
-/// in which the outline is simple, else the fan from corner 0). Triangles of exactly zero
-/// area are left out; a face with area always has at least one.
+/// corner, or the triangles of the kernel's rule for the other faces (a coordinate
+/// projection in which the outline is simple, else the fan from corner 0). Triangles of
+/// exactly zero area are left out; a face with area always has at least one.
 ///
 /// # Errors
 ///

@@ -16,6 +16,13 @@
 //! - [`FloatKernel`]: f64 coordinates with an epsilon and interpolated split points, the
 //!   measured baseline.
 //!
+//! The certified arithmetic the rest of limn builds on lives here too, behind three
+//! number types: [`Interval`] (float intervals rounded outward, for filters whose answers
+//! must hold for the exact values), [`Dyadic`] (exact `m · 2^e` numbers, every f64 being
+//! one) and [`Quotient`] (exact quotients of two of them, rounded once for output), with
+//! [`ExactAffine`] for a plane's equation taken exactly and [`Plane::value_at`] for its
+//! certified float value.
+//!
 //! ```
 //! use glam::DVec3;
 //! use limn_kernel::{ExactKernel, Kernel, PolygonSide};
@@ -37,29 +44,41 @@
 //! assert_eq!(k.classify(&back.unwrap(), &cut), PolygonSide::Back);
 //! ```
 
+mod affine;
 #[cfg(any(test, feature = "check-invariants"))]
-pub mod check;
-pub mod dyadic;
+mod check;
+mod dyadic;
 mod error;
 mod exact;
 mod face;
 mod face_split;
+mod filter;
 mod float;
 mod interval;
 mod orientation;
-pub mod plane;
+mod plane;
 mod polygon;
-pub mod predicates;
+mod predicates;
+mod quotient;
 mod side;
 mod traits;
 mod triangulate;
 
+pub use affine::ExactAffine;
+#[cfg(any(test, feature = "check-invariants"))]
+pub use check::{check_polygon, check_split};
+pub use dyadic::Dyadic;
 pub use error::KernelError;
 pub use exact::ExactKernel;
 pub use face::{face_triangles, FaceTriangle};
 pub use float::{FloatKernel, FloatPlane, FloatPolygon, DEFAULT_RELATIVE_EPSILON};
+pub use interval::Interval;
 pub use orientation::Orientation;
 pub use plane::{Plane, PlaneDef};
 pub use polygon::ExactPolygon;
+pub use predicates::orient3d;
+#[doc(hidden)]
+pub use predicates::{exact_side_of_intersection, ExactPath};
+pub use quotient::Quotient;
 pub use side::{PolygonSide, Side};
 pub use traits::Kernel;

@@ -22,7 +22,8 @@ use std::fmt;
 use std::sync::Arc;
 
 use crate::dyadic::{self, Dyadic};
-use crate::interval::{self, Interval};
+use crate::filter::PlaneF;
+use crate::interval::Interval;
 use crate::side::Side;
 use crate::KernelError;
 
@@ -396,6 +397,36 @@ impl Plane {
         (self.data.err_n, self.data.err_d)
     }
 
+    /// The approximate coefficients prepared for the filters.
+    #[inline]
+    pub(crate) fn filter(&self) -> PlaneF {
+        PlaneF::new(self.approx(), self.error_bounds())
+    }
+
+    /// An interval holding the exact value `n·x + d` of the plane's equation at the point
+    /// `x` (the filter's value and proven bound; the whole line when they overflow).
+    #[inline]
+    pub fn value_at(&self, x: [f64; 3]) -> Interval {
+        let (v, bound) = self.filter().height(&x, 0.0);
+        if v.is_finite() && bound.is_finite() {
+            Interval::around(v, bound)
+        } else {
+            Interval::EVERYTHING
+        }
+    }
+
+    /// An interval holding the exact value `n·d` of the plane's normal against the
+    /// direction `d` (the plane's value at the point at infinity in that direction).
+    #[inline]
+    pub fn value_toward(&self, d: [f64; 3]) -> Interval {
+        let (v, bound) = self.filter().direction_height(&d);
+        if v.is_finite() && bound.is_finite() {
+            Interval::around(v, bound)
+        } else {
+            Interval::EVERYTHING
+        }
+    }
+
     /// The exact coefficients, with this plane's orientation.
     pub fn exact(&self) -> ([Dyadic; 3], Dyadic) {
         let (n, d) = self.data.def.exact();
@@ -471,7 +502,7 @@ impl Plane {
 
     /// [`Plane::side_of`], counting in `fallbacks` when the filter could not decide.
     pub(crate) fn side_of_counted(&self, x: [f64; 3], fallbacks: &mut u64) -> Side {
-        if let Some(s) = crate::predicates::PlaneF::new(self).side(&x, 0.0) {
+        if let Some(s) = self.filter().side(&x, 0.0) {
             return s;
         }
         if self.defined_by(&x) {
@@ -525,7 +556,7 @@ impl Plane {
             let a = p.approx();
             [0, 1, 2].map(|i| Interval::around(a[i], e))
         };
-        if let Some(s) = interval::dot(iv(self), iv(other)).sign() {
+        if let Some(s) = Interval::dot(iv(self), iv(other)).sign() {
             return s == Ordering::Greater;
         }
         let (n, _) = self.exact();
@@ -549,7 +580,7 @@ impl Plane {
         let (e, _) = self.error_bounds();
         let a = self.data.approx;
         let n = [0, 1, 2].map(|i| Interval::around(a[i], e));
-        if let Some(s) = interval::dot(n, d.map(Interval::point)).sign() {
+        if let Some(s) = Interval::dot(n, d.map(Interval::exactly)).sign() {
             return s;
         }
         let (n, _) = self.data.def.exact();

@@ -5,8 +5,9 @@ use std::borrow::Cow;
 
 use smallvec::SmallVec;
 
+use crate::filter::PlaneF;
 use crate::plane::Plane;
-use crate::predicates::{self, PlaneF};
+use crate::predicates;
 use crate::side::{PolygonSide, Side};
 
 /// Vertices and edges stored inline (no heap allocation) up to this count.
@@ -264,7 +265,7 @@ impl ExactPolygon {
         if out.len() < self.corners.len() {
             return false;
         }
-        let hf = PlaneF::new(h);
+        let hf = h.filter();
         for (o, c) in out.iter_mut().zip(&self.corners) {
             *o = hf.height(&c.pos, c.err as f64);
             if !(o.0.is_finite() && o.1.is_finite()) {
@@ -277,7 +278,7 @@ impl ExactPolygon {
     /// Classification against `h` when the filters and shortcuts decide it (`None` when
     /// some vertex needs exact evaluation and the answer is still open).
     pub(crate) fn classify_filtered(&self, h: &Plane) -> Option<PolygonSide> {
-        let hf = PlaneF::new(h);
+        let hf = h.filter();
         let coarse = self.coarse_bound(&hf);
         let (mut front, mut back, mut unsure) = (false, false, false);
         for (i, c) in self.corners.iter().enumerate() {
@@ -380,7 +381,7 @@ impl ExactPolygon {
             Side::Back => BACK,
             Side::On => 0,
         };
-        let hf = PlaneF::new(h);
+        let hf = h.filter();
         let mut flags = 0u8;
         if filter {
             let coarse = self.coarse_bound(&hf);
@@ -429,7 +430,7 @@ impl ExactPolygon {
         filter: bool,
         fallbacks: &mut u64,
     ) -> (Option<ExactPolygon>, Option<ExactPolygon>) {
-        let hf = PlaneF::new(h);
+        let hf = h.filter();
         let sides = self.sides(h, &hf, filter, fallbacks);
         let front = sides.contains(&Side::Front);
         let back = sides.contains(&Side::Back);

@@ -5,7 +5,7 @@ mod common;
 
 use common::*;
 use glam::DVec3;
-use limn_kernel::check::check_polygon;
+use limn_kernel::check_polygon;
 use limn_kernel::{ExactPolygon, FloatKernel, Kernel, KernelError};
 use num_rational::BigRational;
 use num_traits::Zero;

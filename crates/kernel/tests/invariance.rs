@@ -7,7 +7,7 @@ mod common;
 
 use common::*;
 use glam::DVec3;
-use limn_kernel::check::check_split;
+use limn_kernel::check_split;
 use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane, PolygonSide};
 use proptest::prelude::*;
 

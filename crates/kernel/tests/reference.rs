@@ -7,8 +7,8 @@ mod common;
 
 use common::*;
 use glam::DVec3;
-use limn_kernel::check::check_split;
-use limn_kernel::predicates::orient3d;
+use limn_kernel::check_split;
+use limn_kernel::orient3d;
 use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane, PolygonSide, Side};
 use num_traits::Signed;
 use proptest::prelude::*;

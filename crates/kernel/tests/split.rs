@@ -4,7 +4,7 @@
 mod common;
 
 use common::*;
-use limn_kernel::check::{check_polygon, check_split};
+use limn_kernel::{check_polygon, check_split};
 use limn_kernel::{ExactKernel, ExactPolygon, Kernel, Plane, PolygonSide, Side};
 use num_traits::Zero;
 use proptest::prelude::*;

@@ -60,6 +60,7 @@ mod exact;
 mod fragment_ids;
 mod image;
 mod lines;
+mod options;
 mod pixel_rays;
 mod pixel_shading;
 mod png;
@@ -80,11 +81,9 @@ pub use error::ZError;
 pub use fragment_ids::rasterize_ids;
 pub use image::{rgb_to_u8, to_u8, ColorImage, DepthImage, IdImage, Mask, NO_FACE};
 pub use lines::{bresenham, dda, scene_lines, wireframe, LineAlgorithm, LineOptions};
+pub use options::{Method, ParseMethodError, RenderOptions};
 pub use png::{diff_png, id_color, save_diff_png};
-pub use render::{
-    render, render_with_shadow_maps, scene_edges, Method, ParseMethodError, Raster, RenderOptions,
-    RenderStats,
-};
+pub use render::{render, render_with_shadow_maps, scene_edges, Raster, RenderStats};
 pub use shadow_map::ShadowMapOptions;
 pub use triangulate::triangulate;
 

@@ -1,7 +1,4 @@
-//! The common entry point: methods, options and results.
-
-use std::fmt;
-use std::str::FromStr;
+//! The common entry point: a rendering by any method, and its results.
 
 use std::collections::HashMap;
 
@@ -9,117 +6,15 @@ use glam::DVec3;
 use limn_scene::{
     polygon_normal, shade_face, shade_face_in_shadow, shade_in_scene, Camera, LightSet, Rgb, Scene,
 };
-use thiserror::Error;
 
 use crate::abuffer::{abuffer, FaceLook};
 use crate::image::{rgb_to_u8, ColorImage, DepthImage, IdImage, NO_FACE};
+use crate::options::{Method, RenderOptions};
 use crate::pixel_rays::PixelRays;
 use crate::setup::{prepare, Collect, Culling, Frame, Prepared};
 use crate::shadow_map::{ShadowMapOptions, ShadowMaps};
 use crate::shadow_rays::Casters;
-use crate::{pixel_shading, raycast, scanline, warnock, zbuf, DepthFormat, Segment2, ZError};
-use std::sync::Arc;
-
-/// An image-space hidden-surface method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Method {
-    /// Full-screen z-buffer.
-    ZBuffer,
-    /// Scan-line z-buffer (one row of depth); the same ids as [`Method::ZBuffer`].
-    ScanLine,
-    /// Per-pixel fragment lists, for transparency.
-    ABuffer,
-    /// Warnock's area subdivision.
-    Warnock,
-    /// One exact ray per pixel centre (the arbiter).
-    RayCast,
-}
-
-impl Method {
-    /// Every method.
-    pub const ALL: [Method; 5] = [
-        Method::ZBuffer,
-        Method::ScanLine,
-        Method::ABuffer,
-        Method::Warnock,
-        Method::RayCast,
-    ];
-
-    /// The method's name as used on command lines: `zbuffer`, `scanline`, `abuffer`,
-    /// `warnock`, `raycast`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::ZBuffer => "zbuffer",
-            Method::ScanLine => "scanline",
-            Method::ABuffer => "abuffer",
-            Method::Warnock => "warnock",
-            Method::RayCast => "raycast",
-        }
-    }
-}
-
-impl fmt::Display for Method {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-/// A method name that [`Method::from_str`] does not know.
-#[derive(Debug, Clone, PartialEq, Eq, Error)]
-#[error("unknown method {0:?} (expected zbuffer, scanline, abuffer, warnock or raycast)")]
-pub struct ParseMethodError(pub String);
-
-impl FromStr for Method {
-    type Err = ParseMethodError;
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Method::ALL
-            .into_iter()
-            .find(|m| m.name().eq_ignore_ascii_case(s))
-            .ok_or_else(|| ParseMethodError(s.to_string()))
-    }
-}
-
-/// Options shared by every method.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RenderOptions {
-    /// How depth is stored (z-buffer, scan-line, Warnock and A-buffer ordering; ray
-    /// casting is always exact). Default [`DepthFormat::F64`].
-    pub depth: DepthFormat,
-    /// Drop faces whose plane has the eye strictly behind it. Default `false`.
-    pub cull_back_faces: bool,
-    /// Per object (indexed like the scene's objects), whether its back faces are
-    /// dropped; when given, it decides in place of [`RenderOptions::cull_back_faces`]
-    /// (objects beyond its end are not culled). What a painter culled per object, so
-    /// that a reference culls the same. Default `None`.
-    pub cull_objects: Option<Arc<[bool]>>,
-    /// Near and far distances; when `None`, the camera's own, else chosen from the
-    /// scene's bounds by `Camera::near_far`. Default `None`.
-    pub near_far: Option<(f64, f64)>,
-    /// Background colour, linear RGB in [0, 1]. Default white.
-    pub background: [f64; 3],
-}
-
-impl RenderOptions {
-    /// Whether the back faces of `object` are dropped.
-    pub fn culls(&self, object: u32) -> bool {
-        match &self.cull_objects {
-            Some(c) => c.get(object as usize).copied().unwrap_or(false),
-            None => self.cull_back_faces,
-        }
-    }
-}
-
-impl Default for RenderOptions {
-    fn default() -> Self {
-        RenderOptions {
-            depth: DepthFormat::F64,
-            cull_back_faces: false,
-            cull_objects: None,
-            near_far: None,
-            background: [1.0; 3],
-        }
-    }
-}
+use crate::{pixel_shading, raycast, scanline, warnock, zbuf, Segment2, ZError};
 
 /// Counters of one rendering.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -20,7 +20,7 @@ use std::cmp::Ordering;
 use glam::{DMat4, DVec3};
 use limn_scene::{Camera, LightKind, LightSet, Projection, Scene};
 
-use crate::render::RenderOptions;
+use crate::options::RenderOptions;
 use crate::setup::{prepare, Collect, Culling, Frame, Prepared};
 use crate::{zbuf, DepthFormat, ZError};
 

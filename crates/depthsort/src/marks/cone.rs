@@ -15,21 +15,21 @@
 //! the face is drawn over it. For an eye at infinity in direction `d` (parallel
 //! projections) the same conditions hold with `π(E)` read as `n·d`. The coefficients are
 //! polynomials in the f64 values that define the planes and the eye, computed exactly as
-//! the kernel's dyadic numbers (big-integer mantissa and binary exponent: every f64 is
-//! one, and sums and products stay exact without the gcd a rational would take after
-//! every operation), so each decision is the exact sign on the input as given.
+//! the kernel's [`Dyadic`] numbers (big-integer mantissa and binary exponent: every f64
+//! is one, and sums and products stay exact without the gcd a rational would take after
+//! every operation) in its [`ExactAffine`] functions, so each decision is the exact sign
+//! on the input as given.
 
 use std::cmp::Ordering;
 
-use limn_kernel::dyadic::{dot3, point3, Dyadic};
-use limn_kernel::{ExactPolygon, Plane, Side};
+use limn_kernel::{Dyadic, ExactAffine, ExactPolygon, Plane, Side};
 
 /// An exact number.
 pub(crate) type Q = Dyadic;
 
 /// A point as exact numbers.
 pub(crate) fn q3(p: [f64; 3]) -> [Q; 3] {
-    point3(p)
+    Dyadic::point3(p)
 }
 
 /// The eye, exactly: a point, or a direction for an eye at infinity (parallel
@@ -43,52 +43,11 @@ pub(crate) enum EyeQ {
     Toward([Q; 3]),
 }
 
-/// An affine function `n·x + d` with exact coefficients.
-#[derive(Debug, Clone)]
-pub(crate) struct Affine {
-    n: [Q; 3],
-    d: Q,
-}
-
-impl Affine {
-    /// The exact coefficients of a kernel plane, from its definition.
-    pub(crate) fn of_plane(plane: &Plane) -> Affine {
-        let (n, d) = plane.exact();
-        Affine { n, d }
-    }
-
-    /// The value at an exact point.
-    pub(crate) fn at(&self, x: &[Q; 3]) -> Q {
-        &dot3(&self.n, x) + &self.d
-    }
-
-    /// The value at the eye (for an eye at infinity, `n·d`).
-    pub(crate) fn at_eye(&self, eye: &EyeQ) -> Q {
-        match eye {
-            EyeQ::Point(p) => self.at(p),
-            EyeQ::Toward(d) => dot3(&self.n, d),
-        }
-    }
-
-    /// `−self`.
-    fn negated(&self) -> Affine {
-        Affine {
-            n: [-&self.n[0], -&self.n[1], -&self.n[2]],
-            d: -&self.d,
-        }
-    }
-
-    /// `a·self + b·other`.
-    fn combined(&self, a: &Q, other: &Affine, b: &Q) -> Affine {
-        let c = |x: &Q, y: &Q| &(x * a) + &(y * b);
-        Affine {
-            n: [
-                c(&self.n[0], &other.n[0]),
-                c(&self.n[1], &other.n[1]),
-                c(&self.n[2], &other.n[2]),
-            ],
-            d: c(&self.d, &other.d),
-        }
+/// The value of `f` at the eye (for an eye at infinity, `n·d`).
+fn at_eye(f: &ExactAffine, eye: &EyeQ) -> Q {
+    match eye {
+        EyeQ::Point(p) => f.at(p),
+        EyeQ::Toward(d) => f.toward(d),
     }
 }
 
@@ -97,17 +56,17 @@ impl Affine {
 #[derive(Debug, Clone)]
 pub(crate) struct Cone {
     /// `−s·π`.
-    pub(crate) behind: Affine,
+    pub(crate) behind: ExactAffine,
     /// `−s·(π(E)·eᵢ − eᵢ(E)·π)`, one per edge.
-    pub(crate) walls: Vec<Affine>,
+    pub(crate) walls: Vec<ExactAffine>,
 }
 
 impl Cone {
     /// The cone of `poly` from the eye `eye`; `None` when the eye lies in the polygon's
     /// plane (it then hides nothing).
     pub(crate) fn new(poly: &ExactPolygon, eye: &EyeQ) -> Option<Cone> {
-        let pi = Affine::of_plane(&poly.support());
-        let pe = pi.at_eye(eye);
+        let pi = ExactAffine::of_plane(&poly.support());
+        let pe = at_eye(&pi, eye);
         // −s·π(E) = −|π(E)|, and −s·π.
         let (minus_s_pe, behind) = match pe.signum() {
             Ordering::Equal => return None,
@@ -116,8 +75,8 @@ impl Cone {
         };
         let walls = (0..poly.len())
             .map(|i| {
-                let e = Affine::of_plane(&poly.edge_plane(i));
-                let ee = e.at_eye(eye);
+                let e = ExactAffine::of_plane(&poly.edge_plane(i));
+                let ee = at_eye(&e, eye);
                 // −s·π(E)·e − eᵢ(E)·(−s·π)
                 e.combined(&minus_s_pe, &behind, &-&ee)
             })

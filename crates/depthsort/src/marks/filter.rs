@@ -1,36 +1,30 @@
 //! A certified floating-point filter for the cone conditions: every plane value is an
-//! interval that provably holds the exact value (the kernel's approximate coefficients
-//! with their proven error bounds, then outward-rounded interval arithmetic), so a
-//! condition whose interval lies strictly on one side is decided without exact
-//! arithmetic; only undecided ones go to the exact rationals.
+//! interval that provably holds the exact value (the kernel's [`Plane::value_at`], then
+//! [`Interval`] arithmetic), so a condition whose interval lies strictly on one side is
+//! decided without exact arithmetic; only undecided ones go to the exact numbers.
 
 use std::cmp::Ordering;
 
-use limn_kernel::{ExactPolygon, Plane, Side};
+use limn_kernel::{ExactPolygon, Interval, Plane, Side};
 
-use crate::interval::Interval;
-
-/// A closed interval `[lo, hi]` that holds an exact value, with that value's sign when it
-/// is known exactly (from the kernel's exact plane sides); non-finite ends make every
-/// test on the bounds undecided.
+/// An [`Interval`] that holds an exact value, with that value's sign when it is known
+/// exactly (from the kernel's exact plane sides).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Iv {
-    lo: f64,
-    hi: f64,
+    iv: Interval,
     sign: Option<Ordering>,
 }
 
 impl Iv {
-    /// `[lo, hi]`, sign unknown.
-    fn new(lo: f64, hi: f64) -> Iv {
-        Iv { lo, hi, sign: None }
+    /// The interval `iv`, sign unknown.
+    fn new(iv: Interval) -> Iv {
+        Iv { iv, sign: None }
     }
 
     /// Exactly zero.
     fn zero() -> Iv {
         Iv {
-            lo: 0.0,
-            hi: 0.0,
+            iv: Interval::exactly(0.0),
             sign: Some(Ordering::Equal),
         }
     }
@@ -43,70 +37,45 @@ impl Iv {
         }
     }
 
-    /// The enclosure without the sign.
-    fn interval(self) -> Interval {
-        Interval {
-            lo: self.lo,
-            hi: self.hi,
-        }
-    }
-
     fn mul(self, o: Iv) -> Iv {
-        let r = self.interval() * o.interval();
-        Iv::new(r.lo, r.hi)
+        Iv::new(self.iv * o.iv)
     }
 
     fn sub(self, o: Iv) -> Iv {
-        let r = self.interval() - o.interval();
-        Iv::new(r.lo, r.hi)
+        Iv::new(self.iv - o.iv)
     }
 
     fn neg(self) -> Iv {
         Iv {
-            lo: -self.hi,
-            hi: -self.lo,
+            iv: -self.iv,
             sign: self.sign.map(Ordering::reverse),
         }
     }
 
     /// Certainly positive.
     pub(crate) fn pos(self) -> bool {
-        self.sign == Some(Ordering::Greater) || self.lo > 0.0
+        self.sign == Some(Ordering::Greater) || self.iv.positive()
     }
 
     /// Certainly non-negative.
     pub(crate) fn nonneg(self) -> bool {
-        self.sign.is_some_and(|s| s != Ordering::Less) || self.lo >= 0.0
+        self.sign.is_some_and(|s| s != Ordering::Less) || self.iv.non_negative()
     }
 
     /// Certainly negative.
     pub(crate) fn neg_strict(self) -> bool {
-        self.sign == Some(Ordering::Less) || self.hi < 0.0
+        self.sign == Some(Ordering::Less) || self.iv.negative()
     }
 
     /// Certainly not positive.
     pub(crate) fn nonpos(self) -> bool {
-        self.sign.is_some_and(|s| s != Ordering::Greater) || self.hi <= 0.0
+        self.sign.is_some_and(|s| s != Ordering::Greater) || self.iv.non_positive()
     }
 }
 
-/// `2^-53`.
-const U: f64 = 1.0 / 9_007_199_254_740_992.0;
-
 /// An interval holding the exact value of `plane` at `x`.
 pub(crate) fn at(plane: &Plane, x: [f64; 3]) -> Iv {
-    let [a, b, c, d] = plane.approx();
-    let (en, ed) = plane.error_bounds();
-    let v = a * x[0] + b * x[1] + c * x[2] + d;
-    let mag = (a * x[0]).abs() + (b * x[1]).abs() + (c * x[2]).abs() + d.abs();
-    let sx = x[0].abs() + x[1].abs() + x[2].abs();
-    // Coefficient errors, then the evaluation's roundings (at most four, 8u is ample),
-    // then slack for the roundings of this bound itself.
-    let e = (en * sx + ed + 8.0 * U * mag) * (1.0 + 16.0 * U) + f64::MIN_POSITIVE;
-    if !(v.is_finite() && e.is_finite()) {
-        return Iv::new(f64::NEG_INFINITY, f64::INFINITY);
-    }
-    Iv::new((v - e).next_down(), (v + e).next_up())
+    Iv::new(plane.value_at(x))
 }
 
 /// The eye as given: a point, or a direction for an eye at infinity.
@@ -122,18 +91,7 @@ pub(crate) enum EyeF {
 fn at_eye(plane: &Plane, eye: EyeF) -> Iv {
     match eye {
         EyeF::Point(p) => at(plane, p),
-        EyeF::Toward(d) => {
-            let [a, b, c, _] = plane.approx();
-            let (en, _) = plane.error_bounds();
-            let v = a * d[0] + b * d[1] + c * d[2];
-            let mag = (a * d[0]).abs() + (b * d[1]).abs() + (c * d[2]).abs();
-            let sd = d[0].abs() + d[1].abs() + d[2].abs();
-            let e = (en * sd + 8.0 * U * mag) * (1.0 + 16.0 * U) + f64::MIN_POSITIVE;
-            if !(v.is_finite() && e.is_finite()) {
-                return Iv::new(f64::NEG_INFINITY, f64::INFINITY);
-            }
-            Iv::new((v - e).next_down(), (v + e).next_up())
-        }
+        EyeF::Toward(d) => Iv::new(plane.value_toward(d)),
     }
 }
 
@@ -183,26 +141,21 @@ pub(crate) fn conditions(
 
 /// Whether the parameters `u ∈ [0, 1]` where every condition holds (`fa`: values at the
 /// segment's start, `fb`: at its end; each condition linear in `u`) certainly form an
-/// empty set or a single point. Each condition changing sign certainly bounds `u` on one
-/// side by its root `fa/(fa − fb)`, enclosed in an outward-rounded interval (from the
-/// enclosures, never from exact signs alone); a condition certainly non-positive at one
-/// end and negative at the other holds at most at that end. If the largest lower bound
-/// certainly reaches the smallest upper bound, nothing of positive length is left.
+/// empty set or a single point. Each condition whose enclosures change sign certainly
+/// bounds `u` on one side by its root `|fa| / (|fa| + |fb|)`, enclosed by
+/// [`Interval::share_of`] (from the enclosures, never from exact signs alone); a condition
+/// certainly non-positive at one end and negative at the other holds at most at that end.
+/// If the largest lower bound certainly reaches the smallest upper bound, nothing of
+/// positive length is left.
 pub(crate) fn certainly_empty(fa: &[Iv], fb: &[Iv]) -> bool {
     let (mut low, mut high) = (0.0f64, 1.0f64);
     for (x, y) in fa.iter().zip(fb) {
-        if x.pos() && y.neg_strict() {
-            // Holds for u ≤ x / (x − y), where x − y ≥ x.lo − y.hi.
-            let den = (x.lo - y.hi).next_down();
-            if den > 0.0 {
-                high = high.min((x.hi / den).next_up());
-            }
-        } else if x.neg_strict() && y.pos() {
-            // Holds for u ≥ −x / (y − x), where −x ≥ −x.hi and y − x ≤ y.hi − x.lo.
-            let (num, den) = (-x.hi, (y.hi - x.lo).next_up());
-            if num > 0.0 && den > 0.0 {
-                low = low.max((num / den).next_down());
-            }
+        if x.iv.positive() && y.iv.negative() {
+            // Holds for u ≤ x / (x − y).
+            high = high.min(x.iv.share_of(y.iv).hi());
+        } else if x.iv.negative() && y.iv.positive() {
+            // Holds for u ≥ −x / (y − x).
+            low = low.max(x.iv.share_of(y.iv).lo());
         } else if x.nonpos() && y.neg_strict() {
             high = 0.0;
         } else if x.neg_strict() && y.nonpos() {

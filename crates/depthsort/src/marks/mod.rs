@@ -23,7 +23,6 @@
 mod bins;
 mod cone;
 mod filter;
-mod param;
 #[cfg(test)]
 mod reference;
 mod segment;

@@ -186,10 +186,10 @@ mod tests {
     use super::*;
     use crate::geom::bbox;
     use crate::marks::cone::q3;
-    use crate::marks::param::Param;
     use crate::marks::{context, face_opaque, hide_all};
     use crate::rng::SplitMix;
     use crate::{order_polygons, OrderOptions};
+    use limn_kernel::Quotient;
 
     /// A random scene biased to the hard cases: a height field whose heights come from a
     /// few values (so neighbouring triangles are often coplanar), its grid lines and
@@ -269,7 +269,7 @@ mod tests {
         (s, cam)
     }
 
-    fn rational(p: &Param) -> R {
+    fn rational(p: &Quotient) -> R {
         p.to_rational()
     }
 
@@ -314,7 +314,7 @@ mod tests {
                         let o = &shared.occluders[i];
                         let sides = [a, b].map(|p| o.support.side_of(p.to_array()));
                         if sides == [Side::On; 2] {
-                            let (lo, hi) = (Param::zero(), Param::one());
+                            let (lo, hi) = (Quotient::zero(), Quotient::one());
                             assert!(ctx.exact_part(i as u32, [&qa, &qb], &lo, &hi).is_none());
                             checked[3] += 1;
                         }
@@ -324,7 +324,7 @@ mod tests {
                             continue;
                         }
                         let want = cone_part(poly, &eye, &ra, &rb, R::zero(), R::one());
-                        let (lo, hi) = (Param::zero(), Param::one());
+                        let (lo, hi) = (Quotient::zero(), Quotient::one());
                         let exact = ctx.exact_part(i as u32, [&qa, &qb], &lo, &hi);
                         let got = exact.as_ref().map(|(x, y)| (rational(x), rational(y)));
                         assert_eq!(got, want, "round {round}: segment {a} {b}, fragment {i}");

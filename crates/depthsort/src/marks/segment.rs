@@ -2,14 +2,13 @@
 //! covered by translucent ones, the visible pieces between them, joined along the line.
 
 use glam::{DMat4, DVec3};
-use limn_kernel::Plane;
+use limn_kernel::{ExactAffine, Plane, Quotient};
 use limn_scene::Camera;
 use std::cmp::Ordering;
 
 use super::bins::Bins;
-use super::cone::{self, q3, Affine, EyeQ, Q};
+use super::cone::{self, q3, EyeQ, Q};
 use super::filter;
-use super::param::Param;
 use super::{MarkStats, Occluder, VisibleAnchor, VisiblePiece};
 use crate::geom::Box2;
 
@@ -54,14 +53,14 @@ pub(super) struct Ctx<'a> {
 
 /// The parameters `u ∈ [lo, hi]` where `f(A) + u·(f(B) − f(A)) ≥ 0`, intersected with
 /// `[lo, hi]`; `None` when empty.
-fn clip(fa: &Q, fb: &Q, lo: Param, hi: Param) -> Option<(Param, Param)> {
+fn clip(fa: &Q, fb: &Q, lo: Quotient, hi: Quotient) -> Option<(Quotient, Quotient)> {
     let (mut lo, mut hi) = (lo, hi);
     if fa == fb {
         if fa.signum() == Ordering::Less {
             return None;
         }
     } else {
-        let (root, slope) = Param::root(fa, fb);
+        let (root, slope) = Quotient::root(fa, fb);
         if slope == Ordering::Greater {
             if root > lo {
                 lo = root;
@@ -87,7 +86,7 @@ impl Ctx<'_> {
     }
 
     /// The exact point `A + u(B − A)`, rounded once.
-    fn point_at(a: DVec3, b: DVec3, u: &Param) -> DVec3 {
+    fn point_at(a: DVec3, b: DVec3, u: &Quotient) -> DVec3 {
         DVec3::new(u.lerp(a.x, b.x), u.lerp(a.y, b.y), u.lerp(a.z, b.z))
     }
 
@@ -126,7 +125,7 @@ impl Ctx<'_> {
         hidden_out: &mut Vec<VisiblePiece>,
     ) {
         let mut hopen: Option<Open> = None;
-        let near = Affine::of_plane(&self.sh.near);
+        let near = ExactAffine::of_plane(&self.sh.near);
         let mut open: Option<Open> = None;
         let mut hidden_open = false;
         let mut length = 0.0;
@@ -142,9 +141,12 @@ impl Ctx<'_> {
                 continue;
             }
             // The part in front of the near plane.
-            let Some((u_lo, u_hi)) =
-                clip(&near.at(&qa), &near.at(&qb), Param::zero(), Param::one())
-            else {
+            let Some((u_lo, u_hi)) = clip(
+                &near.at(&qa),
+                &near.at(&qb),
+                Quotient::zero(),
+                Quotient::one(),
+            ) else {
                 close(&mut open, line, out, self, &mut hidden_open, true);
                 continue;
             };
@@ -152,8 +154,8 @@ impl Ctx<'_> {
             let screen = self.screen_box(&ends, &[true, true]);
             let cands = self.candidates(&[a, b], &screen);
             // Exact intervals: hidden (opaque) and covered (translucent, with position).
-            let mut hidden: Vec<(Param, Param)> = Vec::new();
-            let mut covered: Vec<(Param, Param, usize)> = Vec::new();
+            let mut hidden: Vec<(Quotient, Quotient)> = Vec::new();
+            let mut covered: Vec<(Quotient, Quotient, usize)> = Vec::new();
             for i in cands {
                 let (opaque, before) = {
                     let o = &self.sh.occluders[i as usize];
@@ -168,8 +170,12 @@ impl Ctx<'_> {
                 }
             }
             // Elementary intervals between all break points.
-            let mut cuts: Vec<Param> =
-                vec![Param::zero(), u_lo.clone(), u_hi.clone(), Param::one()];
+            let mut cuts: Vec<Quotient> = vec![
+                Quotient::zero(),
+                u_lo.clone(),
+                u_hi.clone(),
+                Quotient::one(),
+            ];
             for (lo, hi) in &hidden {
                 cuts.push(lo.clone());
                 cuts.push(hi.clone());
@@ -184,7 +190,7 @@ impl Ctx<'_> {
             let at: Vec<DVec3> = cuts.iter().map(|t| Self::point_at(a, b, t)).collect();
             for k in 0..cuts.len() - 1 {
                 let (t0, t1) = (&cuts[k], &cuts[k + 1]);
-                let inside = |lo: &Param, hi: &Param| lo <= t0 && t1 <= hi;
+                let inside = |lo: &Quotient, hi: &Quotient| lo <= t0 && t1 <= hi;
                 let clipped = t1 <= &u_lo || t0 >= &u_hi;
                 if clipped || hidden.iter().any(|(lo, hi)| inside(lo, hi)) {
                     close(&mut open, line, out, self, &mut hidden_open, true);
@@ -246,9 +252,9 @@ impl Ctx<'_> {
         i: u32,
         ends: [DVec3; 2],
         exact: [&[Q; 3]; 2],
-        u_lo: &Param,
-        u_hi: &Param,
-    ) -> Option<(Param, Param)> {
+        u_lo: &Quotient,
+        u_hi: &Quotient,
+    ) -> Option<(Quotient, Quotient)> {
         if self.sh.filter {
             let o = &self.sh.occluders[i as usize];
             let [a, b] = ends.map(|p| p.to_array());
@@ -287,9 +293,9 @@ impl Ctx<'_> {
         &mut self,
         i: u32,
         [qa, qb]: [&[Q; 3]; 2],
-        u_lo: &Param,
-        u_hi: &Param,
-    ) -> Option<(Param, Param)> {
+        u_lo: &Quotient,
+        u_hi: &Quotient,
+    ) -> Option<(Quotient, Quotient)> {
         let c = self.sh.occluders[i as usize].cone(&self.sh.eye)?;
         let (ba, bb) = (c.behind.at(qa), c.behind.at(qb));
         if ba.is_zero() && bb.is_zero() {
@@ -353,7 +359,7 @@ impl Ctx<'_> {
     /// nearer than the near plane.
     pub(super) fn anchor(&mut self, index: u32, p: DVec3) -> Option<VisibleAnchor> {
         let qp = q3(p.to_array());
-        if Affine::of_plane(&self.sh.near).at(&qp).signum() == Ordering::Less {
+        if ExactAffine::of_plane(&self.sh.near).at(&qp).signum() == Ordering::Less {
             return None;
         }
         let at = self.project(p);

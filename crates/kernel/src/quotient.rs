@@ -1,4 +1,4 @@
-//! Exact parameters along a segment: quotients of two exact values, compared by
+//! Exact quotients of two dyadic numbers (parameters along a segment), compared by
 //! cross-multiplication and never reduced (no gcd), rounded only when a position is
 //! output.
 
@@ -8,13 +8,17 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
-use limn_kernel::dyadic::quotient_f64;
+use crate::dyadic::{quotient_f64, Dyadic};
 
-use super::cone::Q;
+/// The exact numbers of a quotient.
+type Q = Dyadic;
 
-/// The exact quotient `num / den`, with `den > 0` (an invariant of the constructors).
+/// The exact quotient `num / den` of two [`Dyadic`] numbers, with `den > 0` (an
+/// invariant of the constructors): a parameter `u` along a segment, such as the root of
+/// an affine function between the segment's ends. Ordered exactly; rounded once, to the
+/// nearest f64, only by [`Quotient::lerp`].
 #[derive(Debug, Clone)]
-pub(crate) struct Param {
+pub struct Quotient {
     num: Q,
     den: Q,
 }
@@ -81,18 +85,18 @@ fn nearest(n: &Q, d: &Q) -> f64 {
     }
 }
 
-impl Param {
+impl Quotient {
     /// `0`.
-    pub(crate) fn zero() -> Param {
-        Param {
+    pub fn zero() -> Quotient {
+        Quotient {
             num: Q::zero(),
             den: Q::from_f64(1.0),
         }
     }
 
     /// `1`.
-    pub(crate) fn one() -> Param {
-        Param {
+    pub fn one() -> Quotient {
+        Quotient {
             num: Q::from_f64(1.0),
             den: Q::from_f64(1.0),
         }
@@ -100,18 +104,18 @@ impl Param {
 
     /// The root `u` of `fa + u·(fb − fa)` for `fa ≠ fb`, with the sign of the slope
     /// `fb − fa` (`Greater`: the function grows with `u`).
-    pub(crate) fn root(fa: &Q, fb: &Q) -> (Param, Ordering) {
+    pub fn root(fa: &Q, fb: &Q) -> (Quotient, Ordering) {
         let slope = fb - fa;
         match slope.signum() {
             Ordering::Less => (
-                Param {
+                Quotient {
                     num: fa.clone(),
                     den: -&slope,
                 },
                 Ordering::Less,
             ),
             s => (
-                Param {
+                Quotient {
                     num: -fa,
                     den: slope,
                 },
@@ -121,24 +125,23 @@ impl Param {
     }
 
     /// Whether this is exactly `0`.
-    pub(crate) fn is_zero(&self) -> bool {
+    pub fn is_zero(&self) -> bool {
         self.num.is_zero()
     }
 
     /// Whether this is exactly `1`.
-    pub(crate) fn is_one(&self) -> bool {
+    pub fn is_one(&self) -> bool {
         self.num == self.den
     }
 
-    /// The exact value as a rational.
-    #[cfg(test)]
-    pub(crate) fn to_rational(&self) -> BigRational {
+    /// The exact value as a rational (for references and tests).
+    pub fn to_rational(&self) -> BigRational {
         rational(&self.num) / rational(&self.den)
     }
 
     /// Coordinate `i` of the exact point `A + u(B − A)`, rounded once to the nearest f64
     /// (a zero is `+0`).
-    pub(crate) fn lerp(&self, a: f64, b: f64) -> f64 {
+    pub fn lerp(&self, a: f64, b: f64) -> f64 {
         if self.is_zero() {
             return a + 0.0;
         }
@@ -152,26 +155,26 @@ impl Param {
     }
 }
 
-impl Ord for Param {
-    fn cmp(&self, other: &Param) -> Ordering {
+impl Ord for Quotient {
+    fn cmp(&self, other: &Quotient) -> Ordering {
         // Both denominators are positive.
         (&(&self.num * &other.den) - &(&other.num * &self.den)).signum()
     }
 }
 
-impl PartialOrd for Param {
-    fn partial_cmp(&self, other: &Param) -> Option<Ordering> {
+impl PartialOrd for Quotient {
+    fn partial_cmp(&self, other: &Quotient) -> Option<Ordering> {
         Some(self.cmp(other))
     }
 }
 
-impl PartialEq for Param {
-    fn eq(&self, other: &Param) -> bool {
+impl PartialEq for Quotient {
+    fn eq(&self, other: &Quotient) -> bool {
         self.cmp(other) == Ordering::Equal
     }
 }
 
-impl Eq for Param {}
+impl Eq for Quotient {}
 
 #[cfg(test)]
 mod tests {
@@ -180,20 +183,20 @@ mod tests {
     #[test]
     fn roots_compare_and_round_as_rationals() {
         let q = Q::from_f64;
-        let (r, s) = Param::root(&q(1.0), &q(-2.0));
+        let (r, s) = Quotient::root(&q(1.0), &q(-2.0));
         assert_eq!(s, Ordering::Less);
         assert_eq!(r.to_rational(), BigRational::new(1.into(), 3.into()));
-        let (t, s) = Param::root(&q(-0.5), &q(1.0));
+        let (t, s) = Quotient::root(&q(-0.5), &q(1.0));
         assert_eq!(s, Ordering::Greater);
         assert_eq!(t.to_rational(), BigRational::new(1.into(), 3.into()));
         assert_eq!(r, t);
-        assert!(Param::zero() < r && r < Param::one());
-        assert!(Param::one().is_one() && !r.is_one());
+        assert!(Quotient::zero() < r && r < Quotient::one());
+        assert!(Quotient::one().is_one() && !r.is_one());
         // One third of the way from 0 to 1, rounded once: the f64 nearest to 1/3.
         assert_eq!(r.lerp(0.0, 1.0), 1.0 / 3.0);
-        assert_eq!(Param::zero().lerp(-0.0, 1.0).to_bits(), 0.0f64.to_bits());
-        let (tiny, _) = Param::root(&q(1e-300), &q(-1e300));
-        assert!(Param::zero() < tiny);
+        assert_eq!(Quotient::zero().lerp(-0.0, 1.0).to_bits(), 0.0f64.to_bits());
+        let (tiny, _) = Quotient::root(&q(1e-300), &q(-1e300));
+        assert!(Quotient::zero() < tiny);
         assert_eq!(
             tiny.to_rational(),
             rational(&q(1e-300)) / (rational(&q(1e-300)) + rational(&q(1e300)))
