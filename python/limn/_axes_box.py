@@ -57,6 +57,25 @@ def _box_corners(ax: Any) -> np.ndarray:
     )
 
 
+_BEHIND = 1e-6
+"""How far (of the box's size along each axis) the box's panes, grid and axis lines are
+moved out of the box in the scene."""
+
+
+def behind(ax: Any, points: np.ndarray) -> np.ndarray:
+    """Points of the box's drawing (N, 3, scaled coordinates) moved outward by a
+    millionth of the box's size along each axis where they lie on a face of the box:
+    mplot3d draws the box under the data, so data lying on a pane (a filled contour set
+    at ``offset`` on the axes' limit, a patch on a wall) stay in front of that pane and
+    of its grid in limn's order, as they are in matplotlib's."""
+    pts = np.array(points, dtype=float).reshape(-1, 3)
+    corners = _box_corners(ax)
+    lo, hi = corners[0], corners[6]
+    step = _BEHIND * (hi - lo)
+    pts = np.where(pts <= lo, pts - step, pts)
+    return np.where(pts >= hi, pts + step, pts)
+
+
 def inside_box(ax: Any, points: np.ndarray) -> bool:
     """Whether every finite point of ``points`` (N, 3, scaled coordinates) lies in the
     axes' closed box (exact comparisons with the axes' scaled bounds)."""
@@ -91,7 +110,7 @@ def panes(ax: Any) -> List[Pane]:
         width = float(pane.get_linewidth()) if edge[3] > 0 else 0.0
         if fill is None and width <= 0:
             continue
-        out.append(Pane(corners[list(plane)], fill, edge, width))
+        out.append(Pane(behind(ax, corners[list(plane)]), fill, edge, width))
     return out
 
 
@@ -152,6 +171,6 @@ def axis_lines(ax: Any) -> List[AxisLine]:
             continue
         p1s, p2s, _ = axis._get_all_axis_line_edge_points(minmax, maxmin, axis._tick_position)
         for p1, p2 in zip(p1s, p2s):
-            ends = np.array([p1, p2], dtype=float)
+            ends = behind(ax, np.array([p1, p2], dtype=float))
             out.append(AxisLine(ends, rgba, width, str(line.get_solid_capstyle())))
     return out

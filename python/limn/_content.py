@@ -20,8 +20,9 @@ from typing import Any, List, NamedTuple, Tuple
 
 import numpy as np
 
-from ._axes_box import Pane
+from ._axes_box import Pane, behind
 from ._depth_shading import depth_shaded, scatter_depth_shading
+from ._regions import outlines, region_faces
 
 
 def _left_out(artist: Any, pts: np.ndarray) -> np.ndarray:
@@ -189,7 +190,10 @@ class Marks:
             w = float(lw[i % len(lw)]) if len(lw) else 1.0
             off, seq = ls[i % len(ls)] if ls else (0, None)
             dash = (off, seq) if seq else None
-            for r in _runs(shown(coll, np.ma.filled(np.asarray(seg, dtype=float), np.nan))):
+            pts = shown(coll, np.ma.filled(np.asarray(seg, dtype=float), np.nan))
+            if background:
+                pts = behind(coll.axes, pts)  # a grid line stays under data on its pane
+            for r in _runs(pts):
                 if len(r) >= 2 and c[3] > 0 and w > 0:
                     clip = None if background else clip_of(coll)
                     self.lines.append(Line(r, c, w, dash, background, clip=clip))
@@ -293,6 +297,9 @@ class Polygons:
         self._width: List[np.ndarray] = []
         self.clip: List[Any] = []
         self.background: List[bool] = []
+        # Per polygon, which of its edges are the artist's own (``None``: all; the
+        # faces of filled paths have bridges to their holes, see ``_regions``).
+        self.own: List[Any] = []
 
     def add_collection(self, coll: Any) -> None:
         """A ``Poly3DCollection``'s polygons with their colours and edge widths."""
@@ -303,6 +310,7 @@ class Polygons:
         self._width.append(lw)
         self.clip += [clip_of(coll)] * len(p)
         self.background += [False] * len(p)
+        self.own += [None] * len(p)
 
     def add_patch(self, patch: Any) -> None:
         """A filled ``Patch3D`` of one polygon (``ax.bar``): its outline, face and edge
@@ -318,6 +326,54 @@ class Polygons:
         self._width.append(np.array([float(patch.get_linewidth())]))
         self.clip.append(clip_of(patch))
         self.background.append(False)
+        self.own.append(None)
+
+    def add_path_patch(self, patch: Any) -> None:
+        """A filled ``PathPatch3D`` (``pathpatch_2d_to_3d``: a circle, a text's glyphs):
+        the regions its path fills in its plane (see ``_regions``), in its face colour,
+        its outlines in its edge colour and line width."""
+        from matplotlib.colors import to_rgba
+
+        pts = np.asarray(patch._segment3d, dtype=float).reshape(-1, 3)
+        self._add_regions(
+            [shown(patch, r) for r in outlines(pts, patch._code3d)],
+            np.array(to_rgba(patch.get_facecolor()), dtype=float),
+            np.array(to_rgba(patch.get_edgecolor()), dtype=float),
+            float(patch.get_linewidth()),
+            clip_of(patch),
+        )
+
+    def add_contour_fill(self, cset: Any) -> None:
+        """A filled contour set in 3D (``contourf``/``tricontourf`` of a 3D axes, a
+        ``Collection3D`` of one path per level): each level's regions in its colour."""
+        cset.update_scalarmappable()
+        fc = np.asarray(cset.get_facecolor(), dtype=float).reshape(-1, 4)
+        ec = np.asarray(cset.get_edgecolor(), dtype=float).reshape(-1, 4)
+        lw = np.asarray(cset.get_linewidths(), dtype=float).reshape(-1)
+        clip = clip_of(cset)
+        for i, (verts, codes) in enumerate(cset._3dverts_codes):
+            pick = lambda a, d: a[i % len(a)] if len(a) else d  # noqa: E731
+            self._add_regions(
+                [shown(cset, r) for r in outlines(verts, codes)],
+                pick(fc, np.zeros(4)),
+                pick(ec, np.zeros(4)),
+                float(pick(lw, 0.0)),
+                clip,
+            )
+
+    def _add_regions(
+        self, rings: List[np.ndarray], fill: np.ndarray, edge: np.ndarray, width: float, clip: Any
+    ) -> None:
+        # A corner mplot3d leaves out (NaN) is left out of its outline.
+        rings = [r[np.isfinite(r).all(axis=1)] for r in rings]
+        for face, own in region_faces(rings):
+            self.corners.append(face)
+            self._fill.append(np.asarray(fill, dtype=float).reshape(1, 4))
+            self._edge.append(np.asarray(edge, dtype=float).reshape(1, 4))
+            self._width.append(np.array([width]))
+            self.clip.append(clip)
+            self.background.append(False)
+            self.own.append(own)
 
     def add_pane(self, pane: Pane) -> None:
         """A filled pane (its outline is a line of its own)."""
@@ -327,6 +383,7 @@ class Polygons:
         self._width.append(np.zeros(1))
         self.clip.append(None)
         self.background.append(True)
+        self.own.append(None)
 
     def styles(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Fill colours (N, 4), edge colours (N, 4) and edge widths (N,) in points."""
@@ -347,10 +404,12 @@ class Polygons:
 
         kept = [k for k, p in enumerate(self.corners) if len(p) >= 3]
         polys = [self.corners[k] for k in kept]
+        fixed = [self.own[k] if k < len(self.own) else None for k in kept]
         if project is None:
-            faces, sub, own = polys, np.arange(len(polys)), [np.ones(len(p), bool) for p in polys]
+            faces, sub = polys, np.arange(len(polys))
+            own = [np.ones(len(p), bool) if f is None else f for p, f in zip(polys, fixed)]
         else:
-            faces, sub, own = view_triangles(polys, project)
+            faces, sub, own = view_triangles(polys, project, fixed)
         owner = np.asarray(kept, dtype=np.int64)[sub] if len(faces) else np.zeros(0, np.int64)
         counts = np.array([len(p) for p in faces], dtype=np.int64)
         v = np.concatenate(faces) if faces else np.zeros((0, 3))

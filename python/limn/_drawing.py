@@ -57,33 +57,41 @@ def marker_reach(path: Any) -> float:
     return float(np.abs(vs).max()) if vs.size else 0.0
 
 
-def draw_polygon(
-    renderer: Any, disp: np.ndarray, fill: tuple, edges: Any, edge: tuple, width: float, clip: Any
+def draw_polygons(
+    renderer: Any, pieces: list, fill: tuple, edges: Any, edge: tuple, width: float, clip: Any
 ) -> None:
-    """A painted polygon: its fill, then its original edges in the face's edge colour
-    and width (points)."""
+    """Painted polygons of one fill colour that follow each other in the paint order and
+    do not overlap (pieces of one polygon), or are opaque: their fills as one path (each
+    outline counter-clockwise, so the nonzero rule fills their union), then the edge
+    segments ``edges`` ((s, 2, 2) display units, or ``None``) in the edge colour and
+    width (points)."""
     from matplotlib.path import Path
     from matplotlib.transforms import IdentityTransform
 
+    verts, codes = [], []
+    for disp in pieces:
+        x, y = disp[:, 0], disp[:, 1]
+        twice = float(x[:-1] @ y[1:] - x[1:] @ y[:-1] + x[-1] * y[0] - x[0] * y[-1])
+        verts.append(disp if twice >= 0 else disp[::-1])
+        verts.append(verts[-1][:1])
+        c = np.full(len(disp) + 1, Path.LINETO, dtype=Path.code_type)
+        c[0], c[-1] = Path.MOVETO, Path.CLOSEPOLY
+        codes.append(c)
     gc = renderer.new_gc()
     gc.set_clip_rectangle(clip)
     gc.set_linewidth(0)
     gc.set_foreground((0, 0, 0, 0), isRGBA=True)
-    path = Path(np.vstack([disp, disp[:1]]), closed=True)
+    path = Path(np.concatenate(verts), np.concatenate(codes))
     renderer.draw_path(gc, path, IdentityTransform(), fill)
     gc.restore()
-    if edges is not None:
-        n = len(disp)
-        segs = [(disp[i], disp[(i + 1) % n]) for i in range(n) if edges[i]]
-        codes = [Path.MOVETO, Path.LINETO] * len(segs)
+    if edges is not None and len(edges):
+        codes = np.tile(np.array([Path.MOVETO, Path.LINETO], dtype=Path.code_type), len(edges))
         gc = renderer.new_gc()
         gc.set_clip_rectangle(clip)
         gc.set_foreground(edge, isRGBA=True)
         gc.set_linewidth(renderer.points_to_pixels(width))
         gc.set_capstyle("round")
-        renderer.draw_path(
-            gc, Path(np.array([q for s in segs for q in s]), codes), IdentityTransform()
-        )
+        renderer.draw_path(gc, Path(edges.reshape(-1, 2), codes), IdentityTransform())
         gc.restore()
 
 

@@ -29,6 +29,32 @@ Parts = Optional[List[np.ndarray]]
 """An item's convex parts, each (k, 2) in display units; ``None`` reaches everywhere."""
 
 _FAR = 1e12
+_MAX_CORNERS = 8
+"""Parts of more corners are replaced by their bounding octagon (the tests' cost grows
+with the square of the largest part's corner count)."""
+
+
+def _octagon(p: np.ndarray) -> np.ndarray:
+    """The convex octagon (8, 2) bounding the points (k, 2) between their extremes in x,
+    y, x + y and x - y (corners repeat where it has fewer sides)."""
+    x0, y0 = p.min(axis=0)
+    x1, y1 = p.max(axis=0)
+    s, d = p[:, 0] + p[:, 1], p[:, 0] - p[:, 1]
+    s0, s1, d0, d1 = s.min(), s.max(), d.min(), d.max()
+    # Counter-clockwise from the bottom edge's left end; each corner where two of the
+    # eight supporting lines meet.
+    return np.array(
+        [
+            (s0 - y0, y0),
+            (d1 + y0, y0),
+            (x1, x1 - d1),
+            (x1, s1 - x1),
+            (s1 - y1, y1),
+            (d0 + y1, y1),
+            (x0, x0 - d0),
+            (x0, s0 - x0),
+        ]
+    )
 
 
 def _table(parts: List[Parts], pads: np.ndarray):
@@ -40,6 +66,8 @@ def _table(parts: List[Parts], pads: np.ndarray):
             ps = [np.array([[-_FAR, -_FAR], [_FAR, -_FAR], [_FAR, _FAR], [-_FAR, _FAR]])]
         for p in ps:
             p = np.asarray(p, dtype=float).reshape(-1, 2)
+            if len(p) > _MAX_CORNERS:
+                p = _octagon(p)
             if len(p):
                 owner.append(i)
                 polys.append(p)

@@ -17,7 +17,7 @@ triangles, meeting where the outline crosses itself.
 
 from __future__ import annotations
 
-from typing import List, Tuple
+from typing import List, Optional, Tuple
 
 import numpy as np
 
@@ -42,6 +42,56 @@ def planar(p: np.ndarray, rel: float = 1e-9) -> bool:
     if not (np.isfinite(length) and np.isfinite(size)) or length == 0 or size == 0:
         return True  # whole to limn (which refuses what it cannot take)
     return float(np.abs(q @ (normal / length)).max()) <= rel * size
+
+
+_FAN_MAX = 64
+"""Outlines of more corners are not tried for a fan (the test costs n² per outline)."""
+
+
+def planar_all(p: np.ndarray, rel: float = 1e-9) -> np.ndarray:
+    """``planar`` of each polygon of ``p`` (m, n, 3), all at once."""
+    c = p.mean(axis=1, keepdims=True)
+    q = p - c
+    nxt = np.roll(p, -1, axis=1)
+    normal = np.stack(
+        [
+            np.sum((p[..., 1] - nxt[..., 1]) * (p[..., 2] + nxt[..., 2]), axis=1),
+            np.sum((p[..., 2] - nxt[..., 2]) * (p[..., 0] + nxt[..., 0]), axis=1),
+            np.sum((p[..., 0] - nxt[..., 0]) * (p[..., 1] + nxt[..., 1]), axis=1),
+        ],
+        axis=1,
+    )
+    with np.errstate(all="ignore"):
+        size = np.abs(q).max(axis=(1, 2))
+        length = np.linalg.norm(normal, axis=1)
+        unit = normal / length[:, None]
+        dev = np.abs(np.einsum("mnk,mk->mn", q, unit)).max(axis=1)
+        whole = ~(np.isfinite(length) & np.isfinite(size)) | (length == 0) | (size == 0)
+        return whole | (dev <= rel * size)
+
+
+def fan_corner_all(q: np.ndarray) -> np.ndarray:
+    """Per outline of ``q`` (m, n, 2), a corner whose fan of triangles covers the outline
+    exactly (-1: none): every triangle (c, c + i, c + i + 1) turning the way the outline
+    winds and their angles at c adding up to less than a full turn, so the triangles
+    follow each other around c without overlapping (a convex outline, or one
+    star-shaped from c)."""
+    m, n, _ = q.shape
+    area = 0.5 * np.sum(q[..., 0] * np.roll(q[..., 1], -1, axis=1)
+                        - np.roll(q[..., 0], -1, axis=1) * q[..., 1], axis=1)
+    sign = np.sign(area)[:, None]
+    best = np.full(m, -1)
+    with np.errstate(invalid="ignore"):
+        for c in range(n):
+            o = q[:, c : c + 1, :]
+            a = q[:, (c + np.arange(1, n - 1)) % n, :] - o
+            b = q[:, (c + np.arange(2, n)) % n, :] - o
+            cr = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+            dot = (a * b).sum(axis=2)
+            fine = (cr * sign > 0).all(axis=1)
+            fine &= np.abs(np.arctan2(cr, dot).sum(axis=1)) < 2 * np.pi - 1e-9
+            best[(best < 0) & fine] = c
+    return best
 
 
 def _cross(o: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -157,10 +207,12 @@ def _lobes(p: np.ndarray, q: np.ndarray):
 
 
 def view_triangles(
-    corners: List[np.ndarray], project
+    corners: List[np.ndarray], project, fixed: Optional[List[Optional[np.ndarray]]] = None
 ) -> Tuple[List[np.ndarray], np.ndarray, List[np.ndarray]]:
     """Each polygon (n, 3) as it goes to limn: planar ones, and those whose projected
     outline is not simple, whole; the others as the triangles of their projected outline.
+    A polygon with its own edges given in ``fixed`` (not ``None``: a filled region with
+    bridges to its holes, see ``_regions``) goes whole, with those edges.
 
     ``project`` maps points (k, 3) to the view's 2D coordinates (k, 2), NaN where a point
     cannot be projected. Returns the faces, the polygon each face comes from, and per face
@@ -169,17 +221,37 @@ def view_triangles(
     owner: List[int] = []
     own: List[np.ndarray] = []
     reflex, bowtie = _darts(corners, project)
+    sizes = np.array([len(p) for p in corners], dtype=np.int64)
+    # Every corner projected at once; planarity and convex projected outlines tested per
+    # corner count, all polygons of a count at once.
+    seen = project(np.concatenate(corners)) if len(corners) else np.zeros((0, 2))
+    starts = np.concatenate([[0], np.cumsum(sizes)])
+    flat = np.ones(len(corners), dtype=bool)
+    fan = np.full(len(corners), -1)
+    for n in np.unique(sizes[sizes >= 4]):
+        ks = np.nonzero(sizes == n)[0]
+        group = np.stack([corners[k] for k in ks])
+        flat[ks] = planar_all(group)
+        if 5 <= n <= _FAN_MAX:
+            rows = starts[ks][:, None] + np.arange(n)[None, :]
+            fan[ks] = fan_corner_all(seen[rows])
+    fan_edges = {}
     for k, p in enumerate(corners):
         n = len(p)
+        if fixed is not None and fixed[k] is not None:
+            faces.append(p)
+            owner.append(k)
+            own.append(fixed[k])
+            continue
         if bowtie[k]:
-            lobes = _lobes(p, project(p))
+            lobes = _lobes(p, seen[starts[k] : starts[k + 1]])
             if lobes is not None:
                 for t in lobes:
                     faces.append(t)
                     owner.append(k)
                     own.append(np.ones(3, dtype=bool))
                 continue
-        if reflex[k] >= 0 and not planar(p):
+        if reflex[k] >= 0 and not flat[k]:
             r = int(reflex[k])
             cuts = ((r, r + 1, r + 2), (r, r + 2, r + 3))
             for t, e in zip(cuts, ((True, True, False), (False, True, True))):
@@ -187,8 +259,21 @@ def view_triangles(
                 owner.append(k)
                 own.append(np.array(e))
             continue
-        if n >= 5 and not planar(p):
-            q = project(p)
+        if n >= 5 and not flat[k] and fan[k] >= 0:
+            # The fan from that corner covers the outline exactly, in the polygon's own
+            # winding.
+            if n not in fan_edges:
+                fan_edges[n] = [
+                    np.array([i == 1, True, i == n - 2]) for i in range(1, n - 1)
+                ]
+            c = int(fan[k])
+            for i, e in zip(range(1, n - 1), fan_edges[n]):
+                faces.append(p[[c, (c + i) % n, (c + i + 1) % n]])
+                owner.append(k)
+                own.append(e)
+            continue
+        if n >= 5 and not flat[k]:
+            q = seen[starts[k] : starts[k + 1]]
             if np.isfinite(q).all() and simple(q):
                 tris = ear_clip(q)
                 if len(tris) == n - 2:

@@ -3,9 +3,11 @@
 matplotlib's mplot3d sorts whole polygons by one depth each, so intersecting surfaces
 and cyclic overlaps come out wrong in its own export. ``savefig`` draws each 3D axes'
 ``Poly3DCollection`` content (plot_surface, plot_trisurf, bar3d, voxels,
-add_collection3d) and its filled polygon patches (``ax.bar``) through limn instead: the
-same polygons (a non-planar one as the triangles of the outline matplotlib fills, see
-``_triangulate``), the face colours after colormapping, alpha, edge colours and line
+add_collection3d), its filled patches (``ax.bar``, ``PathPatch3D``: circles, glyphs) and
+its filled contour sets (``contourf``, ``tricontourf``, with ``zdir`` and ``offset``)
+through limn instead: the same polygons (a non-planar one as the triangles of the
+outline matplotlib fills, see ``_triangulate``; a filled path as the regions matplotlib
+fills, see ``_regions``), the face colours after colormapping, alpha, edge colours and line
 widths, seen through the axes' own projection (``get_proj()``: perspective with its
 focal length, or orthographic), so the picture registers with the axes, ticks, labels,
 titles and colorbars matplotlib draws around it. limn's polygons are drawn through
@@ -60,7 +62,7 @@ import numpy as np
 from . import Scene
 from ._axes_box import axis_lines, grid_lines, inside_box, panes
 from ._content import Line, Marks, Polygons
-from ._drawing import draw_line, draw_marker, draw_polygon, draw_text, marker_reach
+from ._drawing import draw_line, draw_marker, draw_polygons, draw_text, marker_reach
 from ._layers import under_axes
 
 __all__ = ["savefig"]
@@ -195,14 +197,21 @@ class _Limn3D:
     def _content(self, p2p: float, M: np.ndarray) -> Tuple[Polygons, Marks]:
         """The axes' polygons and marks, with its box when that goes into the scene
         (first, in matplotlib's order: panes, their outlines, grid lines, axis lines)."""
-        from mpl_toolkits.mplot3d.art3d import Line3DCollection, Path3DCollection
-
-        from mpl_toolkits.mplot3d.art3d import Patch3D
+        from mpl_toolkits.mplot3d.art3d import (
+            Line3DCollection,
+            Patch3D,
+            Path3DCollection,
+            PathPatch3D,
+        )
 
         polys = Polygons()
         for coll in self.colls:
-            if isinstance(coll, Patch3D):
+            if isinstance(coll, PathPatch3D):
+                polys.add_path_patch(coll)
+            elif isinstance(coll, Patch3D):
                 polys.add_patch(coll)
+            elif _is_contour_fill(coll):
+                polys.add_contour_fill(coll)
             else:
                 polys.add_collection(coll)
         data = Marks()
@@ -306,26 +315,34 @@ class _Limn3D:
 
         first = np.concatenate([[0], np.cumsum(counts)])
         seen = _project(v, m)  # the faces' corners in limn's normalised coordinates
+        # Every fragment's points in display units at once.
+        ends = np.cumsum([0] + [len(p[1]) for p in polygons])
+        pts_all = np.concatenate([p[1] for p in polygons]) if polygons else np.zeros((0, 2))
+        disp_all = np.column_stack([pts_all[:, 0] * sx, H - pts_all[:, 1] * sy])
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
             k = int(owner[face])
-            disp = disp_of(pts)
+            disp = disp_all[ends[i] : ends[i + 1]]
             edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
             if edged and not own[face].all():
                 # A triangle of a polygon cut in the view: only the polygon's own edges.
                 corner = seen[first[face] : first[face + 1]]
                 orig = _polygon_edges(disp, orig, corner, own[face], W, H)
                 edged = any(orig)
+            edges = None
+            if edged:
+                j = np.nonzero(np.asarray(orig, dtype=bool))[0]
+                edges = np.stack([disp[j], disp[(j + 1) % len(disp)]], axis=1)
             items.append(
                 _Item(
                     [disp],
                     0.5 * lw[k] * p2p if edged else 0.0,
                     polys.background[k],
                     partial(
-                        draw_polygon,
-                        disp=disp,
+                        draw_polygons,
+                        pieces=[disp],
                         fill=tuple(fill),
-                        edges=orig if edged else None,
+                        edges=edges,
                         edge=tuple(ec[k]),
                         width=float(lw[k]),
                         clip=polys.clip[k],
@@ -369,31 +386,40 @@ def _polygon_edges(
 
 
 def _is_polygon_patch(art: Any) -> bool:
-    """Whether ``art`` is a filled 3D patch of one polygon (``ax.bar`` in a 3D axes,
-    ``pathpatch_2d_to_3d`` of a polygon); ``PathPatch3D``s of curves and several
-    outlines (text) stay matplotlib's drawing."""
-    from mpl_toolkits.mplot3d.art3d import Patch3D, PathPatch3D
+    """Whether ``art`` is a filled 3D patch: a polygon (``ax.bar`` in a 3D axes,
+    ``patch_2d_to_3d``) or a path of any outlines and curves (``PathPatch3D`` from
+    ``pathpatch_2d_to_3d``: a circle, a text's glyphs). Unfilled patches stay
+    matplotlib's drawing."""
+    from mpl_toolkits.mplot3d.art3d import Patch3D
 
     return (
         isinstance(art, Patch3D)
-        and not isinstance(art, PathPatch3D)
         and art.get_fill()
         and len(getattr(art, "_segment3d", ())) >= 3
     )
 
 
-def _is_contour_lines(art: Any) -> bool:
-    """Whether ``art`` is a 3D axes' contour set of lines (``ax.contour``; filled contour
-    sets, whose regions may have holes, stay matplotlib's drawing)."""
+def _is_contour_set(art: Any, filled: bool) -> bool:
     from matplotlib.contour import ContourSet
     from mpl_toolkits.mplot3d.art3d import Collection3D
 
     return (
         isinstance(art, Collection3D)
         and isinstance(art, ContourSet)
-        and not art.filled
+        and bool(art.filled) == filled
         and hasattr(art, "_3dverts_codes")
     )
+
+
+def _is_contour_lines(art: Any) -> bool:
+    """Whether ``art`` is a 3D axes' contour set of lines (``ax.contour``)."""
+    return _is_contour_set(art, filled=False)
+
+
+def _is_contour_fill(art: Any) -> bool:
+    """Whether ``art`` is a 3D axes' filled contour set (``ax.contourf``,
+    ``ax.tricontourf``, with or without ``zdir``/``offset``)."""
+    return _is_contour_set(art, filled=True)
 
 
 def _measuring(renderer: Any) -> bool:
@@ -464,7 +490,9 @@ def savefig(
             if not _is_3d(ax):
                 continue
             colls = [
-                c for c in ax.collections if isinstance(c, Poly3DCollection) and c.get_visible()
+                c
+                for c in ax.collections
+                if (isinstance(c, Poly3DCollection) or _is_contour_fill(c)) and c.get_visible()
             ] + [p for p in ax.patches if _is_polygon_patch(p) and p.get_visible()]
             marks = [
                 c

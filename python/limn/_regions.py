@@ -1,0 +1,338 @@
+"""Filled paths in 3D as limn faces: the regions of a filled contour set (``contourf``,
+``tricontourf``, with or without ``zdir``/``offset``) and of a ``PathPatch3D`` (a
+circle, the glyphs of a ``TextPath``).
+
+mplot3d projects such a path's vertices (curve control points included) and fills the
+projected path as a 2D path with the nonzero rule: one level of a filled contour set is
+one path of several outlines, some of them holes, and a glyph's outline has holes too.
+A path of mplot3d lies in one plane (a level's plane, or the plane ``zdir`` and ``z``
+give a patch), so the bridge fills it in that plane: curves are flattened (a few
+degrees of arc per chord) and the outlines nested by containment. A region of nonzero
+winding number without holes is one face (limn takes simple non-convex polygons); a
+region with holes, and the fill of outlines that cross each other (a filled contour set
+of a folded mesh), is cut into trapezoids between the heights of its corners and
+crossings, whose tops and bottoms are not edges of the path: only the outlines' own
+edges are stroked.
+"""
+
+from __future__ import annotations
+
+from typing import List, Tuple
+
+import numpy as np
+
+_MOVETO, _LINETO, _CURVE3, _CURVE4, _CLOSEPOLY = 1, 2, 3, 4, 79
+_STEPS = {_CURVE3: 8, _CURVE4: 12}
+"""Chords per quadratic and cubic segment (a quarter circle drawn as one cubic: under
+1e-3 of its radius off the curve)."""
+
+
+def outlines(verts: np.ndarray, codes) -> List[np.ndarray]:
+    """The closed outlines (each (n, 3)) a path of 3D vertices and matplotlib path codes
+    fills, curves flattened; ``codes`` ``None`` is one outline through every vertex.
+    Vertices of ``CLOSEPOLY`` and ``STOP`` codes are not corners (matplotlib ignores
+    them)."""
+    verts = np.asarray(verts, dtype=float).reshape(-1, 3)
+    if codes is None:
+        return [verts]
+    codes = np.asarray(codes)
+    if not ((codes == _CURVE3) | (codes == _CURVE4)).any():
+        keep = (codes == _MOVETO) | (codes == _LINETO)
+        starts = np.nonzero(codes[keep] == _MOVETO)[0]
+        parts = np.split(verts[keep], starts)
+        return [p for p in parts if len(p)]
+    rings: List[np.ndarray] = []
+    ring: List[np.ndarray] = []
+    i, n = 0, len(codes)
+    while i < n:
+        c = codes[i]
+        if c == _MOVETO:
+            if ring:
+                rings.append(np.array(ring))
+            ring = [verts[i]]
+            i += 1
+        elif c == _LINETO:
+            ring.append(verts[i])
+            i += 1
+        elif c in (_CURVE3, _CURVE4):
+            k = 2 if c == _CURVE3 else 3
+            ctrl = np.vstack([ring[-1:] or [verts[i]], verts[i : i + k]])
+            ring.extend(_bezier(ctrl, _STEPS[int(c)])[1:])
+            i += k
+        else:  # CLOSEPOLY, STOP
+            if ring:
+                rings.append(np.array(ring))
+            ring = []
+            i += 1
+    if ring:
+        rings.append(np.array(ring))
+    return rings
+
+
+def _bezier(ctrl: np.ndarray, steps: int) -> np.ndarray:
+    """Points (steps + 1, 3) along the Bézier curve of control points ``ctrl``."""
+    t = np.linspace(0.0, 1.0, steps + 1)[:, None]
+    if len(ctrl) == 3:
+        a, b, c = ctrl
+        return (1 - t) ** 2 * a + 2 * (1 - t) * t * b + t**2 * c
+    a, b, c, d = ctrl
+    return (1 - t) ** 3 * a + 3 * (1 - t) ** 2 * t * b + 3 * (1 - t) * t**2 * c + t**3 * d
+
+
+def _clean(ring: np.ndarray) -> np.ndarray:
+    """The ring without repeated consecutive corners (nor a last corner repeating the
+    first), nor corners exactly on the straight line through their neighbours (a filled
+    contour's outline along the data's border has one at every grid point): the same
+    outline, fewer corners."""
+    if len(ring) < 2:
+        return ring
+    same = (ring == np.roll(ring, -1, axis=0)).all(axis=1)
+    ring = ring[~same] if not same.all() else ring[:1]
+    if len(ring) < 4:
+        return ring
+    into = ring - np.roll(ring, 1, axis=0)
+    out = np.roll(ring, -1, axis=0) - ring
+    straight = (np.cross(into, out) == 0).all(axis=1) & ((into * out).sum(axis=1) > 0)
+    return ring[~straight] if (~straight).sum() >= 3 else ring
+
+
+def _area(q: np.ndarray) -> float:
+    return 0.5 * float(np.sum(q[:, 0] * np.roll(q[:, 1], -1) - np.roll(q[:, 0], -1) * q[:, 1]))
+
+
+def _plane_axes(rings: List[np.ndarray]) -> Tuple[int, int]:
+    """The two coordinate axes to fill the rings in: the axes of the plane the largest
+    ring's normal (Newell's) is least inclined to (without area, the two the corners
+    spread most along)."""
+    best, normal = -1.0, np.array([0.0, 0.0, 1.0])
+    for p in rings:
+        nxt = np.roll(p, -1, axis=0)
+        n = np.array(
+            [
+                np.sum((p[:, 1] - nxt[:, 1]) * (p[:, 2] + nxt[:, 2])),
+                np.sum((p[:, 2] - nxt[:, 2]) * (p[:, 0] + nxt[:, 0])),
+                np.sum((p[:, 0] - nxt[:, 0]) * (p[:, 1] + nxt[:, 1])),
+            ]
+        )
+        size = float(np.abs(n).sum())
+        if np.isfinite(size) and size > best:
+            best, normal = size, n
+    if (np.abs(normal) > 0).any():
+        drop = int(np.argmax(np.abs(normal)))
+    else:  # no area (a bow-tie's lobes cancel): the axis the corners spread least along
+        drop = int(np.argmin(np.ptp(np.concatenate(rings), axis=0)))
+    return tuple(a for a in range(3) if a != drop)  # type: ignore[return-value]
+
+
+def region_faces(rings: List[np.ndarray]) -> List[Tuple[np.ndarray, np.ndarray]]:
+    """The faces (n, 3) filling the outlines ``rings`` (each (k, 3), closed implicitly,
+    in one plane) by the nonzero rule, with per face which of its edges (edge i from
+    corner i to i + 1) are edges of an outline (the others are cuts).
+
+    Outlines that do not cross (those of contour sets on a plain grid, glyphs; touching
+    at corners is fine) give one face per region without holes, and trapezoids
+    (``_slabs``) for a region with holes. Outlines that cross (a filled contour set of a
+    folded mesh, ``contourf(..., zdir="x")`` of a surface that is not a function of y and
+    z) are filled by trapezoids all together.
+    Degenerate outlines (fewer than three corners, no area) are left out."""
+    rings = [_clean(r) for r in rings]
+    rings = [r for r in rings if len(r) >= 3 and np.isfinite(r).all()]
+    if not rings:
+        return []
+    u, v = _plane_axes(rings)
+    flat = [r[:, [u, v]] for r in rings]
+    if _crossing(flat):
+        return _slabs(rings, flat)
+    area = np.array([_area(q) for q in flat])
+    good = area != 0
+    rings = [r for r, g in zip(rings, good) if g]
+    flat = [q for q, g in zip(flat, good) if g]
+    area = area[good]
+    n = len(rings)
+    if n == 0:
+        return []
+    parent = _parents(flat, np.abs(area))
+    sign = np.sign(area).astype(int)
+    winding = sign.copy()
+    for i in range(n):
+        j = parent[i]
+        while j >= 0:
+            winding[i] += sign[j]
+            j = parent[j]
+    holes: List[List[int]] = [[] for _ in range(n)]
+    for i in range(n):
+        if parent[i] >= 0:
+            holes[parent[i]].append(i)
+    out: List[Tuple[np.ndarray, np.ndarray]] = []
+    for i in range(n):
+        if winding[i] == 0:
+            continue
+        if not holes[i]:
+            out.append((rings[i], np.ones(len(rings[i]), dtype=bool)))
+            continue
+        # The outline counter-clockwise, its holes clockwise: winding one in the region.
+        ccw = lambda k, want: (rings[k], flat[k]) if (area[k] > 0) == want else (  # noqa: E731
+            rings[k][::-1],
+            flat[k][::-1],
+        )
+        parts = [ccw(i, True)] + [ccw(h, False) for h in holes[i]]
+        out += _slabs([r for r, _ in parts], [q for _, q in parts])
+    return out
+
+
+def _parents(flat: List[np.ndarray], size: np.ndarray) -> np.ndarray:
+    """Per ring, the smallest ring containing it (-1: none). A ring is inside another
+    when most of its corners are (a few corners where rings touch do not decide)."""
+    from matplotlib.path import Path
+
+    n = len(flat)
+    lo = np.array([q.min(axis=0) for q in flat])
+    hi = np.array([q.max(axis=0) for q in flat])
+    parent = np.full(n, -1)
+    if n == 1:
+        return parent
+    # Candidate pairs (j inside i): j's box inside i's, i larger.
+    within = (
+        (lo[None, :, :] >= lo[:, None, :]).all(axis=2)
+        & (hi[None, :, :] <= hi[:, None, :]).all(axis=2)
+        & (size[:, None] > size[None, :])
+    )
+    best = np.full(n, np.inf)
+    for i in np.nonzero(within.any(axis=1))[0]:
+        path = Path(flat[i])
+        for j in np.nonzero(within[i])[0]:
+            if size[i] >= best[j]:
+                continue
+            q = flat[j]
+            if 2 * int(path.contains_points(q).sum()) > len(q):
+                parent[j], best[j] = i, size[i]
+    return parent
+
+
+def _edges(flat: List[np.ndarray]) -> Tuple[np.ndarray, np.ndarray]:
+    """Every outline's edges as start and end points (E, 2) each."""
+    a = np.concatenate(flat)
+    b = np.concatenate([np.roll(q, -1, axis=0) for q in flat])
+    return a, b
+
+
+def _crossing(flat: List[np.ndarray]) -> bool:
+    """Whether two edges of the outlines cross properly (each one's ends strictly on
+    both sides of the other)."""
+    a, b = _edges(flat)
+    lo, hi = np.minimum(a, b), np.maximum(a, b)
+    order = np.argsort(lo[:, 0], kind="stable")
+    a, b, lo, hi = a[order], b[order], lo[order], hi[order]
+    e = len(a)
+    step = max(1, 4_000_000 // max(e, 1))
+    for s in range(0, e, step):
+        i = np.arange(s, min(e, s + step))
+        # Pairs j > i whose boxes meet (boxes sorted by left side: j's left side
+        # before i's right side).
+        last = np.searchsorted(lo[:, 0], hi[i, 0], side="right")
+        counts = np.maximum(last - i - 1, 0)
+        if not counts.any():
+            continue
+        ii = np.repeat(i, counts)
+        jj = np.arange(len(ii)) - np.repeat(np.cumsum(counts) - counts, counts) + ii + 1
+        meet = (lo[jj, 1] <= hi[ii, 1]) & (hi[jj, 1] >= lo[ii, 1])
+        ii, jj = ii[meet], jj[meet]
+        d1 = _side(a[ii], b[ii], a[jj])
+        d2 = _side(a[ii], b[ii], b[jj])
+        d3 = _side(a[jj], b[jj], a[ii])
+        d4 = _side(a[jj], b[jj], b[ii])
+        if ((d1 * d2 < 0) & (d3 * d4 < 0)).any():
+            return True
+    return False
+
+
+def _side(o: np.ndarray, a: np.ndarray, p: np.ndarray) -> np.ndarray:
+    return np.sign((a[:, 0] - o[:, 0]) * (p[:, 1] - o[:, 1]) - (a[:, 1] - o[:, 1]) * (p[:, 0] - o[:, 0]))
+
+
+def _slabs(rings: List[np.ndarray], flat: List[np.ndarray]) -> List[Tuple[np.ndarray, np.ndarray]]:
+    """The nonzero fill of outlines that may cross, as trapezoids: the plane cut at the
+    height of every corner and every crossing into slabs, in each slab the spans between
+    edges where the winding number is not zero; a span bounded by the same two edges in
+    consecutive slabs is one trapezoid. Corners in 3D are on the outlines' edges (the
+    outlines lie in one plane); the trapezoids' sides on edges are the outline's own,
+    their tops and bottoms are not."""
+    a, b = _edges(flat)
+    a3 = np.concatenate(rings)
+    b3 = np.concatenate([np.roll(r, -1, axis=0) for r in rings])
+    dy = b[:, 1] - a[:, 1]
+    keep = dy != 0
+    a, b, a3, b3, dy = a[keep], b[keep], a3[keep], b3[keep], dy[keep]
+    up = np.where(dy > 0, 1, -1)
+    ylo, yhi = np.minimum(a[:, 1], b[:, 1]), np.maximum(a[:, 1], b[:, 1])
+    ys = np.unique(np.r_[a[:, 1], b[:, 1], _crossing_heights(a, b)])
+
+    def at(e: np.ndarray, y: float) -> Tuple[np.ndarray, np.ndarray]:
+        t = (y - a[e, 1]) / dy[e]
+        return a[e, 0] + t * (b[e, 0] - a[e, 0]), a3[e] + t[:, None] * (b3[e] - a3[e])
+
+    out: List[Tuple[np.ndarray, np.ndarray]] = []
+    open_: dict = {}  # (left edge, right edge) -> bottom corners (2, 3)
+
+    def close(key, y: float, store: dict) -> None:
+        bottom = store.pop(key)
+        _, top = at(np.array(key), y)
+        quad = np.array([bottom[0], bottom[1], top[1], top[0]])
+        own = np.array([False, True, False, True])
+        same = (quad == np.roll(quad, -1, axis=0)).all(axis=1)
+        if (~same).sum() >= 3:
+            out.append((quad[~same], own[~same]))
+
+    for y0, y1 in zip(ys[:-1], ys[1:]):
+        e = np.nonzero((ylo <= y0) & (yhi >= y1))[0]
+        mid = 0.5 * (y0 + y1)
+        x, _ = at(e, mid)
+        e = e[np.argsort(x, kind="stable")]
+        w = np.cumsum(up[e])
+        spans = []
+        start = None
+        for k in range(len(e)):
+            before = w[k - 1] if k else 0
+            if before == 0 and w[k] != 0:
+                start = int(e[k])
+            elif before != 0 and w[k] == 0 and start is not None:
+                spans.append((start, int(e[k])))
+        now = set(spans)
+        for key in [key for key in open_ if key not in now]:
+            close(key, y0, open_)
+        for key in spans:
+            if key not in open_:
+                _, bottom = at(np.array(key), y0)
+                open_[key] = bottom
+    for key in list(open_):
+        close(key, ys[-1], open_)
+    return out
+
+
+def _crossing_heights(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The heights (y) where two edges cross properly."""
+    lo, hi = np.minimum(a, b), np.maximum(a, b)
+    ys = []
+    e = len(a)
+    step = max(1, 2_000_000 // max(e, 1))
+    for s in range(0, e, step):
+        i = np.arange(s, min(e, s + step))
+        ii, jj = np.nonzero(
+            (lo[None, :, 0] <= hi[i, None, 0]) & (hi[None, :, 0] >= lo[i, None, 0])
+            & (lo[None, :, 1] <= hi[i, None, 1]) & (hi[None, :, 1] >= lo[i, None, 1])
+        )
+        ii = i[ii]
+        keep = jj > ii
+        ii, jj = ii[keep], jj[keep]
+        d1 = _side(a[ii], b[ii], a[jj])
+        d2 = _side(a[ii], b[ii], b[jj])
+        d3 = _side(a[jj], b[jj], a[ii])
+        d4 = _side(a[jj], b[jj], b[ii])
+        x = (d1 * d2 < 0) & (d3 * d4 < 0)
+        ii, jj = ii[x], jj[x]
+        p, r = a[ii], b[ii] - a[ii]
+        q, sv = a[jj], b[jj] - a[jj]
+        den = r[:, 0] * sv[:, 1] - r[:, 1] * sv[:, 0]
+        t = ((q[:, 0] - p[:, 0]) * sv[:, 1] - (q[:, 1] - p[:, 1]) * sv[:, 0]) / den
+        ys.append(p[:, 1] + t * r[:, 1])
+    return np.concatenate(ys) if ys else np.zeros(0)
