@@ -71,11 +71,16 @@ def collection_polygons(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.nda
     faces = np.asarray(coll._faces, dtype=float)
     invalid = np.asarray(coll._invalid_vertices)
     n = len(faces)
-    polys = []
-    for i in range(n):
-        keep = ~invalid[i] if invalid.ndim == 2 else np.ones(faces.shape[1], bool)
-        corners = shown(coll, faces[i][keep])
-        polys.append(corners[np.isfinite(corners).all(axis=1)])
+    polys: List[np.ndarray] = []
+    if n:
+        # Every corner at once; only polygons that lose corners are picked apart.
+        k = faces.shape[1]
+        every = shown(coll, faces.reshape(-1, 3)).reshape(n, k, 3)
+        keep = np.isfinite(every).all(axis=2)
+        if invalid.ndim == 2:
+            keep &= ~invalid
+        whole = keep.all(axis=1)
+        polys = [every[i] if whole[i] else every[i][keep[i]] for i in range(n)]
     rep = lambda c: (  # noqa: E731
         np.zeros((n, 4)) if len(c) == 0 else (np.repeat(c, n, axis=0) if len(c) != n else c)
     )

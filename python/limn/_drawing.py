@@ -57,31 +57,52 @@ def marker_reach(path: Any) -> float:
     return float(np.abs(vs).max()) if vs.size else 0.0
 
 
-def draw_polygons(
-    renderer: Any, pieces: list, fill: tuple, edges: Any, edge: tuple, width: float, clip: Any
+_CODES: dict = {}
+
+
+def _closed_codes(n: int) -> np.ndarray:
+    """Path codes of a closed outline of n corners (MOVETO, LINETO..., CLOSEPOLY)."""
+    c = _CODES.get(n)
+    if c is None:
+        from matplotlib.path import Path
+
+        c = np.full(n + 1, Path.LINETO, dtype=Path.code_type)
+        c[0], c[-1] = Path.MOVETO, Path.CLOSEPOLY
+        c.flags.writeable = False
+        _CODES[n] = c
+    return c
+
+
+def draw_polygon(
+    renderer: Any,
+    disp: np.ndarray,
+    fill: tuple,
+    edges: Any,
+    edge: tuple,
+    width: float,
+    clip: Any,
+    whole: bool = False,
 ) -> None:
-    """Painted polygons of one fill colour that follow each other in the paint order and
-    do not overlap (pieces of one polygon), or are opaque: their fills as one path (each
-    outline counter-clockwise, so the nonzero rule fills their union), then the edge
-    segments ``edges`` ((s, 2, 2) display units, or ``None``) in the edge colour and
-    width (points)."""
+    """A painted polygon (display units): its fill, then the edge segments ``edges``
+    ((s, 2, 2) display units, or ``None``) in the edge colour and width (points);
+    ``whole``: the segments are all of its edges, drawn with the fill as its outline in
+    one path, as matplotlib draws a polygon (round joins where segments have round
+    caps)."""
     from matplotlib.path import Path
     from matplotlib.transforms import IdentityTransform
 
-    verts, codes = [], []
-    for disp in pieces:
-        x, y = disp[:, 0], disp[:, 1]
-        twice = float(x[:-1] @ y[1:] - x[1:] @ y[:-1] + x[-1] * y[0] - x[0] * y[-1])
-        verts.append(disp if twice >= 0 else disp[::-1])
-        verts.append(verts[-1][:1])
-        c = np.full(len(disp) + 1, Path.LINETO, dtype=Path.code_type)
-        c[0], c[-1] = Path.MOVETO, Path.CLOSEPOLY
-        codes.append(c)
+    path = Path(np.concatenate([disp, disp[:1]]), _closed_codes(len(disp)))
     gc = renderer.new_gc()
     gc.set_clip_rectangle(clip)
+    if whole and edges is not None and len(edges) == len(disp):
+        gc.set_foreground(edge, isRGBA=True)
+        gc.set_linewidth(renderer.points_to_pixels(width))
+        gc.set_joinstyle("round")
+        renderer.draw_path(gc, path, IdentityTransform(), fill)
+        gc.restore()
+        return
     gc.set_linewidth(0)
     gc.set_foreground((0, 0, 0, 0), isRGBA=True)
-    path = Path(np.concatenate(verts), np.concatenate(codes))
     renderer.draw_path(gc, path, IdentityTransform(), fill)
     gc.restore()
     if edges is not None and len(edges):

@@ -62,7 +62,7 @@ import numpy as np
 from . import Scene
 from ._axes_box import axis_lines, grid_lines, inside_box, panes
 from ._content import Line, Marks, Polygons
-from ._drawing import draw_line, draw_marker, draw_polygons, draw_text, marker_reach
+from ._drawing import draw_line, draw_marker, draw_polygon, draw_text, marker_reach
 from ._layers import under_axes
 
 __all__ = ["savefig"]
@@ -329,23 +329,26 @@ class _Limn3D:
                 corner = seen[first[face] : first[face + 1]]
                 orig = _polygon_edges(disp, orig, corner, own[face], W, H)
                 edged = any(orig)
-            edges = None
+            edges, whole = None, False
             if edged:
-                j = np.nonzero(np.asarray(orig, dtype=bool))[0]
+                flags = np.asarray(orig, dtype=bool)
+                j = np.nonzero(flags)[0]
                 edges = np.stack([disp[j], disp[(j + 1) % len(disp)]], axis=1)
+                whole = bool(flags.all())
             items.append(
                 _Item(
                     [disp],
                     0.5 * lw[k] * p2p if edged else 0.0,
                     polys.background[k],
                     partial(
-                        draw_polygons,
-                        pieces=[disp],
+                        draw_polygon,
+                        disp=disp,
                         fill=tuple(fill),
                         edges=edges,
                         edge=tuple(ec[k]),
                         width=float(lw[k]),
                         clip=polys.clip[k],
+                        whole=whole,
                     ),
                 )
             )
@@ -374,15 +377,15 @@ def _polygon_edges(
     a, b = c, np.roll(c, -1, axis=0)
     d = b - a
     length = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-300)
-    out = []
-    for j, flag in enumerate(orig):
-        if not flag:
-            out.append(False)
-            continue
+    flags = np.asarray(orig, dtype=bool)
+    out = np.zeros(len(flags), dtype=bool)
+    j = np.nonzero(flags)[0]
+    if len(j):
         q = (disp[j] + disp[(j + 1) % len(disp)]) / 2
-        dist = np.abs(d[:, 0] * (q[1] - a[:, 1]) - d[:, 1] * (q[0] - a[:, 0])) / length
-        out.append(bool(own[int(np.argmin(dist))]))
-    return out
+        dist = np.abs(d[None, :, 0] * (q[:, None, 1] - a[None, :, 1])
+                      - d[None, :, 1] * (q[:, None, 0] - a[None, :, 0])) / length[None, :]
+        out[j] = np.asarray(own, dtype=bool)[np.argmin(dist, axis=1)]
+    return out.tolist()
 
 
 def _is_polygon_patch(art: Any) -> bool:
