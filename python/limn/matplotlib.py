@@ -319,9 +319,38 @@ class _Limn3D:
         ends = np.cumsum([0] + [len(p[1]) for p in polygons])
         pts_all = np.concatenate([p[1] for p in polygons]) if polygons else np.zeros((0, 2))
         disp_all = np.column_stack([pts_all[:, 0] * sx, H - pts_all[:, 1] * sy])
+        lead, skip = _whole_runs(polygons, owner, by_place, fc, ec, lw, len(polys.corners))
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
             k = int(owner[face])
+            if skip[i]:
+                continue
+            if lead[i] >= 0:
+                # Every fragment of this polygon, one after another: the polygon itself.
+                c = _project(polys.corners[k], m)
+                disp = np.column_stack(
+                    [(c[:, 0] + 1) / 2 * wl * sx, H - (1 - c[:, 1]) / 2 * hl * sy]
+                )
+                parts = [disp_all[ends[j] : ends[j + 1]] for j in range(i, lead[i] + 1)]
+                edged = lw[k] > 0 and ec[k][3] > 0
+                items.append(
+                    _Item(
+                        parts,
+                        0.5 * lw[k] * p2p if edged else 0.0,
+                        polys.background[k],
+                        partial(
+                            draw_polygon,
+                            disp=disp,
+                            fill=tuple(fill),
+                            edges=_outline(disp) if edged else None,
+                            edge=tuple(ec[k]),
+                            width=float(lw[k]),
+                            clip=polys.clip[k],
+                            whole=edged,
+                        ),
+                    )
+                )
+                continue
             disp = disp_all[ends[i] : ends[i + 1]]
             edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
             if edged and not own[face].all():
@@ -354,6 +383,61 @@ class _Limn3D:
             )
         add_marks(len(polygons))
         return items
+
+
+def _outline(disp: np.ndarray) -> np.ndarray:
+    """A polygon's edges as segments (n, 2, 2)."""
+    return np.stack([disp, np.roll(disp, -1, axis=0)], axis=1)
+
+
+def _whole_runs(
+    polygons: list,
+    owner: np.ndarray,
+    marks_at: dict,
+    fc: np.ndarray,
+    ec: np.ndarray,
+    lw: np.ndarray,
+    n_polys: int,
+) -> Tuple[np.ndarray, np.ndarray]:
+    """Polygons to draw whole, as matplotlib draws them, in place of their fragments: the
+    fragments of a polygon (the triangles it was cut into, limn's pieces of a face and
+    its cover) painted one after another with nothing else in between fill exactly the
+    polygon's outline there. Only for polygons whose seams limn's flaps need not close:
+    translucent ones (limn gives them no flaps) and those whose every edge is stroked
+    (the stroke covers the seams).
+
+    Returns per fragment the index of the last fragment of its polygon's run where it
+    leads one (-1 elsewhere), and whether it is drawn by such a lead."""
+    n = len(polygons)
+    lead = np.full(n, -1)
+    skip = np.zeros(n, dtype=bool)
+    if n == 0:
+        return lead, skip
+    face = np.fromiter((p[0] for p in polygons), dtype=np.int64, count=n)
+    fo = owner[face]
+    idx = np.arange(n)
+    lo = np.full(n_polys, n)
+    hi = np.full(n_polys, -1)
+    np.minimum.at(lo, fo, idx)
+    np.maximum.at(hi, fo, idx)
+    count = np.bincount(fo, minlength=n_polys)
+    faces_all = np.bincount(owner, minlength=n_polys)
+    faces_seen = np.bincount(owner[np.unique(face)], minlength=n_polys)
+    places = np.array(sorted(p for p in marks_at if 0 < p < n), dtype=np.int64)
+    inner = np.searchsorted(places, hi, side="right") - np.searchsorted(places, lo, side="right")
+    alpha = np.clip(fc[:, 3], 0, 1) if len(fc) else np.zeros(0)
+    stroked = (lw > 0) & (ec[:, 3] > 0)
+    ok = (
+        (count > 1)
+        & (hi - lo + 1 == count)
+        & (inner == 0)
+        & (faces_seen == faces_all)
+        & ((alpha < 1) | stroked)
+    )
+    for k in np.nonzero(ok)[0]:
+        lead[lo[k]] = hi[k]
+        skip[lo[k] + 1 : hi[k] + 1] = True
+    return lead, skip
 
 
 def _project(p: np.ndarray, m: np.ndarray) -> np.ndarray:
