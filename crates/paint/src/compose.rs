@@ -224,6 +224,7 @@ fn flat_fragment(
         object: face.object,
         original_edges,
         texture: None,
+        flap: false,
     };
     (frag, use_cover)
 }

@@ -17,6 +17,7 @@ fn frag(
         object,
         original_edges: edges.to_vec(),
         texture: None,
+        flap: false,
     }
 }
 
