@@ -245,7 +245,7 @@ pub struct RenderArgs {
     #[arg(
         long,
         value_name = "PX",
-        default_value_t = 0.5,
+        default_value_t = 1.0,
         value_parser = parse_seams,
         allow_negative_numbers = true
     )]
@@ -381,7 +381,7 @@ pub struct CheckArgs {
     #[arg(
         long,
         value_name = "PX",
-        default_value_t = 0.5,
+        default_value_t = 1.0,
         value_parser = parse_seams,
         allow_negative_numbers = true
     )]

@@ -379,14 +379,14 @@ class Scene:
         return self._s.check(against, sort=sort, arith=arith)
 
     def paint(
-        self, *, sort: str = "adaptive", arith: str = "exact", seams: float = 0.5
+        self, *, sort: str = "adaptive", arith: str = "exact", seams: float = 1.0
     ) -> list:
         """The painted polygons, back to front: ``(face, points (n, 2) in pixels with y
         down, fill (r, g, b, a), original_edges)``; seam flaps included."""
         return self._s.paint(sort=sort, arith=arith, seams=seams)
 
     def paint_with_marks(
-        self, *, sort: str = "adaptive", arith: str = "exact", seams: float = 0.5
+        self, *, sort: str = "adaptive", arith: str = "exact", seams: float = 1.0
     ) -> Tuple[list, list]:
         """``paint()``'s polygons and the visible lines, markers, labels and arrow heads
         as dicts in paint order. Each has ``before`` (paint it before that polygon; the

@@ -378,7 +378,7 @@ impl PyScene {
     /// The painted picture as polygons in paint order (back to front), in pixels (x
     /// right, y down): a list of `(face, points (n, 2), fill (r, g, b, a), original
     /// edges)`, seam flaps `seams` pixels wide included.
-    #[pyo3(signature = (sort="adaptive", arith="exact", seams=0.5))]
+    #[pyo3(signature = (sort="adaptive", arith="exact", seams=1.0))]
     fn paint<'py>(
         &self,
         py: Python<'py>,
@@ -395,7 +395,7 @@ impl PyScene {
     /// `"marker"`: `at`, `shape`, `size`, `color`, `stroke`; `index`: the input line,
     /// point or label (in the order they were added; `None` for heads); `"label"`: `at`, `offset`,
     /// `anchor`, `text`, `size`, `color`; `"head"`: `points (3, 2)`, `color`).
-    #[pyo3(signature = (sort="adaptive", arith="exact", seams=0.5))]
+    #[pyo3(signature = (sort="adaptive", arith="exact", seams=1.0))]
     fn paint_with_marks<'py>(
         &self,
         py: Python<'py>,
