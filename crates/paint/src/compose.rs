@@ -109,8 +109,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
             let fill = fill_of(f);
             let tex = face_textures.entry(f.face).or_insert_with(|| {
                 let ft = FaceTexcoords::new(scene, f.face)?;
-                let index = textures.index_of(ft.texture());
-                Some(FaceTexture::new(&ft, index, &projector))
+                Some(FaceTexture::new(&ft, &mut textures, &projector))
             });
             match tex {
                 Some(tex) => {

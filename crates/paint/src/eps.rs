@@ -230,10 +230,10 @@ impl Writer {
         // same texels. In clips of at most MAX_POINTS_PER_FILL points.
         let whole = run.iter().find_map(|f| f.src.texture).and_then(|map| {
             affine_pieces(&run[0].points, &map, f64::INFINITY)
-                .first()
-                .copied()
+                .into_iter()
+                .next()
         });
-        if let Some(whole) = whole {
+        if let Some(whole) = &whole {
             let mut start = 0;
             while start < polys.len() {
                 let mut end = start;
@@ -245,7 +245,7 @@ impl Writer {
                     end += 1;
                 }
                 let chunk = &polys[start..end];
-                if !eps_texture::write_clipped(b, chunk, &whole, k, self.height, self.d) {
+                if !eps_texture::write_clipped(b, chunk, whole, k, self.height, self.d) {
                     mean_fill(self, b, chunk);
                 }
                 start = end;
@@ -256,7 +256,7 @@ impl Writer {
             let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
             for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
-                let tri = [p.points.to_vec()];
+                let tri = [p.points.clone()];
                 if !eps_texture::write_clipped(b, &tri, &p, k, self.height, self.d) {
                     flat = true;
                     mean_fill(self, b, &tri);

@@ -199,14 +199,14 @@ impl Content {
         let source = run.iter().find_map(|f| f.src.texture);
         let whole = source.as_ref().and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
-                .first()
-                .copied()
+                .into_iter()
+                .next()
         });
-        if let Some(whole) = whole {
+        if let Some(whole) = &whole {
             if !pdf_texture::write_clipped(
                 &mut self.buf,
                 &polys,
-                &whole,
+                whole,
                 k,
                 size,
                 self.height,
@@ -219,7 +219,7 @@ impl Content {
             let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
             for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
-                let tri = [p.points.to_vec()];
+                let tri = [p.points.clone()];
                 if !pdf_texture::write_clipped(
                     &mut self.buf,
                     &tri,

@@ -132,16 +132,16 @@ impl SvgTextures {
         let source = run.iter().find_map(|f| f.src.texture);
         let whole = source.as_ref().and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
-                .first()
-                .copied()
+                .into_iter()
+                .next()
         });
-        if let Some(whole) = whole {
-            drawn += self.clipped(b, &polys, &whole, k, mean, d);
+        if let Some(whole) = &whole {
+            drawn += self.clipped(b, &polys, whole, k, mean, d);
         }
         for f in run {
             let Some(map) = &f.src.texture else { continue };
             for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
-                drawn += self.clipped(b, &[p.points.to_vec()], &p, k, mean, d);
+                drawn += self.clipped(b, std::slice::from_ref(&p.points), &p, k, mean, d);
             }
         }
         b.extend_from_slice(b"</g>\n");
