@@ -59,7 +59,7 @@ use std::io::Write;
 
 use rayon::prelude::*;
 
-use super::layers::Layer;
+use super::layers::Layers;
 use super::marks::{paint_mark, MarkSink};
 use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
@@ -223,16 +223,20 @@ impl Painter for SvgPainter {
             batch.clear();
             Ok(())
         };
-        // Translucent smooth runs wait in a layer (see `layers.rs`) while their fragments
-        // are disjoint: drawn as one group, opaque inside, blended once. Not with
-        // outlines, which are painted after each run.
-        let layer: RefCell<Layer<'p>> = RefCell::new(Layer::new());
+        // Translucent smooth runs wait to be drawn as layers (see `layers.rs`): each a
+        // group, opaque inside, blended once; other runs disjoint from them are painted
+        // first. Not with outlines, which are painted after each run.
+        let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new());
         let flush_layer = |sink: &mut Sink<'_>, stats: &mut PaintStats| -> Result<(), PaintError> {
-            if let Some((frags, (object, alpha))) = layer.borrow_mut().take() {
+            if let Some((layers, (object, alpha))) = layer.borrow_mut().take() {
+                // Runs painted before the layers (see `Layers::clear_of`) go first.
+                send(sink, stats)?;
                 enter(&mut sink.buf, object);
                 let mut g = gradients.get();
-                stats.paths +=
-                    svg_smooth_run::write(&mut sink.buf, &frags, alpha, tolerance, d, &mut g);
+                for frags in &layers {
+                    stats.paths +=
+                        svg_smooth_run::write(&mut sink.buf, frags, alpha, tolerance, d, &mut g);
+                }
                 gradients.set(g);
                 sink.maybe_flush()?;
             }
@@ -251,7 +255,9 @@ impl Painter for SvgPainter {
                 }
                 return Ok(());
             }
-            flush_layer(&mut sink, &mut stats)?;
+            if !layer.borrow().clear_of(run) {
+                flush_layer(&mut sink, &mut stats)?;
+            }
             if !smooth && texture.is_none() {
                 let mut waiting = batch.borrow_mut();
                 waiting.push(FlatRun {
