@@ -53,7 +53,7 @@ use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
 use super::pdf::push_ps_string;
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
+use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{eps_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`EpsPainter`].
@@ -255,7 +255,7 @@ impl Writer {
         for f in run {
             let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
-            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
+            for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
                 let tri = [p.points.clone()];
                 if !eps_texture::write_clipped(b, &tri, &p, k, self.height, self.d) {
                     flat = true;

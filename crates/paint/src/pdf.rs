@@ -50,7 +50,7 @@ use super::layers::Layers;
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
+use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{pdf_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PdfPainter`].
@@ -229,7 +229,7 @@ impl Content {
         for f in run {
             let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
-            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
+            for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
                 let tri = [p.points.clone()];
                 if !pdf_texture::write_clipped(
                     &mut self.buf,

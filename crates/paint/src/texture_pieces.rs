@@ -29,9 +29,10 @@ use crate::TextureMap;
 /// A triangle with page corners `P₀, P₁, P₂` gets the affine map `A` that agrees with
 /// the exact projective map `H` (page → texture) at its corners. At a point `p` the
 /// exact texture point is `H(p)`; the affine drawing puts that texture point at
-/// `A⁻¹(H(p))`. The error is the page distance `|A⁻¹(H(p)) − p|`, taken at the 12
-/// non-corner points of the barycentric grid of step ¼; a triangle above the bound is
-/// split into four at its page edge midpoints.
+/// `A⁻¹(H(p))`. The error is the page distance `|A⁻¹(H(p)) − p|`, taken at the 15
+/// points of the barycentric grid of step ¼; a triangle above the bound is split into
+/// four at its page edge midpoints. (A sliver's map is the exact map's tangent at its
+/// centroid, not the map through its corners.)
 pub const MAX_PERSPECTIVE_ERROR: f64 = 0.5;
 
 /// A fragment is cut into at most about this many pieces: past it, triangles are taken
@@ -64,6 +65,13 @@ pub(crate) const MAX_TILES_PER_PIECE: u64 = 1024;
 /// repetition's padded image covers with the same texels.
 const REACH_SLACK: f64 = 1e-9;
 
+/// The most a piece's map may stretch one direction of the texture more than another
+/// (the ratio of its singular values): beyond it the face is seen so nearly edge-on
+/// that hundreds of texels fall on each pixel across it, and viewers fail on the
+/// nearly singular map (rsvg runs out of memory), so the piece takes the mean colour
+/// as one reaching too many repetitions does.
+pub(crate) const MAX_ANISOTROPY: f64 = 1000.0;
+
 impl AffinePiece {
     /// The matrix `[a b c d e f]` that draws the unit square of texture repetition
     /// `(i, j)` (the image's first row at the top) on a page whose y axis points up and
@@ -89,11 +97,20 @@ impl AffinePiece {
     }
     /// The repetitions of the texture (unit squares of texture space, `[i, i + 1] ×
     /// [j, j + 1]`) the piece reaches, as `(i, j)` pairs; `None` when there are more
-    /// than [`MAX_TILES_PER_PIECE`] of them, or the map is degenerate.
+    /// than [`MAX_TILES_PER_PIECE`] of them, or the map is degenerate or stretches more
+    /// than [`MAX_ANISOTROPY`].
     pub(crate) fn repetitions(&self) -> Option<Vec<(f64, f64)>> {
         let [a, b, c, d, e, f] = self.st_to_page;
         let det = a * d - b * c;
         if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        // σ_max / σ_min of the linear part, from its Frobenius norm and determinant.
+        let f2 = a * a + b * b + c * c + d * d;
+        let root = (f2 * f2 - 4.0 * det * det).max(0.0).sqrt();
+        let (big, small) = (f2 + root, (4.0 * det * det) / (f2 + root));
+        let even = big <= MAX_ANISOTROPY * MAX_ANISOTROPY * small; // false for NaN
+        if !even {
             return None;
         }
         let st: Vec<[f64; 2]> = self
@@ -269,9 +286,47 @@ fn polygon_affine(poly: &[[f64; 2]], map: &TextureMap) -> Option<[f64; 6]> {
             }
         }
     }
-    let t = best.1.map(|i| poly[i]);
-    let st = corners_st(&t, map)?;
-    st_to_page(&t, &st)
+    triangle_affine(&best.1.map(|i| poly[i]), map)
+}
+
+/// Page triangles thinner than this (in pixels) take the exact map's tangent at their
+/// centroid rather than the map through their corners: across a sliver, the corners'
+/// small departures from an affine map would make a nearly singular one.
+const SLIVER_WIDTH: f64 = 1.0;
+
+/// The affine map from texture to page for page triangle `t`: through its corners'
+/// texture coordinates, or for a sliver (see [`SLIVER_WIDTH`]) the inverse of the
+/// exact map's tangent at its centroid.
+fn triangle_affine(t: &[[f64; 2]; 3], map: &TextureMap) -> Option<[f64; 6]> {
+    let (x1, y1) = (t[1][0] - t[0][0], t[1][1] - t[0][1]);
+    let (x2, y2) = (t[2][0] - t[0][0], t[2][1] - t[0][1]);
+    let long = x1.hypot(y1).max(x2.hypot(y2)).max((x2 - x1).hypot(y2 - y1));
+    let area2 = (x1 * y2 - x2 * y1).abs();
+    let wide = area2 > MIN_PIECE_WIDTH * long; // false for NaN
+    if !wide {
+        return None;
+    }
+    if area2 >= SLIVER_WIDTH * long {
+        let st = corners_st(t, map)?;
+        return st_to_page(t, &st);
+    }
+    let c = [0, 1].map(|k| (t[0][k] + t[1][k] + t[2][k]) / 3.0);
+    let h = &map.screen_to_st;
+    let q = h[2][0] * c[0] + h[2][1] * c[1] + h[2][2];
+    let st = map.st_at(c)?;
+    // d(rᵢ/q)/dx = (hᵢ₀ − stᵢ · h₂₀) / q, and likewise in y: the tangent J.
+    let j = [0, 1].map(|i| [0, 1].map(|k| (h[i][k] - st[i] * h[2][k]) / q));
+    let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    // page = c + J⁻¹ (st' − st).
+    let (a, c2) = (j[1][1] / det, -j[0][1] / det);
+    let (b, d) = (-j[1][0] / det, j[0][0] / det);
+    let e = c[0] - a * st[0] - c2 * st[1];
+    let f = c[1] - b * st[0] - d * st[1];
+    let m = [a, b, c2, d, e, f];
+    m.iter().all(|v| v.is_finite()).then_some(m)
 }
 
 /// The largest page distance between where the affine map draws the exact texture point
@@ -310,6 +365,23 @@ fn polygon_error(poly: &[[f64; 2]], map: &TextureMap, affine: &[f64; 6]) -> f64 
     worst
 }
 
+/// The affine pieces of a textured fragment (see [`affine_pieces`]) to draw over its
+/// run's underlay `whole` (the run under one affine map): none when the fragment is
+/// the run's only one and its one piece is the underlay itself (drawing it twice would
+/// only darken its anti-aliased edges, and double a viewer's work).
+pub(crate) fn pieces_over(
+    points: &[[f64; 2]],
+    map: &TextureMap,
+    whole: Option<&AffinePiece>,
+    alone: bool,
+) -> Vec<AffinePiece> {
+    let pieces = affine_pieces(points, map, MAX_PERSPECTIVE_ERROR);
+    if alone && pieces.len() == 1 && whole == pieces.first() {
+        return Vec::new();
+    }
+    pieces
+}
+
 fn split(
     t: [[f64; 2]; 3],
     map: &TextureMap,
@@ -317,10 +389,7 @@ fn split(
     depth: u32,
     out: &mut Vec<AffinePiece>,
 ) {
-    let Some(st) = corners_st(&t, map) else {
-        return;
-    };
-    let Some(affine) = st_to_page(&t, &st) else {
+    let Some(affine) = triangle_affine(&t, map) else {
         return; // degenerate on the page or in the texture: nothing to draw
     };
     if depth >= MAX_DEPTH
@@ -349,7 +418,12 @@ fn corners_st(t: &[[f64; 2]; 3], map: &TextureMap) -> Option<[[f64; 2]; 3]> {
     Some([map.st_at(t[0])?, map.st_at(t[1])?, map.st_at(t[2])?])
 }
 
-/// The affine map from texture to page taking `st[i]` to `t[i]`.
+/// The thinnest page triangle drawn, in pixels: thinner ones show nothing, and their
+/// maps are singular to viewers (rsvg refuses the whole file).
+const MIN_PIECE_WIDTH: f64 = 1e-3;
+
+/// The affine map from texture to page taking `st[i]` to `t[i]`; `None` when the
+/// texture triangle is degenerate.
 fn st_to_page(t: &[[f64; 2]; 3], st: &[[f64; 2]; 3]) -> Option<[f64; 6]> {
     let (s1, t1) = (st[1][0] - st[0][0], st[1][1] - st[0][1]);
     let (s2, t2) = (st[2][0] - st[0][0], st[2][1] - st[0][1]);
@@ -379,9 +453,6 @@ pub(crate) fn perspective_error(t: &[[f64; 2]; 3], map: &TextureMap, affine: &[f
     for i in 0..=4u32 {
         for j in 0..=(4 - i) {
             let k = 4 - i - j;
-            if i == 4 || j == 4 || k == 4 {
-                continue; // corners agree by construction
-            }
             let w = [i, j, k].map(|v| f64::from(v) / 4.0);
             let p = [0, 1].map(|q| w[0] * t[0][q] + w[1] * t[1][q] + w[2] * t[2][q]);
             let Some(st) = map.st_at(p) else {
@@ -484,6 +555,29 @@ mod tests {
         let total: f64 = pieces.iter().map(|p| area(&p.points)).sum();
         assert!((total - 600.0).abs() < 1e-9, "{total}");
         assert!(worst_error(&pieces, &map) <= MAX_PERSPECTIVE_ERROR * 1.05);
+    }
+
+    #[test]
+    fn a_piece_with_no_width_draws_nothing() {
+        let map = grazing();
+        let flat = [[0.0, 0.0], [100.0, 50.0], [200.0, 100.0 + 1e-9]];
+        assert!(affine_pieces(&flat, &map, MAX_PERSPECTIVE_ERROR).is_empty());
+        let doubled = [[0.0, 0.0], [100.0, 50.0], [100.0, 50.0], [0.0, 10.0]];
+        for p in affine_pieces(&doubled, &map, MAX_PERSPECTIVE_ERROR) {
+            let [a, b, c, d, ..] = p.st_to_page;
+            assert!((a * d - b * c).abs() > 1e-3, "{p:?}");
+        }
+    }
+
+    #[test]
+    fn a_nearly_singular_map_reaches_no_repetition() {
+        let piece = AffinePiece {
+            points: vec![[172.0, 284.13], [171.34, 283.99], [171.59, 284.07]],
+            st_to_page: [
+                46.999771, 14.680428, -13.354601, -4.179825, 141.9513, 274.8181,
+            ],
+        };
+        assert_eq!(piece.repetitions(), None);
     }
 
     #[test]
