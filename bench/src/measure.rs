@@ -61,6 +61,7 @@ pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style)
             object: face.object,
             original_edges,
             texture: None,
+            flap: false,
         });
     }
     Picture {

@@ -250,7 +250,7 @@ pub struct RenderArgs {
     #[arg(
         long,
         value_name = "PX",
-        default_value_t = 0.5,
+        default_value_t = limn::DEFAULT_SEAMS,
         value_parser = parse_seams,
         allow_negative_numbers = true
     )]
@@ -377,7 +377,7 @@ pub struct CheckArgs {
     #[arg(
         long,
         value_name = "PX",
-        default_value_t = 0.5,
+        default_value_t = limn::DEFAULT_SEAMS,
         value_parser = parse_seams,
         allow_negative_numbers = true
     )]

@@ -1,5 +1,5 @@
 //! `limn check` compares the faces of the picture `render` draws, seam flaps included
-//! (`--seams PX`, 0.5 by default), and no flap changes its result.
+//! (`--seams PX`, 1 by default), and no flap changes its result.
 
 mod common;
 
@@ -70,5 +70,5 @@ fn seam_flaps_change_no_pixel_limn_check_compares() {
     args.extend(view);
     let run = limn(d.path(), &args);
     let v: serde_json::Value = serde_json::from_slice(&run.stdout).expect("JSON");
-    assert_eq!(v["seams"], 0.5, "{v}");
+    assert_eq!(v["seams"], 1.0, "{v}");
 }

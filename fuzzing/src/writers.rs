@@ -193,6 +193,7 @@ pub fn picture(case: &Case) -> Picture {
                     [m[6].value(), m[7].value(), m[8].value()],
                 ],
             }),
+            flap: false,
         })
         .collect();
     if p.has_textures() {

@@ -373,7 +373,7 @@ class Scene:
         hidden: Optional[str] = None,
         fill: Optional[str] = None,
         crease: Optional[float] = None,
-        seams: float = 0.5,
+        seams: float = 1.0,
         shading: Optional[str] = None,
         shading_tolerance: float = 1.0 / 255.0,
         method: str = "painter",
@@ -452,7 +452,7 @@ class Scene:
         *,
         sort: Optional[str] = None,
         arith: Optional[str] = None,
-        seams: float = 0.5,
+        seams: float = 1.0,
         diff: Any = None,
         stats: Any = None,
         threads: Optional[int] = None,
@@ -474,14 +474,14 @@ class Scene:
         )
 
     def paint(
-        self, *, sort: Optional[str] = None, arith: Optional[str] = None, seams: float = 0.5
+        self, *, sort: Optional[str] = None, arith: Optional[str] = None, seams: float = 1.0
     ) -> list:
         """The painted polygons, back to front: ``(face, points (n, 2) in pixels with y
         down, fill (r, g, b, a), original_edges)``; seam flaps included."""
         return self._s.paint(sort=sort, arith=arith, seams=seams)
 
     def paint_with_marks(
-        self, *, sort: Optional[str] = None, arith: Optional[str] = None, seams: float = 0.5
+        self, *, sort: Optional[str] = None, arith: Optional[str] = None, seams: float = 1.0
     ) -> Tuple[list, list]:
         """``paint()``'s polygons and the visible lines, markers, labels and arrow heads
         as dicts in paint order. Each has ``before`` (paint it before that polygon; the

@@ -124,7 +124,7 @@ def test_check_compares_the_rendered_picture(cube: Path, tmp_path: Path) -> None
     report = s.check("raycast", diff=tmp_path / "d.png")
     assert report["agrees"] and report["failures"] == []
     assert report["mismatches_outside_band"] == 0
-    assert report["seams"] == 0.5
+    assert report["seams"] == 1.0
     assert (tmp_path / "d.png").stat().st_size > 0
     r = command("check", str(cube), "-q")
     assert r.returncode == 0, r.stderr

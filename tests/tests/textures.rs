@@ -421,10 +421,13 @@ fn checker_corners_land_at_their_projected_points_at_a_grazing_angle() {
     assert!((x - p.x).hypot(y - p.y) > 5.0);
 }
 
-fn inside(t: &[[f64; 2]; 3], p: [f64; 2]) -> bool {
+/// Whether `p` lies in the convex polygon `t`.
+fn inside(t: &[[f64; 2]], p: [f64; 2]) -> bool {
     let side =
         |a: [f64; 2], b: [f64; 2]| (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-    let s = [side(t[0], t[1]), side(t[1], t[2]), side(t[2], t[0])];
+    let s: Vec<f64> = (0..t.len())
+        .map(|i| side(t[i], t[(i + 1) % t.len()]))
+        .collect();
     s.iter().all(|&v| v >= 0.0) || s.iter().all(|&v| v <= 0.0)
 }
 

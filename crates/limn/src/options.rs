@@ -10,8 +10,10 @@ use limn_scene::Shading;
 use crate::error::Error;
 use crate::values;
 
-/// The default seam width in pixels (`--seams`).
-pub const DEFAULT_SEAMS: f64 = 0.5;
+/// The default seam width in pixels (`--seams`): 1 px (a pixel the shared edge crosses
+/// reaches up to √2 px beyond it: flaps of 0.5 px left 0.5 % of a shaded sphere's pixels
+/// 12 levels or more too light in Chromium, flaps of 1 px 0.2 %, as wider ones).
+pub const DEFAULT_SEAMS: f64 = 1.0;
 /// The default shading tolerance per colour channel (`--shading-tolerance`): one 8-bit
 /// step.
 pub const DEFAULT_SHADING_TOLERANCE: f64 = 1.0 / 255.0;

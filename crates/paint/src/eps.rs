@@ -53,7 +53,7 @@ use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
 use super::pdf::push_ps_string;
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
+use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{eps_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`EpsPainter`].
@@ -230,10 +230,10 @@ impl Writer {
         // same texels. In clips of at most MAX_POINTS_PER_FILL points.
         let whole = run.iter().find_map(|f| f.src.texture).and_then(|map| {
             affine_pieces(&run[0].points, &map, f64::INFINITY)
-                .first()
-                .copied()
+                .into_iter()
+                .next()
         });
-        if let Some(whole) = whole {
+        if let Some(whole) = &whole {
             let mut start = 0;
             while start < polys.len() {
                 let mut end = start;
@@ -245,7 +245,7 @@ impl Writer {
                     end += 1;
                 }
                 let chunk = &polys[start..end];
-                if !eps_texture::write_clipped(b, chunk, &whole, k, self.height, self.d) {
+                if !eps_texture::write_clipped(b, chunk, whole, k, self.height, self.d) {
                     mean_fill(self, b, chunk);
                 }
                 start = end;
@@ -255,8 +255,8 @@ impl Writer {
         for f in run {
             let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
-            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
-                let tri = [p.points.to_vec()];
+            for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
+                let tri = [p.points.clone()];
                 if !eps_texture::write_clipped(b, &tri, &p, k, self.height, self.d) {
                     flat = true;
                     mean_fill(self, b, &tri);

@@ -132,11 +132,11 @@ mod tests {
     fn a_piece_is_clipped_and_drawn_once_per_repetition() {
         // Texture space [0, 2] × [0, 1] onto a page triangle: two repetitions.
         let piece = AffinePiece {
-            points: [[0.0, 0.0], [20.0, 0.0], [0.0, 10.0]],
+            points: vec![[0.0, 0.0], [20.0, 0.0], [0.0, 10.0]],
             st_to_page: [10.0, 0.0, 0.0, 10.0, 0.0, 0.0],
         };
         let mut b = Vec::new();
-        let tri = [piece.points.to_vec()];
+        let tri = [piece.points.clone()];
         assert!(write_clipped(&mut b, &tri, &piece, 0, 10.0, 2));
         let s = String::from_utf8(b).unwrap();
         assert!(s.starts_with("gsave 0 10 m 20 10 l 0 0 l h clip newpath\n"));
@@ -145,7 +145,7 @@ mod tests {
         // A degenerate map draws nothing.
         let flat = AffinePiece {
             st_to_page: [0.0; 6],
-            ..piece
+            ..piece.clone()
         };
         let mut b = Vec::new();
         assert!(!write_clipped(&mut b, &tri, &flat, 0, 10.0, 2));

@@ -24,6 +24,13 @@ pub struct PaintFragment {
     /// (RGB) times the texture's colour there; opacity stays `fill[3]`. Textured
     /// fragments have no vertex colours.
     pub texture: Option<TextureMap>,
+    /// Whether this is a seam flap of the fragment of the same face painted before it
+    /// (see [`crate::seam_flaps`]): it lies inside a fragment painted later, so it
+    /// changes no pixel once that one is painted and only fills the anti-aliased pixels
+    /// of the shared edge. A flap carries its fragment's paint (a smooth fragment's flap
+    /// has vertex colours that run along the shared edge as the fragment's do), so a
+    /// writer may paint it in one fill with its fragment.
+    pub flap: bool,
 }
 
 /// How a textured fragment maps the page onto its texture: a projective map from pixel
@@ -72,6 +79,7 @@ impl PaintFragment {
             object: 0,
             original_edges,
             texture: None,
+            flap: false,
         }
     }
 }

@@ -13,7 +13,14 @@
 //! - Gouraud fragments (with vertex colours): each run becomes one type-4 free-form
 //!   triangle-mesh shading (`/Sh0 sh`, `/Sh1 sh`, …) holding every fragment
 //!   fan-triangulated from its first corner; coordinates are 32-bit over the run's bounding
-//!   box rounded outwards to whole points, colours 16-bit per channel.
+//!   box rounded outwards to whole points, colours 16-bit per channel. Translucent
+//!   runs of one object and opacity are put into layers of runs shown disjoint (see
+//!   `layers.rs`; runs disjoint from them painted first; not with outlines); a layer
+//!   is one shading, filling its fragments' path opaque inside a
+//!   transparency group (a form XObject `/FmN` with `/Group << /S /Transparency >>`)
+//!   drawn with the opacity (`/a500 gs /Fm0 Do`): poppler paints a shading with `sh`
+//!   opaque whatever the fill opacity, and ghostscript blends the shared edges of a
+//!   mesh's triangles twice; a group is blended once.
 //! - Textured fragments: each texture is one image XObject `/ImK` (RGB, 8 bits,
 //!   Flate-compressed, `/Interpolate true`). A fragment is drawn inside `q … Q` as
 //!   affine triangles within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
@@ -39,10 +46,11 @@ use std::io::Write;
 
 use pdf_writer::{Name, Pdf, Rect, Ref};
 
+use super::layers::Layers;
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::texture_pieces::{affine_pieces, MAX_PERSPECTIVE_ERROR};
+use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{pdf_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PdfPainter`].
@@ -91,6 +99,9 @@ struct Mesh {
     data: Vec<u8>,
     /// x0 x1 y0 y1 of the Decode array.
     decode: [f64; 4],
+    /// `None` when painted with `sh`; else painted inside a transparency group
+    /// (`/FmN Do`) as the fill (a shading pattern) of this path: the fragments.
+    group: Option<Vec<u8>>,
 }
 
 /// The content stream and the resources it uses.
@@ -199,14 +210,14 @@ impl Content {
         let source = run.iter().find_map(|f| f.src.texture);
         let whole = source.as_ref().and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
-                .first()
-                .copied()
+                .into_iter()
+                .next()
         });
-        if let Some(whole) = whole {
+        if let Some(whole) = &whole {
             if !pdf_texture::write_clipped(
                 &mut self.buf,
                 &polys,
-                &whole,
+                whole,
                 k,
                 size,
                 self.height,
@@ -218,8 +229,8 @@ impl Content {
         for f in run {
             let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
-            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
-                let tri = [p.points.to_vec()];
+            for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
+                let tri = [p.points.clone()];
                 if !pdf_texture::write_clipped(
                     &mut self.buf,
                     &tri,
@@ -271,7 +282,9 @@ impl Content {
         self.stroke = Some((rgb, width.to_bits()));
     }
 
-    fn gouraud_run(&mut self, run: &[Frag<'_>]) {
+    /// Paints the run as one type-4 shading: with `sh`, or inside a transparency group
+    /// when `group`.
+    fn gouraud_run(&mut self, run: &[Frag<'_>], group: bool) {
         let mut lo = [f64::INFINITY; 2];
         let mut hi = [f64::NEG_INFINITY; 2];
         for f in run {
@@ -306,12 +319,34 @@ impl Content {
                 }
             }
         }
-        self.buf.extend_from_slice(b"/Sh");
+        let (name, op): (&[u8], &[u8]) = if group {
+            (b"/Fm", b" Do\n")
+        } else {
+            (b"/Sh", b" sh\n")
+        };
+        self.buf.extend_from_slice(name);
         push_uint(&mut self.buf, self.meshes.len() as u64);
-        self.buf.extend_from_slice(b" sh\n");
+        self.buf.extend_from_slice(op);
+        // In a group, the shading fills the fragments' path: viewers that paint a mesh
+        // without anti-aliasing (poppler, ghostscript) then give its edges the path's
+        // partial coverage, and two layers meeting along an edge do not both paint
+        // its pixels in full.
+        let group = group.then(|| {
+            let main = std::mem::take(&mut self.buf);
+            for f in run {
+                for (k, p) in f.points.iter().enumerate() {
+                    self.point(*p);
+                    self.buf
+                        .extend_from_slice(if k == 0 { b" m " } else { b" l " });
+                }
+                self.buf.extend_from_slice(b"h\n");
+            }
+            std::mem::replace(&mut self.buf, main)
+        });
         self.meshes.push(Mesh {
             data,
             decode: [lo[0], hi[0], lo[1], hi[1]],
+            group,
         });
     }
 
@@ -338,7 +373,11 @@ impl Content {
 }
 
 impl Painter for PdfPainter {
-    fn paint(&self, picture: &Picture, out: &mut dyn Write) -> Result<PaintStats, PaintError> {
+    fn paint<'p>(
+        &self,
+        picture: &'p Picture,
+        out: &mut dyn Write,
+    ) -> Result<PaintStats, PaintError> {
         let checked = check(picture)?;
         let (w, h) = (f64::from(picture.width), f64::from(picture.height));
         let mut c = Content {
@@ -421,8 +460,34 @@ impl Painter for PdfPainter {
         };
         let c = RefCell::new(c);
         let stats = RefCell::new(stats);
-        let on_run = |run: &[Frag<'_>], style: &Style| {
+        // Translucent Gouraud runs wait to be drawn as layers (see `layers.rs`), each one
+        // shading in a transparency group; other runs disjoint from them are painted
+        // first.
+        let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new());
+        let flush_layer = |c: &mut Content, stats: &mut PaintStats| {
+            if let Some((layers, (_, a))) = layer.borrow_mut().take() {
+                c.fill_alpha(a);
+                for frags in &layers {
+                    c.gouraud_run(frags, true);
+                    stats.paths += 1;
+                }
+            }
+        };
+        let on_run = |run: &[Frag<'p>], style: &Style| {
             let mut c = c.borrow_mut();
+            if let Style::Gouraud(a) = *style {
+                if a < 1000 && checked.outline.is_none() {
+                    let key = (run[0].src.object, a);
+                    if !layer.borrow_mut().join(key, run) {
+                        flush_layer(&mut c, &mut stats.borrow_mut());
+                        layer.borrow_mut().join(key, run);
+                    }
+                    return Ok(());
+                }
+            }
+            if !layer.borrow().clear_of(run) {
+                flush_layer(&mut c, &mut stats.borrow_mut());
+            }
             match *style {
                 Style::Flat(rgb, a) => {
                     c.fill_alpha(a);
@@ -430,7 +495,7 @@ impl Painter for PdfPainter {
                 }
                 Style::Gouraud(a) => {
                     c.fill_alpha(a);
-                    c.gouraud_run(run);
+                    c.gouraud_run(run, false);
                 }
                 Style::Textured(k, rgb, a) => {
                     c.fill_alpha(a);
@@ -448,11 +513,13 @@ impl Painter for PdfPainter {
         };
         let on_mark = |m: &super::Mark| {
             let mut c = c.borrow_mut();
+            flush_layer(&mut c, &mut stats.borrow_mut());
             paint_mark(m, &checked.guard, &mut *c, &mut stats.borrow_mut())
         };
         let counts = walk_with_marks(picture, &checked.guard, key, on_run, on_mark)?;
-        let c = c.into_inner();
+        let mut c = c.into_inner();
         let mut stats = stats.into_inner();
+        flush_layer(&mut c, &mut stats);
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;
 
@@ -496,6 +563,11 @@ impl Content {
         let shadings: Vec<(Vec<u8>, Ref)> = (0..self.meshes.len())
             .map(|i| (format!("Sh{i}").into_bytes(), alloc()))
             .collect();
+        // The transparency groups: name, form, shading.
+        let forms: Vec<(Ref, Ref, usize)> = (0..self.meshes.len())
+            .filter(|&i| self.meshes[i].group.is_some())
+            .map(|i| (alloc(), alloc(), i))
+            .collect();
         let font = self.font.then(&mut alloc);
         let images: Vec<(Vec<u8>, Ref)> = (0..self.images.len())
             .map(|i| (format!("Im{i}").into_bytes(), alloc()))
@@ -519,10 +591,13 @@ impl Content {
                     dict.pair(Name(b"Mul"), r);
                 }
             }
-            if !images.is_empty() {
+            if !images.is_empty() || !forms.is_empty() {
                 let mut dict = res.x_objects();
                 for (name, r) in &images {
                     dict.pair(Name(name), *r);
+                }
+                for (r, _, i) in &forms {
+                    dict.pair(Name(format!("Fm{i}").as_bytes()), *r);
                 }
             }
             if !shadings.is_empty() {
@@ -571,6 +646,19 @@ impl Content {
             } else {
                 gs.non_stroking_alpha(a);
             }
+        }
+        for (r, pattern, i) in &forms {
+            // The form fills its path with its shading, opaque: a group starts with
+            // opacity 1.
+            let mut content = b"/Pattern cs /P scn\n".to_vec();
+            content.extend_from_slice(meshes[*i].group.as_deref().unwrap_or_default());
+            content.extend_from_slice(b"f\n");
+            let mut form = pdf.form_xobject(*r, &content);
+            form.bbox(Rect::new(0.0, 0.0, w as f32, h as f32));
+            form.group().transparency();
+            form.resources().patterns().pair(Name(b"P"), *pattern);
+            drop(form);
+            pdf.shading_pattern(*pattern).shading_ref(shadings[*i].1);
         }
         for ((_, r), mesh) in shadings.iter().zip(&meshes) {
             let mut s = pdf.stream_shading(*r, &mesh.data);

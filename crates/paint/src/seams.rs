@@ -15,7 +15,7 @@ use rayon::prelude::*;
 use crate::PaintFragment;
 
 /// The bits of an edge's end points, smaller end first (an undirected edge key).
-type EdgeKey = ([u64; 2], [u64; 2]);
+pub(crate) type EdgeKey = ([u64; 2], [u64; 2]);
 
 /// A hash of an edge key (a fixed mixing of its bits: the same on every run).
 fn key_hash(k: &EdgeKey) -> u64 {
@@ -27,7 +27,7 @@ fn key_hash(k: &EdgeKey) -> u64 {
     h ^ (h >> 29)
 }
 
-fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
+pub(crate) fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
     let (ka, kb) = (a.map(f64::to_bits), b.map(f64::to_bits));
     if ka <= kb {
         (ka, kb)
@@ -40,8 +40,9 @@ fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
 /// along an edge both edge pixels are only partly covered and the background shows
 /// through as a hairline. For every edge an opaque fragment shares (end points equal)
 /// with an opaque fragment of another face painted *later*, a flap in the first
-/// fragment's colour (for a smooth fragment: the mean of the edge's end colours, flat)
-/// is painted right after it: the part of the later fragment within
+/// fragment's paint (for a smooth fragment: vertex colours that run along the edge as
+/// the fragment's do, constant across it; textured: the same texture map) is painted
+/// right after it: the part of the later fragment within
 /// `width` pixels of the shared edge (or, where that part cannot be shown to lie inside
 /// the later fragment, the later fragment itself). The later fragment covers its flaps
 /// entirely, decided exactly, so the picture stays exactly the same at every point (the
@@ -308,26 +309,30 @@ fn flaps_after(
         let Some(points) = flap(&fragments[j].points, a, b, width) else {
             continue;
         };
-        // A smooth fragment's flap takes the colour half-way along the edge.
-        let fill = match &f.vertex_colors {
+        // A smooth fragment's flap takes the colours along the edge (its flat fill, the
+        // colour half-way, stands for them where one colour is drawn).
+        let (fill, vertex_colors) = match &f.vertex_colors {
             Some(cs) if cs.len() == n => {
                 let (ca, cb) = (cs[e], cs[(e + 1) % n]);
-                [0, 1, 2, 3].map(|k| {
+                let fill = [0, 1, 2, 3].map(|k| {
                     if k == 3 {
                         f.fill[3]
                     } else {
                         0.5 * (ca[k] + cb[k])
                     }
-                })
+                });
+                let colors = points.iter().map(|&p| along(a, b, ca, cb, p)).collect();
+                (fill, Some(colors))
             }
-            _ => f.fill,
+            _ => (f.fill, None),
         };
         out.push((
             i,
             PaintFragment {
                 points,
                 fill,
-                vertex_colors: None,
+                vertex_colors,
+                flap: true,
                 // A textured flap goes on with the fragment's texture, under the same
                 // map.
                 texture: f.texture,
@@ -338,6 +343,20 @@ fn flaps_after(
             },
         ));
     }
+}
+
+/// The colour at `p` of the ramp from `ca` at `a` to `cb` at `b`: the colours of edge
+/// `a`–`b`, carried across it unchanged (`p` projected onto the edge, clamped to it).
+fn along(a: [f64; 2], b: [f64; 2], ca: [f64; 4], cb: [f64; 4], p: [f64; 2]) -> [f64; 4] {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let dd = d[0] * d[0] + d[1] * d[1];
+    let t = ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / dd;
+    let t = if t.is_finite() {
+        t.clamp(0.0, 1.0)
+    } else {
+        0.5
+    };
+    [0, 1, 2, 3].map(|k| ca[k] + t * (cb[k] - ca[k]))
 }
 
 fn opaque(f: &PaintFragment) -> bool {
@@ -473,7 +492,12 @@ const EDGES_PER_TASK: usize = 8192;
 /// of `poly` next to `a` and `b`); if not, the flap is all of `poly` (the same polygon,
 /// painted again later: no pixel it covers differs). `None` when `poly` has no edge
 /// `a`–`b` or no area.
-fn flap(poly: &[[f64; 2]], a: [f64; 2], b: [f64; 2], width: f64) -> Option<Vec<[f64; 2]>> {
+pub(crate) fn flap(
+    poly: &[[f64; 2]],
+    a: [f64; 2],
+    b: [f64; 2],
+    width: f64,
+) -> Option<Vec<[f64; 2]>> {
     let m = poly.len();
     // The edge as `poly` runs along it, u → v.
     let k = (0..m).find(|&k| {
@@ -774,20 +798,24 @@ mod tests {
                     continue;
                 };
                 if let Some(flap) = flap(&fragments[j].points, a, b, width) {
-                    let fill = match &f.vertex_colors {
+                    let (fill, colors) = match &f.vertex_colors {
                         Some(cs) if cs.len() == n => {
                             let (ca, cb) = (cs[e], cs[(e + 1) % n]);
-                            [0, 1, 2, 3].map(|k| {
+                            let fill = [0, 1, 2, 3].map(|k| {
                                 if k == 3 {
                                     f.fill[3]
                                 } else {
                                     0.5 * (ca[k] + cb[k])
                                 }
-                            })
+                            });
+                            let colors = flap.iter().map(|&p| along(a, b, ca, cb, p)).collect();
+                            (fill, Some(colors))
                         }
-                        _ => f.fill,
+                        _ => (f.fill, None),
                     };
                     let mut p = PaintFragment::new(flap, fill);
+                    p.vertex_colors = colors;
+                    p.flap = true;
                     p.texture = f.texture;
                     p.face = f.face;
                     p.object = f.object;

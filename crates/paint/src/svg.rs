@@ -22,9 +22,14 @@
 //!
 //! SVG has no mesh gradient: a fragment with vertex colours is drawn as linear
 //! gradients and flat pieces within [`SvgOptions::tolerance`] of its linear
-//! interpolation (see `svg_smooth.rs`). An opaque one is first filled whole with the
-//! mean of its colours, so the hairlines viewers leave between its pieces show that
-//! colour, not what lies behind (when it is drawn as two pieces or more). Each gradient is a `<linearGradient id="sN"
+//! interpolation (see `svg_smooth.rs`). A face's run of such fragments and its seam
+//! flaps is drawn without seams (see `svg_smooth_run.rs`): each fragment is first filled
+//! whole in one paint (its gradient when it is one piece) with its seam flaps and its
+//! flaps into the later fragments of the run as subpaths, then the pieces of those drawn
+//! as two or more, each with its flaps into later pieces. Consecutive translucent smooth
+//! runs of one object and opacity whose fragments are shown disjoint (`layers.rs`; not
+//! with outlines) are drawn so, opaque, inside one `<g opacity="a">`: blended once, with
+//! no seams inside. Each gradient is a `<linearGradient id="sN"
 //! gradientUnits="userSpaceOnUse">` written just before the path that uses it.
 //!
 //! **Textures**: each texture is embedded once in `<defs>`, as a PNG `data:` URI in an
@@ -54,12 +59,15 @@ use std::io::Write;
 
 use rayon::prelude::*;
 
+use super::layers::Layers;
 use super::marks::{paint_mark, MarkSink};
 use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::{svg_smooth, svg_texture, Label, Outline, PaintError, PaintStats, Painter, Picture};
+use super::{
+    svg_smooth_run, svg_texture, Label, Outline, PaintError, PaintStats, Painter, Picture,
+};
 
 /// Options for [`SvgPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -96,13 +104,15 @@ impl SvgPainter {
     }
 }
 
-/// What makes two fragments' fills identical in SVG (smooth fragments: the mean
-/// colour of the cover painted under their pieces; textured ones: the texture too).
+/// What makes two fragments' fills identical in SVG (textured ones: the texture too).
+/// Smooth fragments of one face (and their seam flaps) are one run whatever their
+/// colours: the run is drawn as a whole (see `svg_smooth_run.rs`).
 fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool, Option<u32>) {
+    let smooth = f.colors.is_some() && f.src.texture.is_none();
     (
-        rgb_u8(f.flat_rgb()),
+        if smooth { [0; 3] } else { rgb_u8(f.flat_rgb()) },
         alpha_milli(f.alpha()),
-        f.colors.is_some(),
+        smooth,
         f.src.texture.map(|t| t.texture),
     )
 }
@@ -213,10 +223,41 @@ impl Painter for SvgPainter {
             batch.clear();
             Ok(())
         };
+        // Translucent smooth runs wait to be drawn as layers (see `layers.rs`): each a
+        // group, opaque inside, blended once; other runs disjoint from them are painted
+        // first. Not with outlines, which are painted after each run.
+        let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new());
+        let flush_layer = |sink: &mut Sink<'_>, stats: &mut PaintStats| -> Result<(), PaintError> {
+            if let Some((layers, (object, alpha))) = layer.borrow_mut().take() {
+                // Runs painted before the layers (see `Layers::clear_of`) go first.
+                send(sink, stats)?;
+                enter(&mut sink.buf, object);
+                let mut g = gradients.get();
+                for frags in &layers {
+                    stats.paths +=
+                        svg_smooth_run::write(&mut sink.buf, frags, alpha, tolerance, d, &mut g);
+                }
+                gradients.set(g);
+                sink.maybe_flush()?;
+            }
+            Ok(())
+        };
         let on_run = |run: &[Frag<'p>], key: &([u8; 3], u16, bool, Option<u32>)| {
             let (rgb, alpha, smooth, texture) = *key;
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
+            if smooth && alpha < 1000 && checked.outline.is_none() {
+                send(&mut sink, &mut stats)?;
+                let key = (run[0].src.object, alpha);
+                if !layer.borrow_mut().join(key, run) {
+                    flush_layer(&mut sink, &mut stats)?;
+                    layer.borrow_mut().join(key, run);
+                }
+                return Ok(());
+            }
+            if !layer.borrow().clear_of(run) {
+                flush_layer(&mut sink, &mut stats)?;
+            }
             if !smooth && texture.is_none() {
                 let mut waiting = batch.borrow_mut();
                 waiting.push(FlatRun {
@@ -237,34 +278,14 @@ impl Painter for SvgPainter {
                 stats.paths += textured
                     .borrow_mut()
                     .run(b, run, k, alpha, means[k as usize], d);
-            }
-            // Smooth runs: their pieces, and whether a cover must hide the hairlines
-            // between them (only when there are two or more).
-            let pieces: Vec<Vec<svg_smooth::Piece>> = if smooth {
-                run.iter()
-                    .filter_map(|f| {
-                        f.colors
-                            .as_ref()
-                            .map(|cs| svg_smooth::pieces(&f.points, cs, tolerance))
-                    })
-                    .collect()
             } else {
-                Vec::new()
-            };
-            let cover = pieces.iter().map(Vec::len).sum::<usize>() > 1;
-            let fill = texture.is_none() && (!smooth || (alpha >= 1000 && cover));
+                let mut g = gradients.get();
+                stats.paths += svg_smooth_run::write(b, run, alpha, tolerance, d, &mut g);
+                gradients.set(g);
+            }
             let outlined = checked
                 .outline
                 .filter(|_| run.iter().any(Frag::has_outline));
-            if fill {
-                write_fill(b, run, rgb, alpha, seams > 0.0, d);
-                stats.paths += 1;
-            }
-            let mut g = gradients.get();
-            for piece in &pieces {
-                stats.paths += write_pieces(b, piece, alpha, d, &mut g);
-            }
-            gradients.set(g);
             if let Some(o) = outlined {
                 write_outline(b, run, o, seams > 0.0, d);
                 stats.strokes += 1;
@@ -274,6 +295,7 @@ impl Painter for SvgPainter {
         };
         let on_mark = |m: &super::Mark| {
             let mut sink = sink.borrow_mut();
+            flush_layer(&mut sink, &mut stats.borrow_mut())?;
             send(&mut sink, &mut stats.borrow_mut())?;
             enter(&mut sink.buf, m.object);
             let mut w = SvgMarks {
@@ -287,6 +309,7 @@ impl Painter for SvgPainter {
         let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
         let mut sink = sink.into_inner();
         let mut stats = stats.into_inner();
+        flush_layer(&mut sink, &mut stats)?;
         send(&mut sink, &mut stats)?;
         stats.approximated += textured.into_inner().approximated;
         if group.get().is_some() {
@@ -371,79 +394,6 @@ fn write_outline(b: &mut Vec<u8>, run: &[Frag<'_>], o: Outline, seams: bool, d: 
         opacity_attr(b, b"stroke-opacity", alpha_milli(o.color[3]));
     }
     b.extend_from_slice(b"/>\n");
-}
-
-/// Writes smooth-fill pieces: flat ones grouped by written colour into one path each
-/// (they tile the fragment, so the order among them does not matter), then each
-/// gradient before its own path. Returns the number of paths.
-fn write_pieces(
-    b: &mut Vec<u8>,
-    pieces: &[svg_smooth::Piece],
-    alpha: u16,
-    d: u8,
-    gradients: &mut u64,
-) -> usize {
-    use std::collections::BTreeMap;
-    let mut flat: BTreeMap<[u8; 3], Vec<[[f64; 2]; 3]>> = BTreeMap::new();
-    let mut paths = 0;
-    let tri_path = |b: &mut Vec<u8>, tri: &[[f64; 2]; 3]| {
-        b.push(b'M');
-        push_point(b, tri[0], d);
-        b.push(b'L');
-        push_point(b, tri[1], d);
-        b.push(b' ');
-        push_point(b, tri[2], d);
-        b.push(b'Z');
-    };
-    for p in pieces {
-        match *p {
-            svg_smooth::Piece::Flat { tri, rgb } => flat.entry(rgb_u8(rgb)).or_default().push(tri),
-            svg_smooth::Piece::Gradient {
-                tri,
-                from,
-                to,
-                c0,
-                c1,
-            } => {
-                b.extend_from_slice(b"<linearGradient id=\"s");
-                push_uint(b, *gradients);
-                b.extend_from_slice(b"\" gradientUnits=\"userSpaceOnUse\" x1=\"");
-                push_num(b, from[0], d + 1);
-                b.extend_from_slice(b"\" y1=\"");
-                push_num(b, from[1], d + 1);
-                b.extend_from_slice(b"\" x2=\"");
-                push_num(b, to[0], d + 1);
-                b.extend_from_slice(b"\" y2=\"");
-                push_num(b, to[1], d + 1);
-                b.extend_from_slice(b"\"><stop stop-color=\"");
-                push_hex_color(b, rgb_u8(c0));
-                b.extend_from_slice(b"\"/><stop offset=\"1\" stop-color=\"");
-                push_hex_color(b, rgb_u8(c1));
-                b.extend_from_slice(b"\"/></linearGradient>\n<path d=\"");
-                tri_path(b, &tri);
-                b.extend_from_slice(b"\" fill=\"url(#s");
-                push_uint(b, *gradients);
-                b.extend_from_slice(b")\"");
-                opacity_attr(b, b"fill-opacity", alpha);
-                b.extend_from_slice(b"/>\n");
-                *gradients += 1;
-                paths += 1;
-            }
-        }
-    }
-    for (rgb, tris) in &flat {
-        b.extend_from_slice(b"<path d=\"");
-        for t in tris {
-            tri_path(b, t);
-        }
-        b.extend_from_slice(b"\" fill=\"");
-        push_hex_color(b, *rgb);
-        b.push(b'"');
-        opacity_attr(b, b"fill-opacity", alpha);
-        b.extend_from_slice(b"/>\n");
-        paths += 1;
-    }
-    paths
 }
 
 /// ` name="0.5"` when the opacity is below 1.

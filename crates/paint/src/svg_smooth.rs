@@ -63,6 +63,21 @@ pub(crate) fn pieces(points: &[[f64; 2]], colors: &[[f64; 4]], tolerance: f64) -
     out
 }
 
+/// One paint for a whole fragment, exact when its colours allow one gradient: the
+/// gradient of its first three corners along the line through their two most different
+/// colours (the third colour projected onto it), else the mean of its corners flat.
+/// The piece's triangle is the first three corners.
+pub(crate) fn fit(points: &[[f64; 2]], colors: &[[f64; 4]]) -> Piece {
+    let rgb = |i: usize| [0, 1, 2].map(|k| colors[i][k].clamp(0.0, 1.0));
+    let tri = [points[0], points[1], points[2]];
+    let c = [rgb(0), rgb(1), rgb(2)];
+    gradient(tri, c, f64::INFINITY).unwrap_or_else(|| {
+        let n = colors.len() as f64;
+        let mean = [0, 1, 2].map(|k| colors.iter().map(|c| c[k].clamp(0.0, 1.0)).sum::<f64>() / n);
+        Piece::Flat { tri, rgb: mean }
+    })
+}
+
 fn split(tri: [[f64; 2]; 3], c: [[f64; 3]; 3], budget: f64, depth: u32, out: &mut Vec<Piece>) {
     let mean = [0, 1, 2].map(|k| (c[0][k] + c[1][k] + c[2][k]) / 3.0);
     let off = |a: [f64; 3], b: [f64; 3]| (0..3).map(|k| (a[k] - b[k]).abs()).fold(0.0, f64::max);

@@ -4,7 +4,7 @@ use std::collections::HashMap;
 
 use super::number::{push_hex_color, push_num, push_uint, rgb_u8};
 use super::runs::{reversals, Frag};
-use super::texture_pieces::{affine_pieces, AffinePiece, MAX_PERSPECTIVE_ERROR};
+use super::texture_pieces::{affine_pieces, pieces_over, AffinePiece};
 use super::{texture_images, PaintError, Texture};
 
 /// Ids handed out while writing: clip paths and colour filters.
@@ -132,16 +132,16 @@ impl SvgTextures {
         let source = run.iter().find_map(|f| f.src.texture);
         let whole = source.as_ref().and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
-                .first()
-                .copied()
+                .into_iter()
+                .next()
         });
-        if let Some(whole) = whole {
-            drawn += self.clipped(b, &polys, &whole, k, mean, d);
+        if let Some(whole) = &whole {
+            drawn += self.clipped(b, &polys, whole, k, mean, d);
         }
         for f in run {
             let Some(map) = &f.src.texture else { continue };
-            for p in affine_pieces(&f.points, map, MAX_PERSPECTIVE_ERROR) {
-                drawn += self.clipped(b, &[p.points.to_vec()], &p, k, mean, d);
+            for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
+                drawn += self.clipped(b, std::slice::from_ref(&p.points), &p, k, mean, d);
             }
         }
         b.extend_from_slice(b"</g>\n");

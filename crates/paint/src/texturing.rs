@@ -1,6 +1,8 @@
 //! Textured faces: the projective map from the page to each face's texture, and the
 //! split of a fragment of a larger face along its fan triangles (each fan triangle maps
-//! its texture affinely in world space, so with a map of its own on the page).
+//! its texture affinely in world space, so with a map of its own on the page). A fan
+//! triangle whose texture coordinates collapse to a point or a segment is drawn as one
+//! colour or as a strip (see `texture_collapse.rs`), never under a singular map.
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -8,16 +10,31 @@ use std::sync::Arc;
 use glam::{DMat3, DMat4, DVec3};
 use limn_scene::{polygon_normal, Camera, FaceTexcoords, Texture};
 
+use crate::texture_collapse::{classify, max_step, stretch, Collapse, Strips};
+use crate::texture_patches::{Patches, REACH_PX};
 use crate::{PaintFragment, TextureMap};
 
-/// The textures of a picture, each once (by identity of the shared image).
+/// The textures of a picture, each once (by identity of the shared image), with the
+/// strips made for collapsed texture coordinates.
 #[derive(Default)]
 pub(crate) struct TextureTable {
     index: HashMap<*const Texture, u32>,
     pub list: Vec<Arc<Texture>>,
+    /// Per texture: the largest step between neighbouring texels.
+    steps: HashMap<*const Texture, f64>,
+    strips: Strips,
+    patches: Patches,
 }
 
 impl TextureTable {
+    /// The largest step between neighbouring texels of `t` (computed once).
+    fn step_of(&mut self, t: &Arc<Texture>) -> f64 {
+        *self
+            .steps
+            .entry(Arc::as_ptr(t))
+            .or_insert_with(|| max_step(t))
+    }
+
     /// The index of `t`, added when new.
     pub fn index_of(&mut self, t: &Arc<Texture>) -> u32 {
         let key = Arc::as_ptr(t);
@@ -31,11 +48,40 @@ impl TextureTable {
     }
 }
 
-/// One textured face seen by one camera: a map per fan triangle.
+/// What one fan triangle of a textured face paints.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum FanPaint {
+    /// A texture (the face's, or a strip of it) under a projective map.
+    Map(TextureMap),
+    /// One colour, multiplying the fill: the texture's at the point its coordinates
+    /// collapse to.
+    Flat([f64; 3]),
+    /// The flat fill alone: the map is undefined (the face seen edge-on).
+    Fill,
+}
+
+impl FanPaint {
+    /// `f` painted this way.
+    fn paint(self, mut f: PaintFragment) -> PaintFragment {
+        match self {
+            FanPaint::Map(m) => f.texture = Some(m),
+            FanPaint::Flat(c) => {
+                f.texture = None;
+                for (v, c) in f.fill.iter_mut().zip(c) {
+                    *v *= c;
+                }
+            }
+            FanPaint::Fill => f.texture = None,
+        }
+        f
+    }
+}
+
+/// One textured face seen by one camera: a paint per fan triangle.
 pub(crate) struct FaceTexture {
     corners: Vec<DVec3>,
     normal: DVec3,
-    maps: Vec<Option<TextureMap>>,
+    maps: Vec<FanPaint>,
 }
 
 /// What the page projection needs: the camera and its view-projection matrix.
@@ -52,18 +98,47 @@ impl Projector<'_> {
 }
 
 impl FaceTexture {
-    /// The maps of `face` (texture `texture` in the picture's table).
-    pub fn new(face: &FaceTexcoords, texture: u32, view: &Projector<'_>) -> FaceTexture {
+    /// The paints of `face`, its textures (and strips) entered in `table`.
+    pub fn new(
+        face: &FaceTexcoords,
+        table: &mut TextureTable,
+        view: &Projector<'_>,
+    ) -> FaceTexture {
         let c = face.corners();
         let st = face.st();
+        let tex = face.texture();
+        let step = table.step_of(tex);
+        let size = (tex.width(), tex.height());
         let maps = (1..c.len().saturating_sub(1))
             .map(|i| {
-                page_to_texture([c[0], c[i], c[i + 1]], [st[0], st[i], st[i + 1]], view).map(
-                    |screen_to_st| TextureMap {
-                        texture,
+                let w = [c[0], c[i], c[i + 1]];
+                let st = [st[0], st[i], st[i + 1]];
+                let page = w.map(|p| view.project(p));
+                let (texture, st) = match classify(st, page, size, step) {
+                    Collapse::Area => {
+                        // Texels per page pixel, at most, to know how far flaps read.
+                        let texel =
+                            st.map(|p| [p[0] * f64::from(size.0), p[1] * f64::from(size.1)]);
+                        let reach = REACH_PX * stretch(page, texel);
+                        match table.patches.patch(tex, st, reach) {
+                            Some(patch) => patch,
+                            None => (tex.clone(), st),
+                        }
+                    }
+                    Collapse::Point(p) => return FanPaint::Flat(tex.sample(p)),
+                    Collapse::Band(band) => {
+                        let strip = table.strips.strip(tex, &band);
+                        let st = strip.corner_st(&band);
+                        (strip.texture, st)
+                    }
+                };
+                match page_to_texture(w, st, view) {
+                    Some(screen_to_st) => FanPaint::Map(TextureMap {
+                        texture: table.index_of(&texture),
                         screen_to_st,
-                    },
-                )
+                    }),
+                    None => FanPaint::Fill,
+                }
             })
             .collect();
         FaceTexture {
@@ -85,9 +160,8 @@ impl FaceTexture {
         out: &mut Vec<PaintFragment>,
     ) {
         if self.maps.len() == 1 || world.len() != template.points.len() {
-            let mut f = template;
-            f.texture = self.maps.first().copied().flatten();
-            out.push(f);
+            let paint = self.maps.first().copied().unwrap_or(FanPaint::Fill);
+            out.push(paint.paint(template));
             return;
         }
         let start: Vec<Corner> = (0..world.len())
@@ -113,12 +187,11 @@ impl FaceTexture {
             if poly.len() < 3 {
                 continue;
             }
-            out.push(PaintFragment {
+            out.push(map.paint(PaintFragment {
                 points: poly.iter().map(|v| v.screen).collect(),
                 original_edges: poly.iter().map(|v| v.edge).collect(),
-                texture: *map,
                 ..template.clone()
-            });
+            }));
         }
     }
 

@@ -52,6 +52,7 @@ fn fragment() -> impl Strategy<Value = PaintFragment> {
                 object,
                 original_edges,
                 texture: None,
+                flap: false,
             }
         })
 }

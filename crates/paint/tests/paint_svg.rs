@@ -17,6 +17,7 @@ fn frag(
         object,
         original_edges: edges.to_vec(),
         texture: None,
+        flap: false,
     }
 }
 
@@ -190,7 +191,7 @@ fn out_of_range_object_gets_an_unnamed_group() {
 }
 
 #[test]
-fn gouraud_is_a_mean_cover_under_pieces_within_the_tolerance() {
+fn gouraud_is_a_fitted_cover_under_pieces_within_the_tolerance() {
     let mut p = Picture::new(10, 10);
     let mut f = PaintFragment::new(vec![[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]], BLUE);
     f.vertex_colors = Some(vec![
@@ -200,9 +201,10 @@ fn gouraud_is_a_mean_cover_under_pieces_within_the_tolerance() {
     ]);
     p.fragments.push(f.clone());
     let (text, stats) = svg(&p);
-    // The cover in the mean colour first, then the pieces.
+    // The whole fragment first, in the gradient nearest its colours, then the pieces.
+    assert!(text.contains("<g>\n<linearGradient id=\"s0\""), "{text}");
     let cover = text
-        .find("d=\"M0 0L4 0 0 4Z\" fill=\"#555555\"")
+        .find("d=\"M0 0L4 0 0 4Z\" fill=\"url(#s0)\"")
         .expect(&text);
     assert!(text[cover..].matches("<path").count() > 4, "{text}");
     assert_eq!(stats.approximated, 0);

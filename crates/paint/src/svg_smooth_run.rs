@@ -1,0 +1,454 @@
+//! A run of smooth fragments of one face in SVG, painted without seams.
+//!
+//! Viewers anti-alias each path on its own, so where two paths meet, the pixels of their
+//! shared edge are covered only in part by each and what lies under both shows through
+//! (coverage conflation). A smooth fragment is drawn as pieces (`svg_smooth.rs`), so a
+//! run has seams between its pieces and, along edges shared with faces painted later,
+//! with those. Both are closed by overdraw inside one fill, never by moving an edge:
+//!
+//! - A seam flap of the run (see [`crate::seam_flaps`]: a polygon inside a fragment of
+//!   another face painted later, carrying this face's colours along the shared edge)
+//!   becomes a subpath of the piece that has the flap's shared edge as an edge of its
+//!   own, in that piece's paint; piece and flap are then one fill with no edge between
+//!   them, and the later fragment covers the flap exactly.
+//! - Each piece gets a flap of its own into every piece of the run painted after it
+//!   that shares one of its edges (end points equal): the part of the later piece within
+//!   [`PIECE_FLAP_PX`] of the edge, kept only where exact orientation tests show the
+//!   later piece fills all of it (`seams::flap`), as a subpath in the piece's paint.
+//! - A run of two pieces or more is first filled whole (fragments and the flaps no
+//!   piece took) in the mean colour, as one path: pixels of a seam that no flap closes
+//!   (T-junctions between pieces split to different depths) show that colour, not what
+//!   lies under the face.
+//!
+//! Every subpath of a path turns the same way, so the non-zero rule fills their union.
+//! A translucent run of two pieces or more is drawn opaque inside a group with
+//! `opacity`: the viewer composites the group once, so its seams are closed inside it
+//! like an opaque run's and the face is blended once everywhere (a translucent face has
+//! no seam flaps, so the group covers exactly its fragments).
+
+use std::collections::BTreeMap;
+
+use crate::number::{push_hex_color, push_milli, push_num, push_uint, rgb_u8};
+use crate::runs::Frag;
+use crate::seams::{edge_key, flap, EdgeKey};
+use crate::svg_smooth::{self, Piece};
+
+/// Width in pixels of the flap a piece gets into a later piece of its run: a whole
+/// pixel, so that the earlier piece and its flap cover every pixel of the shared edge.
+const PIECE_FLAP_PX: f64 = 1.0;
+
+/// Writes `run` (fragments with vertex colours and their seam flaps, all with opacity
+/// `alpha` in thousandths; the fragments' interiors disjoint) with pieces within
+/// `tolerance`, coordinates with `d` decimals and gradients numbered from
+/// `*gradients`. Returns the number of paths.
+pub(crate) fn write(
+    b: &mut Vec<u8>,
+    run: &[Frag<'_>],
+    alpha: u16,
+    tolerance: f64,
+    d: u8,
+    gradients: &mut u64,
+) -> usize {
+    let (mut body, mut flaps): (Vec<&Frag<'_>>, Vec<&Frag<'_>>) =
+        run.iter().partition(|f| !f.src.flap);
+    if body.is_empty() {
+        // Flaps with nothing to join: painted as fragments.
+        std::mem::swap(&mut body, &mut flaps);
+    }
+    let body: Vec<(&Frag<'_>, &[[f64; 4]])> = body
+        .into_iter()
+        .filter_map(|f| f.colors.as_deref().map(|cs| (f, cs)))
+        .collect();
+    if body.is_empty() {
+        return 0;
+    }
+    // Each fragment with its flaps: the run's seam flaps it holds an edge of, and its
+    // own into the later fragments it shares an edge with.
+    let outlines: Vec<&[[f64; 2]]> = body.iter().map(|(f, _)| &*f.points).collect();
+    let edges = Edges::new(&outlines);
+    let mut frag_extras: Vec<Vec<Vec<[f64; 2]>>> = vec![Vec::new(); body.len()];
+    for f in &flaps {
+        let k = edges.holder(&f.points).unwrap_or(0);
+        frag_extras[k].push(f.points.to_vec());
+    }
+    let order: Vec<usize> = (0..body.len()).collect();
+    edges.flaps(&outlines, &order, &mut frag_extras);
+    // Each fragment is filled whole with its flaps in one paint, the pieces of those
+    // drawn as two pieces or more then on top, each with its flaps into later pieces.
+    let mut firsts = Vec::with_capacity(body.len());
+    let mut pieces: Vec<Piece> = Vec::new();
+    for (f, cs) in &body {
+        let own = svg_smooth::pieces(&f.points, cs, tolerance);
+        if own.len() == 1 {
+            firsts.push(own[0]);
+        } else {
+            firsts.push(svg_smooth::fit(&f.points, cs));
+            pieces.extend(own);
+        }
+    }
+    let mut extras: Vec<Vec<Vec<[f64; 2]>>> = vec![Vec::new(); pieces.len()];
+    if pieces.len() > 1 {
+        let tris: Vec<[[f64; 2]; 3]> = pieces.iter().map(corners).collect();
+        let outlines: Vec<&[[f64; 2]]> = tris.iter().map(|t| &t[..]).collect();
+        Edges::new(&outlines).flaps(&outlines, &ranks(&pieces), &mut extras);
+    }
+    let mut paths = 0;
+    let grouped = alpha < 1000 && (body.len() > 1 || !pieces.is_empty());
+    if grouped {
+        b.extend_from_slice(b"<g opacity=\"");
+        push_milli(b, alpha);
+        b.extend_from_slice(b"\">\n");
+    }
+    // Inside a group the fills are opaque: the group carries the opacity.
+    let fill_alpha = if grouped { 1000 } else { alpha };
+    for (k, (paint, (f, _))) in firsts.iter().zip(&body).enumerate() {
+        let mut polygons: Vec<&[[f64; 2]]> = vec![&f.points];
+        polygons.extend(frag_extras[k].iter().map(|e| &e[..]));
+        write_path(b, paint, &polygons, fill_alpha, d, gradients);
+        paths += 1;
+    }
+    paths += write_pieces(b, &pieces, &extras, fill_alpha, d, gradients);
+    if grouped {
+        b.extend_from_slice(b"</g>\n");
+    }
+    paths
+}
+
+/// The corners of a piece.
+fn corners(p: &Piece) -> [[f64; 2]; 3] {
+    match *p {
+        Piece::Flat { tri, .. } | Piece::Gradient { tri, .. } => tri,
+    }
+}
+
+/// The edges of polygons painted in order, sorted by key: the polygons that share an
+/// edge are neighbours.
+struct Edges {
+    /// (edge key, polygon, edge index in the polygon), by key then polygon.
+    sorted: Vec<(EdgeKey, u32, u32)>,
+}
+
+impl Edges {
+    fn new(polygons: &[&[[f64; 2]]]) -> Self {
+        let mut sorted = Vec::with_capacity(3 * polygons.len());
+        for (i, p) in polygons.iter().enumerate() {
+            let n = p.len();
+            for e in 0..n {
+                sorted.push((edge_key(p[e], p[(e + 1) % n]), i as u32, e as u32));
+            }
+        }
+        sorted.sort_unstable();
+        Edges { sorted }
+    }
+
+    /// The polygons having edge `k`, in order.
+    fn with(&self, k: &EdgeKey) -> &[(EdgeKey, u32, u32)] {
+        let lo = self.sorted.partition_point(|e| e.0 < *k);
+        let hi = lo + self.sorted[lo..].partition_point(|e| e.0 == *k);
+        &self.sorted[lo..hi]
+    }
+
+    /// The polygon one of whose edges is an edge of polygon `q` (the last, when several
+    /// are).
+    fn holder(&self, q: &[[f64; 2]]) -> Option<usize> {
+        let m = q.len();
+        (0..m)
+            .filter_map(|k| self.with(&edge_key(q[k], q[(k + 1) % m])).last())
+            .map(|e| e.1 as usize)
+            .max()
+    }
+
+    /// Adds to `extras[i]` the flap of polygon `i` into the polygon sharing each of its
+    /// edges that is painted next after it (of the least higher rank).
+    fn flaps(&self, polygons: &[&[[f64; 2]]], rank: &[usize], extras: &mut [Vec<Vec<[f64; 2]>>]) {
+        for group in self.sorted.chunk_by(|x, y| x.0 == y.0) {
+            for &(_, i, e) in group {
+                let later = group
+                    .iter()
+                    .filter(|x| rank[x.1 as usize] > rank[i as usize])
+                    .min_by_key(|x| rank[x.1 as usize]);
+                let Some(&(_, j, _)) = later else {
+                    continue;
+                };
+                let p = polygons[i as usize];
+                let (a, b) = (p[e as usize], p[(e as usize + 1) % p.len()]);
+                if let Some(f) = flap(polygons[j as usize], a, b, PIECE_FLAP_PX) {
+                    extras[i as usize].push(f);
+                }
+            }
+        }
+    }
+}
+
+/// Where each piece is painted, as [`write_pieces`] paints them: the gradients in
+/// order, then one path per flat colour (pieces of one rank are one fill).
+fn ranks(pieces: &[Piece]) -> Vec<usize> {
+    let gradients = pieces
+        .iter()
+        .filter(|p| matches!(p, Piece::Gradient { .. }))
+        .count();
+    let colours: BTreeMap<[u8; 3], usize> = pieces
+        .iter()
+        .filter_map(|p| match *p {
+            Piece::Flat { rgb, .. } => Some((rgb_u8(rgb), 0)),
+            Piece::Gradient { .. } => None,
+        })
+        .collect();
+    let colours: BTreeMap<[u8; 3], usize> = colours
+        .into_keys()
+        .enumerate()
+        .map(|(k, c)| (c, gradients + k))
+        .collect();
+    let mut next = 0;
+    pieces
+        .iter()
+        .map(|p| match *p {
+            Piece::Flat { rgb, .. } => colours[&rgb_u8(rgb)],
+            Piece::Gradient { .. } => {
+                next += 1;
+                next - 1
+            }
+        })
+        .collect()
+}
+
+/// Writes the pieces, each with its flaps (`extras`) as subpaths: gradients in order,
+/// then flat ones grouped by written colour into one path each (they tile their
+/// fragments, so the order among them does not matter; a flap lies in a piece painted
+/// later, which covers it). Returns the number of paths.
+fn write_pieces(
+    b: &mut Vec<u8>,
+    pieces: &[Piece],
+    extras: &[Vec<Vec<[f64; 2]>>],
+    alpha: u16,
+    d: u8,
+    gradients: &mut u64,
+) -> usize {
+    let mut flat: BTreeMap<[u8; 3], Vec<usize>> = BTreeMap::new();
+    let mut paths = 0;
+    let tris: Vec<[[f64; 2]; 3]> = pieces.iter().map(corners).collect();
+    let polygons = |i: usize| {
+        let mut p: Vec<&[[f64; 2]]> = vec![&tris[i][..]];
+        p.extend(extras[i].iter().map(|e| &e[..]));
+        p
+    };
+    for (i, p) in pieces.iter().enumerate() {
+        match *p {
+            Piece::Flat { rgb, .. } => flat.entry(rgb_u8(rgb)).or_default().push(i),
+            Piece::Gradient { .. } => {
+                write_path(b, p, &polygons(i), alpha, d, gradients);
+                paths += 1;
+            }
+        }
+    }
+    for members in flat.values() {
+        let all: Vec<&[[f64; 2]]> = members.iter().flat_map(|&i| polygons(i)).collect();
+        write_path(b, &pieces[members[0]], &all, alpha, d, gradients);
+        paths += 1;
+    }
+    paths
+}
+
+/// Writes one path of `polygons` filled with `paint` (its triangle is not written; a
+/// gradient is defined just before).
+fn write_path(
+    b: &mut Vec<u8>,
+    paint: &Piece,
+    polygons: &[&[[f64; 2]]],
+    alpha: u16,
+    d: u8,
+    gradients: &mut u64,
+) {
+    if let Piece::Gradient {
+        from, to, c0, c1, ..
+    } = *paint
+    {
+        b.extend_from_slice(b"<linearGradient id=\"s");
+        push_uint(b, *gradients);
+        b.extend_from_slice(b"\" gradientUnits=\"userSpaceOnUse\" x1=\"");
+        push_num(b, from[0], d + 1);
+        b.extend_from_slice(b"\" y1=\"");
+        push_num(b, from[1], d + 1);
+        b.extend_from_slice(b"\" x2=\"");
+        push_num(b, to[0], d + 1);
+        b.extend_from_slice(b"\" y2=\"");
+        push_num(b, to[1], d + 1);
+        b.extend_from_slice(b"\"><stop stop-color=\"");
+        push_hex_color(b, rgb_u8(c0));
+        b.extend_from_slice(b"\"/><stop offset=\"1\" stop-color=\"");
+        push_hex_color(b, rgb_u8(c1));
+        b.extend_from_slice(b"\"/></linearGradient>\n");
+    }
+    b.extend_from_slice(b"<path d=\"");
+    for p in polygons {
+        push_polygon(b, p, d);
+    }
+    match *paint {
+        Piece::Gradient { .. } => {
+            b.extend_from_slice(b"\" fill=\"url(#s");
+            push_uint(b, *gradients);
+            b.extend_from_slice(b")\"");
+            *gradients += 1;
+        }
+        Piece::Flat { rgb, .. } => {
+            b.extend_from_slice(b"\" fill=\"");
+            push_hex_color(b, rgb_u8(rgb));
+            b.push(b'"');
+        }
+    }
+    opacity(b, alpha);
+    b.extend_from_slice(b"/>\n");
+}
+
+/// ` fill-opacity="a"` when the opacity is below 1.
+fn opacity(b: &mut Vec<u8>, milli: u16) {
+    if milli < 1000 {
+        b.extend_from_slice(b" fill-opacity=\"");
+        push_milli(b, milli);
+        b.push(b'"');
+    }
+}
+
+/// Writes polygon `p` as a closed subpath turning clockwise on screen (so that every
+/// subpath of a path turns the same way and the non-zero rule fills their union).
+fn push_polygon(b: &mut Vec<u8>, p: &[[f64; 2]], d: u8) {
+    let n = p.len();
+    let area2: f64 = (0..n)
+        .map(|i| {
+            let (a, c) = (p[i], p[(i + 1) % n]);
+            a[0] * c[1] - c[0] * a[1]
+        })
+        .sum();
+    let reverse = area2 < 0.0;
+    for k in 0..n {
+        let q = p[if reverse { n - 1 - k } else { k }];
+        b.push(match k {
+            0 => b'M',
+            1 => b'L',
+            _ => b' ',
+        });
+        push_num(b, q[0], d);
+        b.push(b' ');
+        push_num(b, q[1], d);
+    }
+    b.push(b'Z');
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::runs::{check, walk};
+    use crate::{PaintFragment, Picture};
+
+    fn smooth(points: Vec<[f64; 2]>, colors: Vec<[f64; 4]>) -> PaintFragment {
+        let mut f = PaintFragment::new(points, [0.5, 0.5, 0.5, 1.0]);
+        f.vertex_colors = Some(colors);
+        f
+    }
+
+    /// The SVG text of `fragments` as one run.
+    fn written(fragments: Vec<PaintFragment>, alpha: u16) -> (String, usize) {
+        let mut p = Picture::new(100, 100);
+        p.fragments = fragments;
+        let guard = check(&p).unwrap().guard;
+        let mut out = (Vec::new(), 0);
+        walk(
+            &p,
+            &guard,
+            |_| (),
+            |run, _| {
+                let mut g = 0;
+                out.1 += write(&mut out.0, run, alpha, 1.0 / 255.0, 2, &mut g);
+                Ok(())
+            },
+        )
+        .unwrap();
+        (String::from_utf8(out.0).unwrap(), out.1)
+    }
+
+    const RAMP: [[f64; 4]; 3] = [
+        [0.2, 0.2, 0.2, 1.0],
+        [0.8, 0.8, 0.8, 1.0],
+        [0.5, 0.5, 0.5, 1.0],
+    ];
+
+    #[test]
+    fn a_flap_joins_a_single_gradient_in_one_path() {
+        let tri = smooth(vec![[0.0, 0.0], [50.0, 0.0], [0.0, 50.0]], RAMP.to_vec());
+        let mut fl = smooth(
+            vec![[50.0, 0.0], [0.0, 50.0], [0.0, 50.5], [50.5, 0.0]],
+            vec![RAMP[1], RAMP[2], RAMP[2], RAMP[1]],
+        );
+        fl.flap = true;
+        let (svg, paths) = written(vec![tri, fl], 1000);
+        assert_eq!(paths, 1, "{svg}");
+        assert_eq!(svg.matches("<path").count(), 1);
+        assert_eq!(svg.matches('M').count(), 2, "{svg}");
+    }
+
+    #[test]
+    fn pieces_flap_into_later_pieces_turning_one_way() {
+        // Corner colours off one line in RGB: split into pieces.
+        let c = vec![
+            [1.0, 0.0, 0.0, 1.0],
+            [0.0, 1.0, 0.0, 1.0],
+            [0.0, 0.0, 1.0, 1.0],
+        ];
+        let f = smooth(vec![[0.0, 0.0], [60.0, 0.0], [0.0, 60.0]], c);
+        let pieces = svg_smooth::pieces(&f.points, f.vertex_colors.as_ref().unwrap(), 1.0 / 255.0);
+        assert!(pieces.len() > 1);
+        let mut extras = vec![Vec::new(); pieces.len()];
+        let rank = ranks(&pieces);
+        let tris: Vec<[[f64; 2]; 3]> = pieces.iter().map(corners).collect();
+        let outlines: Vec<&[[f64; 2]]> = tris.iter().map(|t| &t[..]).collect();
+        Edges::new(&outlines).flaps(&outlines, &rank, &mut extras);
+        assert!(extras.iter().any(|e| !e.is_empty()));
+        // Every flap lies in a piece painted later, so those painted last have none.
+        let last = *rank.iter().max().unwrap();
+        for (r, e) in rank.iter().zip(&extras) {
+            assert!(*r < last || e.is_empty());
+        }
+        let (svg, paths) = written(vec![f], 1000);
+        // The whole fragment first, in one gradient, then the pieces.
+        assert!(
+            svg.starts_with("<linearGradient id=\"s0\""),
+            "{}",
+            &svg[..80]
+        );
+        assert!(svg.contains("<path d=\"M0 0L60 0 0 60Z\" fill=\"url(#s0)\"/>"));
+        assert_eq!(svg.matches("<path").count(), paths);
+    }
+
+    #[test]
+    fn fragments_flap_into_later_fragments() {
+        let a = smooth(vec![[0.0, 0.0], [50.0, 0.0], [0.0, 50.0]], RAMP.to_vec());
+        let b = smooth(vec![[50.0, 0.0], [50.0, 50.0], [0.0, 50.0]], RAMP.to_vec());
+        let (svg, paths) = written(vec![a, b], 1000);
+        assert_eq!(paths, 2);
+        // The first fragment and its flap into the second; the second alone.
+        let fills: Vec<&str> = svg.lines().filter(|l| l.starts_with("<path")).collect();
+        assert_eq!(fills[0].matches('M').count(), 2, "{svg}");
+        assert_eq!(fills[1].matches('M').count(), 1, "{svg}");
+    }
+
+    #[test]
+    fn a_translucent_run_of_pieces_is_one_group() {
+        let c = vec![
+            [1.0, 0.0, 0.0, 0.5],
+            [0.0, 1.0, 0.0, 0.5],
+            [0.0, 0.0, 1.0, 0.5],
+        ];
+        let mut f = smooth(vec![[0.0, 0.0], [60.0, 0.0], [0.0, 60.0]], c);
+        f.fill[3] = 0.5;
+        let (svg, _) = written(vec![f], 500);
+        assert!(svg.starts_with("<g opacity=\"0.5\">\n"), "{}", &svg[..40]);
+        assert!(svg.ends_with("</g>\n"));
+        assert!(!svg.contains("fill-opacity"));
+        // One gradient, translucent: no group.
+        let mut g = smooth(vec![[0.0, 0.0], [50.0, 0.0], [0.0, 50.0]], RAMP.to_vec());
+        g.fill[3] = 0.5;
+        let (svg, paths) = written(vec![g], 500);
+        assert_eq!(paths, 1);
+        assert!(svg.contains("fill-opacity=\"0.5\"") && !svg.contains("<g"));
+    }
+}
