@@ -106,8 +106,9 @@ pub enum Command {
     /// PNG.
     #[command(after_help = RENDER_HELP)]
     Render(RenderArgs),
-    /// Render the built-in demo scene (a cyclic overlap, two interpenetrating boxes and a
-    /// shaded sphere) to demo.svg or OUTPUT.
+    /// Render the built-in demo scene (a cyclic overlap, two interpenetrating boxes, a
+    /// shaded sphere with a rod through it, exact shadows on a floor) to demo.svg or
+    /// OUTPUT.
     #[command(after_help = EXIT_CODES)]
     Demo(DemoArgs),
     /// Compare the painter's result pixel by pixel with an image-space reference.

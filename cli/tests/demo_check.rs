@@ -67,7 +67,9 @@ fn demo_splits_the_cycle_and_reports_stats() {
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert_eq!(run.stderr, "");
     let v = json(&run);
-    assert_eq!(v["faces_in"], 3 + 12 + 1280, "{v}");
+    assert_eq!(v["faces_in"], 1 + 3 + 12 + 5120, "{v}");
+    assert!(v["effects"].to_string().contains("shadows"), "{v}");
+    assert_eq!(v["lines"]["lines"], 1, "{v}");
     assert!(v["splits"].as_u64().unwrap() >= 1, "{v}");
     assert!(std::fs::read(d.path().join("d.pdf"))
         .unwrap()

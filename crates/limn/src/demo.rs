@@ -1,16 +1,18 @@
-//! The built-in demo scene: what limn is for, in one picture.
+//! The built-in demo scene: what limn is for, in one picture, on a floor that catches
+//! exact shadows from a directional light.
 //!
 //! * left: three strips overlapping cyclically (no painter's order of whole faces
-//!   exists), drawn with exact unlit colours;
-//! * middle: two closed boxes passing through each other, lit;
-//! * right: a closed, shaded icosphere with a specular highlight.
+//!   exists);
+//! * middle: two closed boxes passing through each other;
+//! * right: a smooth-shaded icosphere (5,120 triangles) with a specular highlight, and a
+//!   rod with an arrow head passing through it (hidden exactly inside).
 
 use std::borrow::Cow;
 use std::path::PathBuf;
 
 use glam::{DMat3, DVec3};
 use limn_load::SceneOptions;
-use limn_scene::{shapes, Light, LightKind, Material, Scene, SceneError};
+use limn_scene::{shapes, Camera, Light, LightKind, Material, Polyline, Scene, SceneError};
 
 use crate::error::Error;
 use crate::input::Input;
@@ -25,18 +27,37 @@ const DEMO_TOLERANCE: f64 = 4.0 / 255.0;
 /// Builds the demo scene.
 pub fn scene() -> Result<Scene, SceneError> {
     let mut s = Scene::default();
-    // Cyclic strips.
+    // Lit materials whose shadowed side keeps half their colour.
+    let lit = |name: &str, kd: [f64; 3]| Material {
+        ka: kd.map(|c| c * 0.45),
+        ..Material::diffuse(name, kd)
+    };
+    // A floor to catch the shadows.
+    let floor_m = s.add_material(lit("floor", [0.8, 0.79, 0.75]));
+    let floor = s.add_object("floor");
+    let y0 = -1.25;
+    s.add_polygon(
+        &[
+            DVec3::new(-6.4, y0, -3.2),
+            DVec3::new(-6.4, y0, 3.0),
+            DVec3::new(5.6, y0, 3.0),
+            DVec3::new(5.6, y0, -3.2),
+        ],
+        floor_m,
+        floor,
+    )?;
+    // Cyclic strips: each lies over the next, so no order of whole faces exists.
     let colours = [[0.85, 0.25, 0.2], [0.2, 0.6, 0.3], [0.2, 0.4, 0.85]];
     let strips = s.add_object("cyclic strips");
-    let (r, len, h, w) = (1.0, 2.4, 0.45, 0.55);
-    let centre = DVec3::new(-3.6, 0.0, 0.0);
+    let (r, len, h, w) = (0.75, 1.9, 0.5, 0.75);
+    let centre = DVec3::new(-3.6, 0.5, 0.2);
     for (k, c) in colours.iter().enumerate() {
-        let m = s.add_material(Material::unlit(&format!("strip{k}"), *c));
-        let th = k as f64 * std::f64::consts::TAU / 3.0 + 0.3;
-        let d = DVec3::new(th.cos(), th.sin(), 0.0);
-        let n = DVec3::new(th.sin(), -th.cos(), 0.0);
+        let m = s.add_material(lit(&format!("strip{k}"), *c));
+        let th = k as f64 * std::f64::consts::TAU / 3.0;
+        let d = DVec3::new(th.cos(), 0.0, th.sin());
+        let n = DVec3::new(th.sin(), 0.0, -th.cos());
         let at = |t: f64, side: f64| {
-            centre + n * r + d * t + n * (side * w / 2.0) + DVec3::new(0.0, 0.0, -h * t / len)
+            centre + n * r + d * t + n * (side * w / 2.0) + DVec3::new(0.0, -h * t / len, 0.0)
         };
         s.add_polygon(
             &[at(-len, -1.0), at(len, -1.0), at(len, 1.0), at(-len, 1.0)],
@@ -45,13 +66,13 @@ pub fn scene() -> Result<Scene, SceneError> {
         )?;
     }
     // Interpenetrating boxes.
-    let red = s.add_material(Material::diffuse("red box", [0.9, 0.3, 0.25]));
-    let blue = s.add_material(Material::diffuse("blue box", [0.25, 0.45, 0.9]));
+    let red = s.add_material(lit("red box", [0.9, 0.3, 0.25]));
+    let blue = s.add_material(lit("blue box", [0.25, 0.45, 0.9]));
     let a = s.add_object("box A");
     shapes::cuboid(
         &mut s,
-        DVec3::new(-1.0, -1.0, -1.0),
-        DVec3::new(0.6, 0.6, 0.6),
+        DVec3::new(-1.2, y0, -0.8),
+        DVec3::new(0.3, 0.25, 0.7),
         DMat3::IDENTITY,
         red,
         a,
@@ -60,26 +81,37 @@ pub fn scene() -> Result<Scene, SceneError> {
     let rot = DMat3::from_rotation_y(0.6) * DMat3::from_rotation_x(0.45);
     shapes::cuboid(
         &mut s,
-        DVec3::new(-0.4, -0.5, -0.4),
-        DVec3::new(1.0, 0.9, 1.0),
+        DVec3::new(-0.5, -0.6, -0.4),
+        DVec3::new(0.9, 0.8, 1.0),
         rot,
         blue,
         b,
     )?;
-    // Shaded sphere.
-    let gold = s.add_material(Material::glossy(
-        "sphere",
-        [0.85, 0.65, 0.25],
-        [0.6, 0.6, 0.6],
-        40.0,
-    ));
+    // A shaded sphere with a highlight, and a rod through it.
+    let gold = s.add_material(Material {
+        ka: [0.38, 0.29, 0.11],
+        ..Material::glossy("sphere", [0.85, 0.65, 0.25], [0.6, 0.6, 0.6], 40.0)
+    });
     let sphere = s.add_object("sphere");
-    shapes::icosphere(&mut s, DVec3::new(3.4, 0.0, 0.0), 1.2, 3, gold, sphere)?;
+    let c = DVec3::new(3.0, 0.0, 0.0);
+    shapes::icosphere(&mut s, c, 1.2, 4, gold, sphere)?;
+    let rod = s.add_object("rod");
+    s.lines.push(Polyline {
+        points: vec![
+            c + DVec3::new(-2.2, -0.9, 1.6),
+            c + DVec3::new(2.0, 0.9, -1.4),
+        ],
+        color: [0.1, 0.1, 0.1, 1.0],
+        width: 2.0,
+        dash: Vec::new(),
+        head: true,
+        object: rod,
+    });
     s.lights = vec![
         Light {
-            kind: LightKind::Directional(DVec3::new(0.6, 1.0, 0.9)),
-            color: [0.9, 0.9, 0.9],
-            shadows: false,
+            kind: LightKind::Directional(DVec3::new(0.5, 1.0, 0.6)),
+            color: [0.7, 0.7, 0.7],
+            shadows: true,
         },
         Light {
             kind: LightKind::Ambient,
@@ -87,6 +119,15 @@ pub fn scene() -> Result<Scene, SceneError> {
             shadows: false,
         },
     ];
+    s.camera = Some(Camera {
+        fov_deg: 27.0,
+        ..Camera::new(
+            DVec3::new(1.2, 7.0, 11.5),
+            DVec3::new(-0.4, -0.1, 0.0),
+            960,
+            540,
+        )
+    });
     Ok(s)
 }
 
@@ -127,6 +168,6 @@ mod tests {
     fn demo_scene_is_valid() {
         let s = super::scene().unwrap();
         s.validate().unwrap();
-        assert_eq!(s.faces.len(), 3 + 12 + 1280);
+        assert_eq!(s.faces.len(), 1 + 3 + 12 + 5120);
     }
 }
