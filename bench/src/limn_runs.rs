@@ -1,12 +1,17 @@
-//! limn's own rows: every ordering with both arithmetics, ordered and written as an SVG
-//! file in this process, timed as the median of several runs.
+//! limn's own rows: every ordering with both arithmetics, rendered through limn's front
+//! door (`limn::render_into`, the render the command runs) into an SVG file in this
+//! process, timed as the median of several runs.
 
+use std::borrow::Cow;
 use std::fs::File;
 use std::io::BufWriter;
 use std::time::Instant;
 
-use limn_depthsort::{order, Arith, OrderOptions, SortMode};
-use limn_paint::{picture, Painter, Style, SvgPainter};
+use anyhow::Context;
+
+use limn::{Input, RenderOptions, Request, SceneOptions, Silent, ViewOptions};
+use limn_depthsort::{Arith, SortMode};
+use limn_paint::Format;
 
 use crate::scenes::BenchScene;
 
@@ -31,10 +36,28 @@ pub fn measure(
     arith: Arith,
     runs: usize,
 ) -> anyhow::Result<Measured> {
-    let opts = OrderOptions {
-        sort,
-        arith,
-        ..OrderOptions::default()
+    // The scene with its camera: copied once, outside the timed runs.
+    let mut scene = s.scene.clone();
+    scene.camera = Some(s.camera);
+    let req = Request {
+        input: Input::Scene {
+            scene: Cow::Borrowed(&scene),
+            settings: SceneOptions {
+                size: Some((s.camera.width, s.camera.height)),
+                ..SceneOptions::default()
+            },
+            name: s.name.clone(),
+        },
+        output: None,
+        options: RenderOptions {
+            view: ViewOptions {
+                sort: Some(sort),
+                arith: Some(arith),
+                ..ViewOptions::default()
+            },
+            format: Some(Format::Svg),
+            ..RenderOptions::default()
+        },
     };
     let mut times = Vec::with_capacity(runs);
     let mut last = None;
@@ -45,15 +68,15 @@ pub fn measure(
     for _ in 0..runs.max(1) {
         crate::settle::settle();
         let t0 = Instant::now();
-        let ordered = order(&s.scene, &s.camera, &opts)?;
-        let pic = picture(&s.scene, &ordered, &Style::default());
         let mut file = BufWriter::new(File::create(&path)?);
-        SvgPainter::default().paint(&pic, &mut file)?;
+        let done = limn::render_into(&req, &mut file, &mut Silent)?;
         file.into_inner().map_err(|e| e.into_error())?;
         times.push(t0.elapsed().as_secs_f64() * 1e3);
-        last = Some((ordered.fragments.len(), pic));
+        last = Some(done);
     }
-    let (primitives, pic) = last.expect("at least one run");
+    let done = last.expect("at least one run");
+    let primitives = done.ordered().map_or(0, |o| o.fragments.len());
+    let pic = done.picture().context("a painter's render has a picture")?;
     let svg = std::fs::read(&path)?;
     Ok(Measured {
         ms: median(&mut times),

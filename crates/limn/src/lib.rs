@@ -56,6 +56,6 @@ pub use options::{
     DEFAULT_SIZE,
 };
 pub use output::{check_writable, write_atomic, OutputError};
-pub use render::{order_scene, render, Rendered, Request};
+pub use render::{order_scene, render, render_into, Rendered, Request};
 pub use settings::{camera, format_of, order_options};
 pub use stats::{LineStats, RenderStats, Timing};

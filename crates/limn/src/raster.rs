@@ -1,5 +1,6 @@
 //! A render by an image-space method: the scene per pixel, written as PNG.
 
+use std::io::Write;
 use std::path::Path;
 
 use limn_depthsort::{CullMode, OrderOptions};
@@ -12,13 +13,14 @@ use crate::options::RenderOptions as Options;
 use crate::output::{write_atomic, OutputError};
 
 /// Renders `scene` with the image-space method of `o` and writes its colour image as PNG
-/// to `output`.
+/// to `out`, else to the file `output`.
 pub fn raster(
     scene: &Scene,
     cam: &Camera,
     o: &Options,
     oo: &OrderOptions,
     output: &Path,
+    out: Option<&mut dyn Write>,
     events: &mut dyn Events,
 ) -> Result<(), Error> {
     let Some(method) = o.method.raster() else {
@@ -39,6 +41,14 @@ pub fn raster(
     };
     let r = render_with_shadow_maps(scene, cam, method, &opts, &maps)?;
     let png = r.color.encode_png()?;
+    if let Some(w) = out {
+        return w.write_all(&png).map_err(|source| {
+            Error::from(OutputError::Write {
+                path: output.to_path_buf(),
+                source,
+            })
+        });
+    }
     write_atomic(output, &scene.files, |w| {
         w.write_all(&png).map_err(|source| OutputError::Write {
             path: output.to_path_buf(),

@@ -1,15 +1,15 @@
 //! A render, from input to written file: load → (hidden-line preparation) → order →
 //! compose → write, or an image-space method per pixel; the statistics and warnings.
 
-use std::any::Any;
 use std::borrow::Cow;
+use std::io::Write;
 use std::path::PathBuf;
 use std::time::Instant;
 
 use limn_depthsort::{order, order_with_marks, OrderError, OrderOptions, Ordered, VisibleMarks};
 use limn_paint::{
-    hidden_line_picture, painter_for, picture_with_marks, Format, Painter, SvgOptions, SvgPainter,
-    TikzOptions, TikzPainter,
+    hidden_line_picture, painter_for, picture_with_marks, Format, Painter, Picture, SvgOptions,
+    SvgPainter, TikzOptions, TikzPainter,
 };
 use limn_scene::{Camera, Scene};
 
@@ -52,7 +52,29 @@ pub struct Rendered<'a> {
     /// leave them to the system instead of freeing millions of allocations one by one
     /// (`std::mem::forget` on the whole result).
     _scene: Cow<'a, Scene>,
-    _parts: Box<dyn Any + Send>,
+    parts: Option<Box<Parts>>,
+}
+
+/// What a painter's render made: the order and the picture (and the scene the edges of a
+/// hidden-line drawing were added to).
+struct Parts {
+    _drawn: Option<(Scene, usize)>,
+    ordered: Ordered,
+    _marks: VisibleMarks,
+    picture: Picture,
+}
+
+impl Rendered<'_> {
+    /// The ordering's result (`None` for the image-space methods).
+    pub fn ordered(&self) -> Option<&Ordered> {
+        self.parts.as_ref().map(|p| &p.ordered)
+    }
+
+    /// The picture as composed before writing: fragments in paint order with their
+    /// fills, and the visible marks (`None` for the image-space methods).
+    pub fn picture(&self) -> Option<&Picture> {
+        self.parts.as_ref().map(|p| &p.picture)
+    }
 }
 
 impl std::fmt::Debug for Rendered<'_> {
@@ -91,6 +113,26 @@ fn ms(from: Instant, to: Instant) -> f64 {
 /// Runs a render: writes the picture (and the statistics, when asked) safely — nothing
 /// is left behind on error, and no file the scene was read from is written over.
 pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered<'a>, Error> {
+    run(req, None, events)
+}
+
+/// Runs a render that writes the picture to `out` instead of a file: the request's
+/// output path, if any, only names the format (else the format option, else SVG). The
+/// statistics file, when asked, is still written safely.
+pub fn render_into<'a>(
+    req: &Request<'a>,
+    out: &mut dyn Write,
+    events: &mut dyn Events,
+) -> Result<Rendered<'a>, Error> {
+    run(req, Some(out), events)
+}
+
+/// A render, written to `out` or else to the request's output file.
+fn run<'a>(
+    req: &Request<'a>,
+    mut out: Option<&mut dyn Write>,
+    events: &mut dyn Events,
+) -> Result<Rendered<'a>, Error> {
     let t0 = Instant::now();
     let o = &req.options;
     o.validate()?;
@@ -103,16 +145,21 @@ pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered
     let name = &loaded.name;
     let cam = settings::camera(scene, &o.view, loaded.settings.size, name)?;
     let oo = settings::order_options(&o.view, &loaded.settings)?;
-    let (output, format) = settings::output_and_format(
-        &req.input,
-        req.output.as_deref(),
-        o.format,
-        &loaded.settings,
-    )?;
+    let (output, format) = match (&out, &req.output) {
+        (Some(_), None) => (PathBuf::from("-"), o.format.unwrap_or(Format::Svg)),
+        _ => settings::output_and_format(
+            &req.input,
+            req.output.as_deref(),
+            o.format,
+            &loaded.settings,
+        )?,
+    };
     if o.standalone && format != Format::Tikz {
         return Err(Error::Standalone(format));
     }
-    check_writable(&output, &scene.files)?;
+    if out.is_none() {
+        check_writable(&output, &scene.files)?;
+    }
     if let Some(stats) = &o.stats {
         check_writable(stats, &scene.files)?;
     }
@@ -121,7 +168,7 @@ pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered
             return Err(Error::RasterFormat(o.method.name()));
         }
         ev.phase("rendering");
-        raster(scene, &cam, o, &oo, &output, &mut ev)?;
+        raster(scene, &cam, o, &oo, &output, out, &mut ev)?;
         let warnings = ev.warnings;
         return Ok(Rendered {
             output,
@@ -130,7 +177,7 @@ pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered
             stats: None,
             warnings,
             _scene: loaded.scene,
-            _parts: Box::new(()),
+            parts: None,
         });
     }
     let t1 = Instant::now();
@@ -163,7 +210,10 @@ pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered
         })),
         _ => painter_for(format),
     };
-    let ps = write_atomic(&output, &scene.files, |w| Ok(painter.paint(&pic, w)?))?;
+    let ps = match out.as_deref_mut() {
+        Some(w) => painter.paint(&pic, w)?,
+        None => write_atomic(&output, &scene.files, |w| Ok(painter.paint(&pic, w)?))?,
+    };
     let t3 = Instant::now();
     for w in losses(scene, &ordered, &ps, format, cam.near.is_some()) {
         ev.warning(&w);
@@ -189,7 +239,12 @@ pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered
         })?;
     }
     let warnings = ev.warnings;
-    let parts = (drawn_scene, ordered, marks, pic);
+    let parts = Parts {
+        _drawn: drawn_scene,
+        ordered,
+        _marks: marks,
+        picture: pic,
+    };
     Ok(Rendered {
         output,
         format,
@@ -197,7 +252,7 @@ pub fn render<'a>(req: &Request<'a>, events: &mut dyn Events) -> Result<Rendered
         stats: Some(stats),
         warnings,
         _scene: loaded.scene,
-        _parts: Box::new(parts),
+        parts: Some(Box::new(parts)),
     })
 }
 
