@@ -130,7 +130,7 @@ pub fn render_into<'a>(
 /// A render, written to `out` or else to the request's output file.
 fn run<'a>(
     req: &Request<'a>,
-    mut out: Option<&mut dyn Write>,
+    out: Option<&mut dyn Write>,
     events: &mut dyn Events,
 ) -> Result<Rendered<'a>, Error> {
     let t0 = Instant::now();
@@ -210,7 +210,7 @@ fn run<'a>(
         })),
         _ => painter_for(format),
     };
-    let ps = match out.as_deref_mut() {
+    let ps = match out {
         Some(w) => painter.paint(&pic, w)?,
         None => write_atomic(&output, &scene.files, |w| Ok(painter.paint(&pic, w)?))?,
     };
