@@ -35,7 +35,7 @@ pub(crate) fn write(painter: &dyn Painter, pic: &Picture) -> usize {
 
 /// The painter's flat-only picture as it was built before smooth effects: one flat
 /// colour per face, covers, seam flaps. For an unlit scene it gives the same picture
-/// as [`picture`]; the benchmark checks that.
+/// as [`limn_paint::picture`]; the benchmark checks that.
 pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     let cam = &ordered.camera;
     let mut cache: Vec<Option<[f64; 4]>> = vec![None; scene.faces.len()];
