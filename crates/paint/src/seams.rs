@@ -39,7 +39,9 @@ pub(crate) fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
 /// Adds seam flaps: viewers anti-alias each path on its own, so where two fills meet
 /// along an edge both edge pixels are only partly covered and the background shows
 /// through as a hairline. For every edge an opaque fragment shares (end points equal)
-/// with an opaque fragment of another face painted *later*, a flap in the first
+/// with an opaque fragment of another face painted *later* (or of its own face, on the
+/// other side of the edge, with fragments of other faces painted between them), a flap
+/// in the first
 /// fragment's paint (for a smooth fragment: vertex colours that run along the edge as
 /// the fragment's do, constant across it; textured: the same texture map) is painted
 /// right after it: the part of the later fragment within
@@ -287,7 +289,7 @@ fn area2(p: &[[f64; 2]]) -> f64 {
 const FRAGMENTS_PER_TASK: usize = 2048;
 
 /// Pushes onto `out` the flaps painted right after fragment `i` (`f`): one per edge it
-/// shares with a later opaque fragment of another face.
+/// shares with a later opaque fragment ([`LaterNeighbours`]).
 fn flaps_after(
     fragments: &[PaintFragment],
     i: usize,
@@ -364,7 +366,8 @@ fn opaque(f: &PaintFragment) -> bool {
 }
 
 /// For every edge of every opaque fragment, the first opaque fragment of another face
-/// painted later that has the same edge (end points equal). Found by sorting all
+/// painted later that has the same edge (end points equal), or of its own face beyond
+/// the edge and beyond a fragment of another face. Found by sorting all
 /// edges by key, then paint order: the fragments sharing an edge become neighbours in
 /// one vector, read front to back (a hash table of the edges cost a cache miss per
 /// edge on large pictures).
@@ -436,6 +439,23 @@ impl LaterNeighbours {
             }
         });
         edges.par_sort_unstable();
+        // Which stretch of consecutive fragments of one face each fragment is in: a piece
+        // of a face gets flaps into the later pieces of its face across an edge (running
+        // the other way round: on the other side) when other faces are painted between
+        // them, which the writers cannot draw as one path with it.
+        let mut stretch = Vec::with_capacity(n);
+        let mut count = 0u32;
+        for (j, f) in fragments.iter().enumerate() {
+            if j > 0 && (f.face, f.object) != (fragments[j - 1].face, fragments[j - 1].object) {
+                count += 1;
+            }
+            stretch.push(count);
+        }
+        let opposite = |i: usize, e: u32, j: usize, f: u32| {
+            let (p, q) = (&fragments[i].points, &fragments[j].points);
+            let (e, f) = (e as usize, f as usize);
+            p[e] == q[(f + 1) % q.len()] && p[(e + 1) % p.len()] == q[f]
+        };
         // Groups of one hash, in parallel. A fragment's key and face are read only when
         // a later fragment has the same hash (in a mesh, one of an edge's two
         // fragments), and the candidates' only then.
@@ -452,7 +472,9 @@ impl LaterNeighbours {
                             return false;
                         }
                         let (face, k) = *own.get_or_insert_with(|| (fragments[i].face, key(i, e)));
-                        fragments[j].face != face && k == key(j, f)
+                        k == key(j, f)
+                            && (fragments[j].face != face
+                                || (stretch[j] != stretch[i] && opposite(i, e, j, f)))
                     });
                     if let Some(&(_, j, _)) = found {
                         first_later[starts[i] + e as usize].store(j, Ordering::Relaxed);
@@ -465,7 +487,8 @@ impl LaterNeighbours {
         }
     }
 
-    /// The first later fragment of another face sharing edge `e` of fragment `i`.
+    /// The first later fragment of another face (or of `i`'s, see [`LaterNeighbours`])
+    /// sharing edge `e` of fragment `i`.
     fn of(&self, i: usize, e: usize) -> Option<usize> {
         let j = self.first_later[self.starts[i] + e].load(Ordering::Relaxed);
         (j != NO_FRAGMENT).then_some(j as usize)
@@ -794,7 +817,19 @@ mod tests {
                 let Some(js) = later.get(&edge_key(a, b)) else {
                     continue;
                 };
-                let Some(&j) = js.iter().find(|&&j| j > i && fragments[j].face != f.face) else {
+                // Of another face, or of this one on the other side of the edge with
+                // another face painted between them.
+                let beyond = |j: usize| {
+                    let q = &fragments[j].points;
+                    let m = q.len();
+                    (0..m).any(|k| q[k] == b && q[(k + 1) % m] == a)
+                        && (i..j)
+                            .any(|k| (fragments[k].face, fragments[k].object) != (f.face, f.object))
+                };
+                let Some(&j) = js
+                    .iter()
+                    .find(|&&j| j > i && (fragments[j].face != f.face || beyond(j)))
+                else {
                     continue;
                 };
                 if let Some(flap) = flap(&fragments[j].points, a, b, width) {
