@@ -12,6 +12,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use rayon::prelude::*;
 
+use crate::seams_across::Across;
 use crate::PaintFragment;
 
 /// The bits of an edge's end points, smaller end first (an undirected edge key).
@@ -78,6 +79,7 @@ pub fn seam_flaps_indexed(
     join: FlapJoin,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let later = LaterNeighbours::new(&fragments);
+    let across = Across::new(&fragments);
     // The flaps first (they read the later fragments as they are), in blocks of fragments
     // in parallel, in the order of the fragments they follow.
     let mut parts: Vec<BlockFlaps> = fragments
@@ -88,7 +90,7 @@ pub fn seam_flaps_indexed(
             for (k, f) in block.iter().enumerate() {
                 let i = c * FRAGMENTS_PER_TASK + k;
                 let start = flaps.len();
-                flaps_after(&fragments, i, f, &later, width, &mut flaps);
+                flaps_after(&fragments, i, f, (&later, &across), width, &mut flaps);
                 if join == FlapJoin::Joined && flaps.len() > start {
                     if let Some(outline) = joined_outline(f, &flaps[start..]) {
                         flaps.truncate(start);
@@ -294,7 +296,7 @@ fn flaps_after(
     fragments: &[PaintFragment],
     i: usize,
     f: &PaintFragment,
-    later: &LaterNeighbours,
+    (later, across): (&LaterNeighbours, &Across),
     width: f64,
     out: &mut Vec<(usize, PaintFragment)>,
 ) {
@@ -306,6 +308,15 @@ fn flaps_after(
         let (a, b) = (f.points[e], f.points[(e + 1) % n]);
         // The first fragment of another face painted after this one.
         let Some(j) = later.of(i, e) else {
+            // Else later pieces of its own face and colour it meets at T-junctions: a
+            // flap along their whole edge, in their (and its) colour.
+            for (j, k) in across.of(i, e) {
+                let q = &fragments[j].points;
+                let (u, v) = (q[k], q[(k + 1) % q.len()]);
+                if let Some(points) = flap(q, u, v, width) {
+                    out.push((i, flat_flap(f, points)));
+                }
+            }
             continue;
         };
         let Some(points) = flap(&fragments[j].points, a, b, width) else {
@@ -344,6 +355,20 @@ fn flaps_after(
                 original_edges: Vec::new(),
             },
         ));
+    }
+}
+
+/// A flap of flat fragment `f` with corners `points`.
+fn flat_flap(f: &PaintFragment, points: Vec<[f64; 2]>) -> PaintFragment {
+    PaintFragment {
+        points,
+        fill: f.fill,
+        vertex_colors: None,
+        flap: true,
+        texture: None,
+        face: f.face,
+        object: f.object,
+        original_edges: Vec::new(),
     }
 }
 
