@@ -94,6 +94,12 @@ enum Page {
 
 /// The share of smooth pixels (of `reference`) where `viewer` agrees within [`LEVELS`].
 fn agreement(reference: &Raster, viewer: &Raster, page: Page) -> f64 {
+    let everywhere = [0, 0, reference.width, reference.height];
+    agreement_in(reference, viewer, page, everywhere)
+}
+
+/// [`agreement`] in the window `[x0, y0, x1, y1]` (pixels `x0 <= x < x1`, `y0 <= y < y1`).
+fn agreement_in(reference: &Raster, viewer: &Raster, page: Page, window: [usize; 4]) -> f64 {
     assert_eq!(
         (viewer.width, viewer.height),
         (reference.width, reference.height),
@@ -102,6 +108,10 @@ fn agreement(reference: &Raster, viewer: &Raster, page: Page) -> f64 {
     let smooth = smooth_interior(reference);
     let (mut n, mut good) = (0usize, 0usize);
     for (i, s) in smooth.iter().enumerate() {
+        let (x, y) = (i % reference.width, i / reference.width);
+        if x < window[0] || x >= window[2] || y < window[1] || y >= window[3] {
+            continue;
+        }
         // Smooth pixels of the pictures' content: where both show the white page is left
         // out, so that a small figure on a large page is judged by its figure.
         let (a, b) = (reference.rgb[i], viewer.rgb[i]);
@@ -298,6 +308,56 @@ fn the_demo_is_seamless_in_every_viewer() {
         assert_eq!(r.code, 0, "{}", r.stderr);
     }
     viewers_agree(dir.path(), "demo", Page::LeftOut);
+}
+
+/// The demo's floor and boxes are split into pieces of a few colours, lit and shadowed:
+/// the floor along the shadows of the sphere's 5,120 triangles into hundreds of pieces
+/// one after another in paint order, the boxes' faces by each other (the one passes
+/// through the other) into pieces with the other box's painted between them, meeting at
+/// T-junctions. Drawn as separate paths, every cut between two pieces of one colour let
+/// what lies beneath (the lit face, the other box) show as a hairline: in the sphere's
+/// shadow Chromium 96.8 %, rsvg 96.7 % of the smooth pixels agreed, on the boxes 99.4 %
+/// both. A face's pieces of one colour in a stretch are now one path, and pieces with
+/// other faces between them get seam flaps, also at T-junctions (shadow: Chromium 99.6 %,
+/// rsvg 100 %; boxes: 99.99 % both).
+#[test]
+fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
+    let dir = tempdir();
+    for ext in ["png", "svg", "pdf"] {
+        let out = format!("shadow.{ext}");
+        let r = limn(dir.path(), &["demo", "-o", &out, "--quiet"]);
+        assert_eq!(r.code, 0, "{}", r.stderr);
+    }
+    let reference = read_png(&dir.path().join("shadow.png"));
+    // The sphere's shadow on the floor, below and left of the sphere; the boxes.
+    let windows = [
+        ("shadow", [600, 270, 820, 400]),
+        ("boxes", [400, 200, 560, 390]),
+    ];
+    let mut report = Vec::new();
+    let mut files = vec![dir.path().join("shadow.png")];
+    let mut failed = false;
+    let (w, h) = (reference.width, reference.height);
+    for (viewer, png) in view(dir.path(), "shadow", w, h) {
+        let raster = read_png(&png);
+        for (name, window) in windows {
+            let share = agreement_in(&reference, &raster, Page::LeftOut, window);
+            report.push(format!("{viewer} {name} {:.2} %", 100.0 * share));
+            failed |= share < AGREE;
+        }
+        files.push(png);
+    }
+    eprintln!("the demo's shadow and boxes: {}", report.join(", "));
+    if failed {
+        let kept = keep("shadow", &files);
+        panic!(
+            "the demo's shadow and boxes: smooth pixels agreeing with limn's PNG within {LEVELS} levels: \
+             {} (at least {:.1} % wanted; rasters kept in {})",
+            report.join(", "),
+            100.0 * AGREE,
+            kept.display()
+        );
+    }
 }
 
 /// A UV sphere of `n` rings as OBJ with vertex normals (smooth shading), in material `m`.

@@ -434,7 +434,14 @@ impl Painter for EpsPainter {
             sink.maybe_flush()?;
             Ok(())
         };
-        let counts = walk_with_marks(picture, &checked.guard, key, on_run, on_mark)?;
+        let counts = walk_with_marks(
+            picture,
+            &checked.guard,
+            checked.runs(),
+            key,
+            on_run,
+            on_mark,
+        )?;
         let (mut sink, _, mut stats) = state.into_inner();
         sink.buf.extend_from_slice(b"end\nshowpage\n%%EOF\n");
         stats.skipped += counts.skipped;

@@ -95,6 +95,7 @@ pub mod phong;
 mod png;
 mod runs;
 mod seams;
+mod seams_across;
 mod smooth;
 mod svg;
 mod svg_smooth;

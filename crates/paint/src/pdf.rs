@@ -516,7 +516,14 @@ impl Painter for PdfPainter {
             flush_layer(&mut c, &mut stats.borrow_mut());
             paint_mark(m, &checked.guard, &mut *c, &mut stats.borrow_mut())
         };
-        let counts = walk_with_marks(picture, &checked.guard, key, on_run, on_mark)?;
+        let counts = walk_with_marks(
+            picture,
+            &checked.guard,
+            checked.runs(),
+            key,
+            on_run,
+            on_mark,
+        )?;
         let mut c = c.into_inner();
         let mut stats = stats.into_inner();
         flush_layer(&mut c, &mut stats);

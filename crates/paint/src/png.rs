@@ -31,7 +31,7 @@ use tiny_skia::{
 
 use super::marks::{circle_beziers, glyph_rects, paint_mark, scaled, MarkSink};
 use super::number::{channel_u8, rgb_u8};
-use super::runs::{check, reversals, walk_with_marks, Frag};
+use super::runs::{check, reversals, walk_with_marks, Frag, Runs};
 use super::{Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PngPainter`].
@@ -227,7 +227,14 @@ impl PngPainter {
             };
             paint_mark(m, &checked.guard, &mut sink, &mut stats.borrow_mut())
         };
-        let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
+        let counts = walk_with_marks(
+            picture,
+            &checked.guard,
+            Runs::Consecutive,
+            style_key,
+            on_run,
+            on_mark,
+        )?;
         let mut stats = stats.into_inner();
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;

@@ -110,6 +110,17 @@ pub(crate) struct Checked {
     pub guard: Guard,
 }
 
+impl Checked {
+    /// How vector writers form runs: grouped by face unless outlines are drawn (see
+    /// [`Runs::GroupedByFace`]).
+    pub(crate) fn runs(&self) -> Runs {
+        match self.outline {
+            None => Runs::GroupedByFace,
+            Some(_) => Runs::Consecutive,
+        }
+    }
+}
+
 /// Checks the picture-wide values every backend relies on.
 pub(crate) fn check(picture: &Picture) -> Result<Checked, PaintError> {
     if picture.width == 0 || picture.height == 0 {
@@ -335,28 +346,44 @@ pub(crate) fn walk<'a, K: PartialEq>(
     key: impl FnMut(&Frag<'a>) -> K,
     run: impl FnMut(&[Frag<'a>], &K) -> Result<(), PaintError>,
 ) -> Result<Counts, PaintError> {
-    walk_with_marks(picture, guard, key, run, |_| Ok(()))
+    walk_with_marks(picture, guard, Runs::Consecutive, key, run, |_| Ok(()))
 }
 
-/// [`walk`], and hands every mark of [`Picture::marks`] to `mark` at its paint position
-/// (see [`Picture`]): a run never spans a mark.
+/// How [`walk_with_marks`] forms runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Runs {
+    /// Consecutive fragments of one object and face with the same key.
+    Consecutive,
+    /// In each stretch of consecutive fragments of one object and face, all those with
+    /// the same key, at the place of the first of them: a face's lit pieces in one path
+    /// and its shadowed pieces in another, whatever their order, so that no edge between
+    /// two pieces of one colour is drawn twice (viewers anti-alias each path on its own:
+    /// such an edge would let what lies beneath show through as a hairline). The picture
+    /// stays the same: the pieces of a face do not overlap (they partition it); its
+    /// first piece may be the whole face (a cover, see `covers.rs`), which stays first;
+    /// seam flaps lie inside fragments of other faces, painted after the stretch. Not
+    /// for pictures with outlines, whose strokes are drawn after each run's fill and so
+    /// would overlap the fills of other runs in another order.
+    GroupedByFace,
+}
+
+/// [`walk`], with runs formed as `runs` says, and hands every mark of [`Picture::marks`]
+/// to `mark` at its paint position (see [`Picture`]): a run never spans a mark.
 pub(crate) fn walk_with_marks<'a, K: PartialEq>(
     picture: &'a Picture,
     guard: &Guard,
+    runs: Runs,
     mut key: impl FnMut(&Frag<'a>) -> K,
     mut run: impl FnMut(&[Frag<'a>], &K) -> Result<(), PaintError>,
     mut mark: impl FnMut(&'a Mark) -> Result<(), PaintError>,
 ) -> Result<Counts, PaintError> {
     let mut counts = Counts::default();
-    let mut pending: Vec<Frag<'a>> = Vec::new();
-    let mut current: Option<(u32, u32, K)> = None;
+    // The stretch of fragments (and their keys) of the current object and face.
+    let mut stretch = Stretch::default();
     let mut marks = picture.marks.iter().peekable();
     for (i, f) in picture.fragments.iter().enumerate() {
         if marks.peek().is_some_and(|m| m.before <= i) {
-            if let Some((_, _, ck)) = current.take() {
-                run(&pending, &ck)?;
-                pending.clear();
-            }
+            stretch.flush(runs, &mut run)?;
             while let Some(m) = marks.next_if(|m| m.before <= i) {
                 mark(m)?;
             }
@@ -381,23 +408,86 @@ pub(crate) fn walk_with_marks<'a, K: PartialEq>(
             }
         };
         let k = key(&frag);
-        let same = matches!(&current, Some((o, face, ck)) if *o == f.object && *face == f.face && *ck == k);
-        if !same {
-            if let Some((_, _, ck)) = &current {
-                run(&pending, ck)?;
-                pending.clear();
-            }
-            current = Some((f.object, f.face, k));
+        if stretch.of != Some((f.object, f.face)) {
+            stretch.flush(runs, &mut run)?;
+            stretch.of = Some((f.object, f.face));
         }
-        pending.push(frag);
+        stretch.frags.push(frag);
+        stretch.keys.push(k);
     }
-    if let Some((_, _, ck)) = &current {
-        run(&pending, ck)?;
-    }
+    stretch.flush(runs, &mut run)?;
     for m in marks {
         mark(m)?;
     }
     Ok(counts)
+}
+
+/// Consecutive fragments of one object and face, with their keys.
+struct Stretch<'a, K> {
+    of: Option<(u32, u32)>,
+    frags: Vec<Frag<'a>>,
+    keys: Vec<K>,
+}
+
+impl<K> Default for Stretch<'_, K> {
+    fn default() -> Self {
+        Stretch {
+            of: None,
+            frags: Vec::new(),
+            keys: Vec::new(),
+        }
+    }
+}
+
+impl<'a, K: PartialEq> Stretch<'a, K> {
+    /// Hands the stretch's runs to `run` (see [`Runs`]) and empties it.
+    fn flush(
+        &mut self,
+        runs: Runs,
+        run: &mut impl FnMut(&[Frag<'a>], &K) -> Result<(), PaintError>,
+    ) -> Result<(), PaintError> {
+        let n = self.frags.len();
+        // Where each run of equal keys starts.
+        let starts: Vec<usize> = (0..n)
+            .filter(|&i| i == 0 || self.keys[i] != self.keys[i - 1])
+            .collect();
+        if runs == Runs::Consecutive || starts.len() <= 1 {
+            for (s, &start) in starts.iter().enumerate() {
+                let end = starts.get(s + 1).copied().unwrap_or(n);
+                run(&self.frags[start..end], &self.keys[start])?;
+            }
+        } else {
+            // Per run, the first run with its key (a stretch has few keys: a face's
+            // colours in and out of shadows).
+            let mut firsts: Vec<usize> = Vec::new();
+            let mut group_of = Vec::with_capacity(starts.len());
+            for &start in &starts {
+                let k = &self.keys[start];
+                let g = match firsts.iter().position(|&f| self.keys[f] == *k) {
+                    Some(g) => g,
+                    None => {
+                        firsts.push(start);
+                        firsts.len() - 1
+                    }
+                };
+                group_of.push(g);
+            }
+            let mut group = Vec::new();
+            for (g, &first) in firsts.iter().enumerate() {
+                group.clear();
+                for (s, &start) in starts.iter().enumerate() {
+                    if group_of[s] == g {
+                        let end = starts.get(s + 1).copied().unwrap_or(n);
+                        group.extend_from_slice(&self.frags[start..end]);
+                    }
+                }
+                run(&group, &self.keys[first])?;
+            }
+        }
+        self.frags.clear();
+        self.keys.clear();
+        Ok(())
+    }
 }
 
 #[cfg(test)]
@@ -510,6 +600,56 @@ mod tests {
         .unwrap();
         assert_eq!(sizes, vec![2, 1, 2]);
         assert_eq!(counts.skipped, 1);
+    }
+
+    #[test]
+    fn grouped_runs_gather_a_faces_pieces_by_colour() {
+        // Face 1: lit, shadowed, lit, shadowed, lit; then face 2 (lit), then face 1
+        // again (a new stretch: not joined to the first).
+        let mut p = Picture::new(10, 10);
+        let tri = vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        let (lit, dark) = ([1.0, 1.0, 1.0, 1.0], [0.5, 0.5, 0.5, 1.0]);
+        for (k, (face, fill)) in [
+            (1, lit),
+            (1, dark),
+            (1, lit),
+            (1, lit),
+            (1, dark),
+            (2, lit),
+            (1, dark),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let mut f = PaintFragment::new(tri.clone(), fill);
+            f.face = face;
+            // Tells the fragments apart.
+            f.points[0][0] = k as f64;
+            p.fragments.push(f);
+        }
+        let runs_of = |runs: Runs| {
+            let mut got = Vec::new();
+            walk_with_marks(
+                &p,
+                &guard(),
+                runs,
+                |f| f.src.fill[0] == 1.0,
+                |run, _| {
+                    got.push(run.iter().map(|f| f.points[0][0] as usize).collect());
+                    Ok(())
+                },
+                |_| Ok(()),
+            )
+            .unwrap();
+            got
+        };
+        let consecutive: Vec<Vec<usize>> = runs_of(Runs::Consecutive);
+        assert_eq!(
+            consecutive,
+            vec![vec![0], vec![1], vec![2, 3], vec![4], vec![5], vec![6]]
+        );
+        let grouped: Vec<Vec<usize>> = runs_of(Runs::GroupedByFace);
+        assert_eq!(grouped, vec![vec![0, 2, 3], vec![1, 4], vec![5], vec![6]]);
     }
 
     #[test]

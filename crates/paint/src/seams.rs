@@ -12,6 +12,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use rayon::prelude::*;
 
+use crate::seams_across::Across;
 use crate::PaintFragment;
 
 /// The bits of an edge's end points, smaller end first (an undirected edge key).
@@ -39,7 +40,9 @@ pub(crate) fn edge_key(a: [f64; 2], b: [f64; 2]) -> EdgeKey {
 /// Adds seam flaps: viewers anti-alias each path on its own, so where two fills meet
 /// along an edge both edge pixels are only partly covered and the background shows
 /// through as a hairline. For every edge an opaque fragment shares (end points equal)
-/// with an opaque fragment of another face painted *later*, a flap in the first
+/// with an opaque fragment of another face painted *later* (or of its own face, on the
+/// other side of the edge, with fragments of other faces painted between them), a flap
+/// in the first
 /// fragment's paint (for a smooth fragment: vertex colours that run along the edge as
 /// the fragment's do, constant across it; textured: the same texture map) is painted
 /// right after it: the part of the later fragment within
@@ -76,6 +79,7 @@ pub fn seam_flaps_indexed(
     join: FlapJoin,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let later = LaterNeighbours::new(&fragments);
+    let across = Across::new(&fragments);
     // The flaps first (they read the later fragments as they are), in blocks of fragments
     // in parallel, in the order of the fragments they follow.
     let mut parts: Vec<BlockFlaps> = fragments
@@ -86,7 +90,7 @@ pub fn seam_flaps_indexed(
             for (k, f) in block.iter().enumerate() {
                 let i = c * FRAGMENTS_PER_TASK + k;
                 let start = flaps.len();
-                flaps_after(&fragments, i, f, &later, width, &mut flaps);
+                flaps_after(&fragments, i, f, (&later, &across), width, &mut flaps);
                 if join == FlapJoin::Joined && flaps.len() > start {
                     if let Some(outline) = joined_outline(f, &flaps[start..]) {
                         flaps.truncate(start);
@@ -287,12 +291,12 @@ fn area2(p: &[[f64; 2]]) -> f64 {
 const FRAGMENTS_PER_TASK: usize = 2048;
 
 /// Pushes onto `out` the flaps painted right after fragment `i` (`f`): one per edge it
-/// shares with a later opaque fragment of another face.
+/// shares with a later opaque fragment ([`LaterNeighbours`]).
 fn flaps_after(
     fragments: &[PaintFragment],
     i: usize,
     f: &PaintFragment,
-    later: &LaterNeighbours,
+    (later, across): (&LaterNeighbours, &Across),
     width: f64,
     out: &mut Vec<(usize, PaintFragment)>,
 ) {
@@ -304,6 +308,15 @@ fn flaps_after(
         let (a, b) = (f.points[e], f.points[(e + 1) % n]);
         // The first fragment of another face painted after this one.
         let Some(j) = later.of(i, e) else {
+            // Else later pieces of its own face and colour it meets at T-junctions: a
+            // flap along their whole edge, in their (and its) colour.
+            for (j, k) in across.of(i, e) {
+                let q = &fragments[j].points;
+                let (u, v) = (q[k], q[(k + 1) % q.len()]);
+                if let Some(points) = flap(q, u, v, width) {
+                    out.push((i, flat_flap(f, points)));
+                }
+            }
             continue;
         };
         let Some(points) = flap(&fragments[j].points, a, b, width) else {
@@ -345,6 +358,20 @@ fn flaps_after(
     }
 }
 
+/// A flap of flat fragment `f` with corners `points`.
+fn flat_flap(f: &PaintFragment, points: Vec<[f64; 2]>) -> PaintFragment {
+    PaintFragment {
+        points,
+        fill: f.fill,
+        vertex_colors: None,
+        flap: true,
+        texture: None,
+        face: f.face,
+        object: f.object,
+        original_edges: Vec::new(),
+    }
+}
+
 /// The colour at `p` of the ramp from `ca` at `a` to `cb` at `b`: the colours of edge
 /// `a`–`b`, carried across it unchanged (`p` projected onto the edge, clamped to it).
 fn along(a: [f64; 2], b: [f64; 2], ca: [f64; 4], cb: [f64; 4], p: [f64; 2]) -> [f64; 4] {
@@ -364,7 +391,8 @@ fn opaque(f: &PaintFragment) -> bool {
 }
 
 /// For every edge of every opaque fragment, the first opaque fragment of another face
-/// painted later that has the same edge (end points equal). Found by sorting all
+/// painted later that has the same edge (end points equal), or of its own face beyond
+/// the edge and beyond a fragment of another face. Found by sorting all
 /// edges by key, then paint order: the fragments sharing an edge become neighbours in
 /// one vector, read front to back (a hash table of the edges cost a cache miss per
 /// edge on large pictures).
@@ -436,6 +464,23 @@ impl LaterNeighbours {
             }
         });
         edges.par_sort_unstable();
+        // Which stretch of consecutive fragments of one face each fragment is in: a piece
+        // of a face gets flaps into the later pieces of its face across an edge (running
+        // the other way round: on the other side) when other faces are painted between
+        // them, which the writers cannot draw as one path with it.
+        let mut stretch = Vec::with_capacity(n);
+        let mut count = 0u32;
+        for (j, f) in fragments.iter().enumerate() {
+            if j > 0 && (f.face, f.object) != (fragments[j - 1].face, fragments[j - 1].object) {
+                count += 1;
+            }
+            stretch.push(count);
+        }
+        let opposite = |i: usize, e: u32, j: usize, f: u32| {
+            let (p, q) = (&fragments[i].points, &fragments[j].points);
+            let (e, f) = (e as usize, f as usize);
+            p[e] == q[(f + 1) % q.len()] && p[(e + 1) % p.len()] == q[f]
+        };
         // Groups of one hash, in parallel. A fragment's key and face are read only when
         // a later fragment has the same hash (in a mesh, one of an edge's two
         // fragments), and the candidates' only then.
@@ -452,7 +497,9 @@ impl LaterNeighbours {
                             return false;
                         }
                         let (face, k) = *own.get_or_insert_with(|| (fragments[i].face, key(i, e)));
-                        fragments[j].face != face && k == key(j, f)
+                        k == key(j, f)
+                            && (fragments[j].face != face
+                                || (stretch[j] != stretch[i] && opposite(i, e, j, f)))
                     });
                     if let Some(&(_, j, _)) = found {
                         first_later[starts[i] + e as usize].store(j, Ordering::Relaxed);
@@ -465,7 +512,8 @@ impl LaterNeighbours {
         }
     }
 
-    /// The first later fragment of another face sharing edge `e` of fragment `i`.
+    /// The first later fragment of another face (or of `i`'s, see [`LaterNeighbours`])
+    /// sharing edge `e` of fragment `i`.
     fn of(&self, i: usize, e: usize) -> Option<usize> {
         let j = self.first_later[self.starts[i] + e].load(Ordering::Relaxed);
         (j != NO_FRAGMENT).then_some(j as usize)
@@ -794,7 +842,19 @@ mod tests {
                 let Some(js) = later.get(&edge_key(a, b)) else {
                     continue;
                 };
-                let Some(&j) = js.iter().find(|&&j| j > i && fragments[j].face != f.face) else {
+                // Of another face, or of this one on the other side of the edge with
+                // another face painted between them.
+                let beyond = |j: usize| {
+                    let q = &fragments[j].points;
+                    let m = q.len();
+                    (0..m).any(|k| q[k] == b && q[(k + 1) % m] == a)
+                        && (i..j)
+                            .any(|k| (fragments[k].face, fragments[k].object) != (f.face, f.object))
+                };
+                let Some(&j) = js
+                    .iter()
+                    .find(|&&j| j > i && (fragments[j].face != f.face || beyond(j)))
+                else {
                     continue;
                 };
                 if let Some(flap) = flap(&fragments[j].points, a, b, width) {

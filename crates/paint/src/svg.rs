@@ -306,7 +306,14 @@ impl Painter for SvgPainter {
             sink.maybe_flush()?;
             Ok(())
         };
-        let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
+        let counts = walk_with_marks(
+            picture,
+            &checked.guard,
+            checked.runs(),
+            style_key,
+            on_run,
+            on_mark,
+        )?;
         let mut sink = sink.into_inner();
         let mut stats = stats.into_inner();
         flush_layer(&mut sink, &mut stats)?;

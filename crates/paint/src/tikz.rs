@@ -304,7 +304,14 @@ impl Painter for TikzPainter {
             st.sink.maybe_flush()?;
             Ok(())
         };
-        let counts = walk_with_marks(picture, &checked.guard, style_key, on_run, on_mark)?;
+        let counts = walk_with_marks(
+            picture,
+            &checked.guard,
+            checked.runs(),
+            style_key,
+            on_run,
+            on_mark,
+        )?;
         let State {
             mut sink,
             mut stats,
