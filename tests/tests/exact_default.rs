@@ -91,8 +91,12 @@ fn default_pictures_of_meshes_and_soups_are_exact() {
         for sort in [SortMode::Adaptive, SortMode::Bsp] {
             let (bad, flaps) = wrong_pixels(scene, &cam, sort);
             assert_eq!(bad, 0, "{name} / {}: {bad} wrong pixels", sort.name());
-            // Neighbouring mesh faces share edges; soup triangles share none.
-            assert_eq!(flaps > 0, name == "sphere", "{name}: {flaps} flaps");
+            // Neighbouring mesh faces share edges, so the sphere has flaps; soup
+            // triangles share none, but the pieces of one triangle split by another
+            // may get flaps into each other.
+            if name == "sphere" {
+                assert!(flaps > 0, "{name}: {flaps} flaps");
+            }
         }
     }
 }
