@@ -218,3 +218,61 @@ fn seen_from_above_each_quad_paints_its_cell() {
         }
     }
 }
+
+#[test]
+fn a_region_whose_hole_is_joined_by_a_cut_is_drawn_without_its_hole() {
+    // A filled contour region or a glyph written as one outline: a 6 × 4 rectangle with
+    // two 1 × 1 holes, the first joined to the outside by a cut run both ways and the
+    // second to the first, tilted out of the coordinate planes. Seen from straight above
+    // it paints 22/24 of what its rectangle alone paints (the same frame: the same
+    // bounds).
+    let keyhole = [
+        [0.0, 0.0],
+        [6.0, 0.0],
+        [6.0, 4.0],
+        [0.0, 4.0],
+        [0.0, 0.0],
+        [1.0, 2.0],
+        [2.0, 2.0],
+        [2.0, 1.0],
+        [1.0, 1.0],
+        [1.0, 2.0],
+        [4.0, 2.0],
+        [4.0, 3.0],
+        [5.0, 3.0],
+        [5.0, 2.0],
+        [4.0, 2.0],
+        [1.0, 2.0],
+    ];
+    let painted = |outline: &[[f64; 2]], reversed: bool| {
+        let mut s = Scene::default();
+        let m = s.add_material(Material::unlit("region", [0.4, 0.5, 0.6]));
+        let o = s.add_object("region");
+        let mut corners: Vec<DVec3> = outline
+            .iter()
+            .map(|p| DVec3::new(p[0], p[1], 0.25 * p[0] + 0.125 * p[1]))
+            .collect();
+        if reversed {
+            corners.reverse();
+        }
+        s.add_polygon(&corners, m, o).expect("valid polygon");
+        let cam = camera(&s, [0.0, 0.0, 1.0], true);
+        let ordered = limn_depthsort::order(&s, &cam, &OrderOptions::default()).expect("orders");
+        let area: f64 = ordered
+            .fragments
+            .iter()
+            .map(|f| area2(&f.points).abs() / 2.0)
+            .sum();
+        (area, s)
+    };
+    for reversed in [false, true] {
+        let (rectangle, _) = painted(&keyhole[..4], reversed);
+        let (region, scene) = painted(&keyhole, reversed);
+        assert!(
+            (region / rectangle - 22.0 / 24.0).abs() <= 1e-9,
+            "reversed {reversed}: the region paints {region} px², its rectangle {rectangle} px²"
+        );
+        let cam = camera(&scene, [0.3, -0.5, 1.0], false);
+        agrees_with_ray_casting(&scene, &cam).expect("agrees with ray casting");
+    }
+}

@@ -14,8 +14,11 @@
 //!    exactly when one of its diagonals does this);
 //! 2. an outline that turns strictly the same way at every corner and winds once
 //!    (strictly convex) is fanned from corner 0;
-//! 3. any other outline with pairwise distinct projected corners whose edges do not
-//!    cross is triangulated (constrained Delaunay, see [`crate::triangulate`]).
+//! 3. any other outline whose corners project to distinct points (a corner repeated
+//!    exactly is one point), whose edges do not cross, and which winds once around what
+//!    it encloses is triangulated (constrained Delaunay, see [`crate::triangulate`]). It
+//!    may touch itself at a repeated corner and run back along one of its own edges: a
+//!    region whose hole is joined to its outside by a cut is drawn without its hole.
 //!
 //! When no projection is simple (a face that crosses itself from every axis, such as a
 //! planar bow tie or star), the face is fanned from corner 0, as OpenGL and gl2ps draw
@@ -26,7 +29,7 @@
 use std::cmp::Ordering;
 
 use crate::plane::plane_axes;
-use crate::triangulate::{triangulate, Tri};
+use crate::triangulate::{triangulate, Tri, Triangulated};
 
 type P3 = [f64; 3];
 
@@ -93,14 +96,13 @@ fn simple_in_projection(
     if projections_collide(g, &pts2) {
         return None;
     }
-    let tris = triangulate(&pts2)?;
-    // The triangles are counter-clockwise in the projection; the outline runs the same
-    // way when an outline edge i → i + 1 appears in that direction in its triangle.
-    let ccw = tris.iter().find_map(|t| {
-        (0..3)
-            .find(|&e| t.original[e])
-            .map(|e| t.idx[(e + 1) % 3] == (t.idx[e] + 1) % n)
-    })?;
+    let Triangulated { tris, ccw } = triangulate(&pts2)?;
+    if tris.is_empty() {
+        // Seen edge-on along `k`: no area in this projection.
+        return None;
+    }
+    // The triangles are counter-clockwise in the projection: turned round when the
+    // outline runs the other way.
     Some(if ccw {
         tris
     } else {
@@ -229,6 +231,34 @@ mod tests {
                 assert_eq!(t.original[e], b == (a + 1) % 6, "edge {a}→{b}");
             }
         }
+    }
+
+    #[test]
+    fn a_keyhole_is_drawn_without_its_hole() {
+        // A square with a square hole joined by a cut, tilted out of the plane z = 0 so
+        // that it is seen along z: fanned from corner 0 it would cover the hole.
+        let g: Vec<P3> = [
+            [0.0, 0.0],
+            [4.0, 0.0],
+            [4.0, 4.0],
+            [0.0, 4.0],
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [1.0, 3.0],
+            [3.0, 3.0],
+            [3.0, 1.0],
+            [1.0, 1.0],
+        ]
+        .iter()
+        .map(|p| [p[0], p[1], 0.25 * p[0]])
+        .collect();
+        let tris = split_face(&g, newell(&g), orient);
+        assert_eq!(area_z(&g, &tris), 24.0);
+        let outline: usize = tris
+            .iter()
+            .map(|t| t.original.iter().filter(|&&o| o).count())
+            .sum();
+        assert_eq!(outline, 8);
     }
 
     #[test]

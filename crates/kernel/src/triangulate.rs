@@ -1,7 +1,9 @@
 //! Triangulation of non-convex outlines with spade's constrained Delaunay triangulation,
 //! shared by both kernels.
 
-use spade::handles::FixedVertexHandle;
+use std::collections::HashMap;
+
+use spade::handles::{FixedDirectedEdgeHandle, FixedVertexHandle};
 use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 /// One triangle of an outline: indices into the outline's corners, counter-clockwise in
@@ -13,10 +15,23 @@ pub(crate) struct Tri {
     pub(crate) original: [bool; 3],
 }
 
-/// Triangulates a closed outline given in 2D and returns the triangles inside it
-/// (even-odd rule on the constraint edges). `None` when the outline is not simple (a
-/// constraint edge would cross another one) or spade rejects a coordinate.
-pub(crate) fn triangulate(pts: &[[f64; 2]]) -> Option<Vec<Tri>> {
+/// The triangles inside a closed outline, and which way the outline runs.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct Triangulated {
+    /// The triangles, counter-clockwise in the plane of projection.
+    pub(crate) tris: Vec<Tri>,
+    /// Whether the outline runs counter-clockwise around what it encloses.
+    pub(crate) ccw: bool,
+}
+
+/// Triangulates a closed outline given in 2D and returns the triangles inside it, by
+/// the winding number of the outline's edges (nonzero rule). The outline may touch
+/// itself at a repeated corner and may run along one of its own edges back the other way,
+/// as a region whose hole is joined to its outside by a cut does: the two runs of the cut
+/// cancel, so the cut is inside and is not an outline edge. `None` when the outline is
+/// not simple in that sense (a constraint edge would cross another one, or it winds
+/// around some part twice or both ways round) or spade rejects a coordinate.
+pub(crate) fn triangulate(pts: &[[f64; 2]]) -> Option<Triangulated> {
     let mut cdt: ConstrainedDelaunayTriangulation<Point2<f64>> =
         ConstrainedDelaunayTriangulation::new();
     let mut handles: Vec<FixedVertexHandle> = Vec::with_capacity(pts.len());
@@ -32,39 +47,58 @@ pub(crate) fn triangulate(pts: &[[f64; 2]]) -> Option<Vec<Tri>> {
         handles.push(h);
     }
     let n = handles.len();
+    // Per directed edge of the triangulation: how many outline edges run along it in its
+    // direction, minus how many run the other way.
+    let mut net: HashMap<FixedDirectedEdgeHandle, i64> = HashMap::new();
     for i in 0..n {
         let (a, b) = (handles[i], handles[(i + 1) % n]);
         if a == b {
             continue;
         }
-        if cdt.try_add_constraint(a, b).is_empty() {
+        let along = cdt.try_add_constraint(a, b);
+        if along.is_empty() {
             return None;
         }
+        for e in along {
+            *net.entry(e).or_insert(0) += 1;
+            *net.entry(e.rev()).or_insert(0) -= 1;
+        }
     }
-    // Flood the faces from the outside; crossing a constraint edge toggles inside/outside.
+    // Flood the faces from the outside (winding 0). An outline edge has what it encloses
+    // on its left: crossing a directed edge from its left face to its right face lowers
+    // the winding number by the edge's net count.
     let faces = cdt.num_all_faces();
-    let mut adjacent: Vec<Vec<(usize, bool)>> = vec![Vec::new(); faces];
+    let mut adjacent: Vec<Vec<(usize, i64)>> = vec![Vec::new(); faces];
     for e in cdt.directed_edges() {
-        let constraint = cdt.is_constraint_edge(e.as_undirected().fix());
+        let d = net.get(&e.fix()).copied().unwrap_or(0);
         let (f, g) = (e.face().fix().index(), e.rev().face().fix().index());
-        adjacent[f].push((g, constraint));
+        adjacent[f].push((g, -d));
     }
-    let mut inside: Vec<Option<bool>> = vec![None; faces];
+    let mut winding: Vec<Option<i64>> = vec![None; faces];
     let outer = cdt.outer_face().fix().index();
-    inside[outer] = Some(false);
+    winding[outer] = Some(0);
     let mut stack = vec![outer];
     while let Some(f) = stack.pop() {
-        let here = inside[f].unwrap_or(false);
-        for &(g, toggles) in &adjacent[f] {
-            if inside[g].is_none() {
-                inside[g] = Some(here ^ toggles);
+        let here = winding[f].unwrap_or(0);
+        for &(g, delta) in &adjacent[f] {
+            if winding[g].is_none() {
+                winding[g] = Some(here + delta);
                 stack.push(g);
             }
         }
     }
+    // A simple outline encloses every inside triangle once, all the same way round.
+    let mut sign = 0;
+    for face in cdt.inner_faces() {
+        match winding[face.fix().index()] {
+            Some(0) => {}
+            Some(w @ (1 | -1)) if sign == 0 || sign == w => sign = w,
+            _ => return None,
+        }
+    }
     let mut out = Vec::new();
     for face in cdt.inner_faces() {
-        if inside[face.fix().index()] != Some(true) {
+        if winding[face.fix().index()] != Some(sign) || sign == 0 {
             continue;
         }
         let vs = face.vertices();
@@ -78,7 +112,7 @@ pub(crate) fn triangulate(pts: &[[f64; 2]]) -> Option<Vec<Tri>> {
             // Edge k of the face runs from vertex k to vertex k + 1.
             let from = e.from().fix();
             let pos = vs.iter().position(|v| v.fix() == from).unwrap_or(k);
-            original[pos] = cdt.is_constraint_edge(e.as_undirected().fix());
+            original[pos] = net.get(&e.fix()).is_some_and(|&d| d != 0);
         }
         let p = idx.map(|i| pts[i]);
         let orient = robust::orient2d(
@@ -104,7 +138,10 @@ pub(crate) fn triangulate(pts: &[[f64; 2]]) -> Option<Vec<Tri>> {
             });
         }
     }
-    Some(out)
+    Some(Triangulated {
+        tris: out,
+        ccw: sign > 0,
+    })
 }
 
 #[cfg(test)]
@@ -126,7 +163,7 @@ mod tests {
             [1.0, 2.0],
             [0.0, 2.0],
         ];
-        let tris = triangulate(&pts).unwrap();
+        let tris = triangulate(&pts).unwrap().tris;
         let total: f64 = tris.iter().map(|t| area(&pts, t)).sum();
         assert_eq!(total, 3.0);
         assert!(tris.iter().all(|t| area(&pts, t) > 0.0));
@@ -135,6 +172,87 @@ mod tests {
             .map(|t| t.original.iter().filter(|o| **o).count())
             .sum();
         assert_eq!(originals, 6);
+    }
+
+    /// A square with a square hole joined to its outside by a cut from (0, 0) to (1, 1).
+    const KEYHOLE: [[f64; 2]; 10] = [
+        [0.0, 0.0],
+        [4.0, 0.0],
+        [4.0, 4.0],
+        [0.0, 4.0],
+        [0.0, 0.0],
+        [1.0, 1.0],
+        [1.0, 3.0],
+        [3.0, 3.0],
+        [3.0, 1.0],
+        [1.0, 1.0],
+    ];
+
+    #[test]
+    fn a_keyhole_covers_the_region_without_its_hole() {
+        for reversed in [false, true] {
+            let mut pts = KEYHOLE.to_vec();
+            if reversed {
+                pts.reverse();
+            }
+            let t = triangulate(&pts).unwrap();
+            assert_eq!(t.ccw, !reversed);
+            let total: f64 = t.tris.iter().map(|t| area(&pts, t)).sum();
+            assert_eq!(total, 12.0, "reversed: {reversed}");
+            assert!(t.tris.iter().all(|t| area(&pts, t) > 0.0));
+            // The cut is inside: only the 4 + 4 sides of the square and the hole are
+            // outline edges.
+            let originals: usize = t
+                .tris
+                .iter()
+                .map(|t| t.original.iter().filter(|o| **o).count())
+                .sum();
+            assert_eq!(originals, 8);
+        }
+    }
+
+    #[test]
+    fn keyholes_cut_from_any_corner_cover_the_region_without_its_holes() {
+        // A 6 × 4 rectangle with two 1 × 1 holes, each joined by a cut from an outer
+        // corner (every choice of corners), the second hole also from the first.
+        let outer = [[0.0, 0.0], [6.0, 0.0], [6.0, 4.0], [0.0, 4.0]];
+        let hole = |x: f64, y: f64| [[x, y], [x, y + 1.0], [x + 1.0, y + 1.0], [x + 1.0, y]];
+        let (h1, h2) = (hole(1.0, 1.0), hole(4.0, 2.0));
+        let mut simple = 0;
+        for from in 0..4 {
+            for at1 in 0..4 {
+                for at2 in 0..4 {
+                    // outer from `from` round to itself, into h1 at `at1` round to itself,
+                    // on into h2 at `at2` round to itself, back to h1, back out.
+                    let mut pts = Vec::new();
+                    for k in 0..=4 {
+                        pts.push(outer[(from + k) % 4]);
+                    }
+                    for k in 0..=4 {
+                        pts.push(h1[(at1 + k) % 4]);
+                    }
+                    for k in 0..=4 {
+                        pts.push(h2[(at2 + k) % 4]);
+                    }
+                    pts.push(h1[at1]);
+                    let Some(t) = triangulate(&pts) else {
+                        // The cuts cross each other or an edge: not simple.
+                        continue;
+                    };
+                    let total: f64 = t.tris.iter().map(|t| area(&pts, t)).sum();
+                    assert_eq!(total, 22.0, "corners {from} {at1} {at2}");
+                    simple += 1;
+                }
+            }
+        }
+        assert!(simple >= 16, "only {simple} choices were simple");
+    }
+
+    #[test]
+    fn an_outline_around_a_region_twice_is_rejected() {
+        let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        let twice: Vec<[f64; 2]> = square.iter().chain(square.iter()).copied().collect();
+        assert!(triangulate(&twice).is_none());
     }
 
     #[test]
