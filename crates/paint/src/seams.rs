@@ -570,12 +570,15 @@ pub(crate) fn flap(
         .fold([0.0, 0.0], |s, p| [s[0] + p[0], s[1] + p[1]]);
     let c = [c[0] / m as f64, c[1] / m as f64];
     let mut out = Vec::with_capacity(m + 2);
+    // Per point of `out`: whether it is a crossing (not a corner of `poly`).
+    let mut crossing = Vec::with_capacity(m + 2);
     let mut crossings_inside = true;
     for k in 0..m {
         let (p, q) = (poly[k], poly[(k + 1) % m]);
         let (dp, dq) = (dist(p), dist(q));
         if dp <= 0.0 {
             out.push(p);
+            crossing.push(false);
         }
         if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
             let t = dp / (dp - dq);
@@ -583,6 +586,8 @@ pub(crate) fn flap(
             let (x, inside) = inside_towards(poly, side, (p, q), x, c);
             crossings_inside &= inside;
             out.push(x);
+            // A crossing rounded onto an end of its edge is that corner.
+            crossing.push(x != p && x != q);
         }
     }
     if out.len() < 3 || !has_area(&out) {
@@ -598,7 +603,7 @@ pub(crate) fn flap(
     // drawn towards their middle if the chord between them cuts a corner of `poly` off.
     let q: Vec<([f64; 2], bool)> = out
         .into_iter()
-        .map(|p| (p, !poly.contains(&p)))
+        .zip(crossing)
         .filter(|&(p, crossing)| crossing || p == a || p == b)
         .collect();
     let crossings = q.iter().filter(|&&(_, crossing)| crossing).count() as f64;
