@@ -8,6 +8,7 @@ use crate::broad::{box_pairs, estimated_box_pairs};
 use crate::bsp::{push_parts_as, Task};
 use crate::components::Components;
 use crate::detached::order_apart;
+use crate::face_runs::FaceRuns;
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
 use crate::partition::{choose_splitter, partition, SCORE_SAMPLE};
@@ -46,6 +47,7 @@ struct Workspace {
     fill: Vec<u32>,
     adj: Vec<u32>,
     comps: Components,
+    face_runs: FaceRuns,
     /// Pieces alone in their component, waiting to be emitted together.
     run: Vec<u32>,
 }
@@ -132,11 +134,22 @@ fn order_set<K: Kernel>(
         ws.fill[a as usize] += 1;
     }
     ws.comps.find(n, &ws.start, &ws.adj);
+    ws.face_runs.order(&ws.comps, n, &ws.start, &ws.adj, |v| {
+        ctx.pieces[set[v as usize] as usize].face
+    });
+    let members: Vec<&[u32]> = ws.comps.in_topological_order().collect();
 
     // Tasks are pushed last component first, so that they are popped in topological
-    // order; consecutive single pieces are emitted by one task.
+    // order (one that keeps the pieces of a face together); consecutive single pieces
+    // are emitted by one task.
     ws.run.clear();
-    for comp in ws.comps.in_topological_order().rev() {
+    for comp in ws
+        .face_runs
+        .order
+        .iter()
+        .rev()
+        .map(|&k| members[k as usize])
+    {
         if let [only] = comp {
             ws.run.push(set[*only as usize]);
             continue;

@@ -39,6 +39,7 @@ mod coincident;
 mod components;
 mod detached;
 mod eye;
+mod face_runs;
 mod feature_edges;
 mod geom;
 mod marks;
