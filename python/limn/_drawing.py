@@ -3,7 +3,7 @@ markers and texts in the style of the artists they come from, in display units."
 
 from __future__ import annotations
 
-from typing import Any, Tuple
+from typing import Any, List, Tuple
 
 import numpy as np
 
@@ -101,6 +101,47 @@ def draw_polygon(
         renderer.draw_path(gc, path, IdentityTransform(), fill)
         gc.restore()
         return
+    gc.set_linewidth(0)
+    gc.set_foreground((0, 0, 0, 0), isRGBA=True)
+    renderer.draw_path(gc, path, IdentityTransform(), fill)
+    gc.restore()
+    if edges is not None and len(edges):
+        codes = np.tile(np.array([Path.MOVETO, Path.LINETO], dtype=Path.code_type), len(edges))
+        gc = renderer.new_gc()
+        gc.set_clip_rectangle(clip)
+        gc.set_foreground(edge, isRGBA=True)
+        gc.set_linewidth(renderer.points_to_pixels(width))
+        gc.set_capstyle("round")
+        renderer.draw_path(gc, Path(edges.reshape(-1, 2), codes), IdentityTransform())
+        gc.restore()
+
+
+def draw_polygons(
+    renderer: Any,
+    disps: List[np.ndarray],
+    fill: tuple,
+    edges: Any,
+    edge: tuple,
+    width: float,
+    clip: Any,
+) -> None:
+    """Fragments painted one after another in one fill (display units), as one path of
+    several outlines, each turned the same way round so that the nonzero rule fills
+    every point any of them covers: viewers anti-alias a path as a whole, so no seam
+    shows between them. Then the edge segments ``edges`` ((s, 2, 2) display units, or
+    ``None``) in the edge colour and width (points), in one path."""
+    from matplotlib.path import Path
+    from matplotlib.transforms import IdentityTransform
+
+    rings = []
+    for d in disps:
+        x, y = d[:, 0], d[:, 1]
+        if float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y)) < 0:
+            d = d[::-1]
+        rings.append(np.concatenate([d, d[:1]]))
+    path = Path(np.concatenate(rings), np.concatenate([_closed_codes(len(d)) for d in disps]))
+    gc = renderer.new_gc()
+    gc.set_clip_rectangle(clip)
     gc.set_linewidth(0)
     gc.set_foreground((0, 0, 0, 0), isRGBA=True)
     renderer.draw_path(gc, path, IdentityTransform(), fill)

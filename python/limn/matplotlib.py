@@ -62,7 +62,7 @@ import numpy as np
 from . import Scene
 from ._axes_box import axis_lines, grid_lines, inside_box, panes
 from ._content import Line, Marks, Polygons
-from ._drawing import draw_line, draw_marker, draw_polygon, draw_text, marker_reach
+from ._drawing import draw_line, draw_marker, draw_polygon, draw_polygons, draw_text, marker_reach
 from ._layers import under_axes
 
 __all__ = ["savefig"]
@@ -288,7 +288,17 @@ class _Limn3D:
             run.sort(key=partial(_paint_key, depth=depth, first_text=first_text))
         items: List[_Item] = []
 
+        # Fragments painted one after another in the same paint, drawn as one path
+        # (see ``_Run``).
+        run: List[_Run] = []
+
+        def flush() -> None:
+            if run:
+                items.append(run.pop().item())
+
         def add_marks(place: int) -> None:
+            if place in by_place:
+                flush()
             for mk in by_place.get(place, ()):
                 if mk["kind"] == "line":
                     ln = extra.lines[mk["index"]]
@@ -326,6 +336,7 @@ class _Limn3D:
             if skip[i]:
                 continue
             if lead[i] >= 0:
+                flush()
                 # Every fragment of this polygon, one after another: the polygon itself.
                 c = _project(polys.corners[k], m)
                 disp = np.column_stack(
@@ -364,25 +375,65 @@ class _Limn3D:
                 j = np.nonzero(flags)[0]
                 edges = np.stack([disp[j], disp[(j + 1) % len(disp)]], axis=1)
                 whole = bool(flags.all())
-            items.append(
-                _Item(
-                    [disp],
-                    0.5 * lw[k] * p2p if edged else 0.0,
-                    polys.background[k],
-                    partial(
-                        draw_polygon,
-                        disp=disp,
-                        fill=tuple(fill),
-                        edges=edges,
-                        edge=tuple(ec[k]),
-                        width=float(lw[k]),
-                        clip=polys.clip[k],
-                        whole=whole,
-                    ),
-                )
-            )
+            # Only fragments of one polygon join: they tile it (a translucent one is not
+            # blended twice), an edge keeps its place between the fills of other
+            # polygons, and the outlines limn joins with their seam flaps overlap only
+            # where flaps of one polygon meet.
+            key = (tuple(fill), k, polys.background[k], tuple(ec[k]), float(lw[k]))
+            if run and (run[0].key != key or run[0].clip is not polys.clip[k]):
+                flush()
+            if not run:
+                run.append(_Run(key, polys.clip[k], 0.5 * lw[k] * p2p))
+            run[0].add(disp, edges, edged, whole)
+        flush()
         add_marks(len(polygons))
         return items
+
+
+class _Run:
+    """Fragments painted one after another with the same fill, edge style, clip and layer,
+    drawn as one item: one path when there are several (no seam shows between them in a
+    viewer, and a figure of thousands of triangles of a few polygons is a few paths)."""
+
+    def __init__(self, key: tuple, clip: Any, pad: float) -> None:
+        self.key, self.clip, self.pad = key, clip, pad
+        self.disps: List[np.ndarray] = []
+        self.edges: List[np.ndarray] = []
+        self.edged = False
+        self.whole = False
+
+    def add(self, disp: np.ndarray, edges: Any, edged: bool, whole: bool) -> None:
+        self.disps.append(disp)
+        if edges is not None:
+            self.edges.append(edges)
+        self.edged |= edged
+        self.whole = whole
+
+    def item(self) -> _Item:
+        fill, _, background, edge, width = self.key
+        pad = self.pad if self.edged else 0.0
+        if len(self.disps) == 1:
+            draw = partial(
+                draw_polygon,
+                disp=self.disps[0],
+                fill=fill,
+                edges=self.edges[0] if self.edges else None,
+                edge=edge,
+                width=width,
+                clip=self.clip,
+                whole=self.whole,
+            )
+        else:
+            draw = partial(
+                draw_polygons,
+                disps=self.disps,
+                fill=fill,
+                edges=np.concatenate(self.edges) if self.edges else None,
+                edge=edge,
+                width=width,
+                clip=self.clip,
+            )
+        return _Item(self.disps, pad, background, draw)
 
 
 def _outline(disp: np.ndarray) -> np.ndarray:

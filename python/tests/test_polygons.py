@@ -252,3 +252,41 @@ def test_non_planar_polygons_are_cut_into_triangles_of_their_projected_outline()
                     edges.add((a, b))
         assert edges == {(i, (i + 1) % n) for i in range(n)}
     assert min(kinds.values()) > 10, kinds
+
+
+def test_the_triangles_of_a_polygon_are_one_path_in_the_bridge(tmp_path):
+    """Two stars side by side (limn cuts each into eight triangles, none of which hides
+    another): each star is painted as one path of its triangles, so that no seam shows
+    between them in a viewer, and is drawn where matplotlib draws it."""
+    pytest.importorskip("resvg_py")
+    mpl = pytest.importorskip("matplotlib")
+    mpl.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import to_hex
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    import limn.matplotlib as lm
+    from probes import colour_at, near, raster
+
+    a = np.arange(10) * np.pi / 5
+    r = np.where(np.arange(10) % 2, 0.2, 0.45)
+    star = np.c_[r * np.cos(a), r * np.sin(a), np.zeros(10)]
+    left, right = star + (-0.5, 0, 0), star + (0.5, 0, 0)
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")
+    ax.set_xlim(-1, 1)
+    ax.set_ylim(-1, 1)
+    ax.set_zlim(-1, 1)
+    ax.view_init(elev=60, azim=-70)
+    ax.add_collection3d(Poly3DCollection([left, right], facecolors=[RED, BLUE], linewidths=0))
+    lm.savefig(fig, tmp_path / "limn.svg")
+    svg = (tmp_path / "limn.svg").read_text()
+    for colour in (RED, BLUE):
+        assert svg.count(f"fill: {to_hex(colour)}") == 1, colour
+    mine = raster(svg.encode(), 3.0)
+    for centre, colour in (((-0.5, 0.0, 0.0), RED), ((0.5, 0.0, 0.0), BLUE)):
+        for k in range(10):
+            # Half-way out along each point and between points of the star.
+            p = np.asarray(centre) + 0.6 * star[k] * (1.0 if k % 2 else 0.5)
+            assert near(colour_at(fig, ax, mine, tuple(p)), colour), (centre, k)
+    plt.close(fig)
