@@ -10,7 +10,7 @@ use limn_scene::{shade_face, shade_face_in_shadow, FaceTexcoords, Scene, Shading
 use limn_depthsort::{Fragment, Ordered};
 use rayon::prelude::*;
 
-use crate::covers::covers;
+use crate::covers::{covers, repeats_of_covers};
 use crate::phong::DEFAULT_TOLERANCE;
 use crate::seams::{seam_flaps_indexed, FlapJoin};
 use crate::smooth::{FaceLight, View};
@@ -122,15 +122,29 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         }
         fragments
     } else {
-        // Each fragment on its own, in parallel chunks joined in order.
+        // Each fragment on its own, in parallel chunks joined in order. Pieces painted
+        // again on their face's cover in the same flat opaque paint are left out (see
+        // `repeats_of_covers`); with outlines they stay (their strokes are drawn over
+        // the cover's).
+        let repeat = repeats_of_covers(ordered, &cover);
         let chunks: Vec<Vec<PaintFragment>> = ordered
             .fragments
             .par_chunks(FRAGMENTS_PER_TASK)
             .zip(cover.par_chunks(FRAGMENTS_PER_TASK))
-            .map(|(frags, covers)| {
+            .zip(repeat.par_chunks(FRAGMENTS_PER_TASK))
+            .map(|((frags, covers), repeats)| {
                 let mut out = Vec::with_capacity(frags.len());
-                for (f, cover) in frags.iter().zip(covers) {
-                    compose(scene, style, &view, f, cover.as_ref(), fill_of(f), &mut out);
+                for ((f, cover), &repeat) in frags.iter().zip(covers).zip(repeats) {
+                    let fill = fill_of(f);
+                    if repeat
+                        && style.outline.is_none()
+                        && style.seamless
+                        && fill[3] >= 1.0
+                        && shading_of(scene, style, f.face) == Shading::Flat
+                    {
+                        continue;
+                    }
+                    compose(scene, style, &view, f, cover.as_ref(), fill, &mut out);
                 }
                 out
             })
@@ -246,6 +260,20 @@ fn world_of(scene: &Scene, f: &Fragment, use_cover: bool) -> Vec<DVec3> {
 
 /// Pushes the paint fragments of `f` (not textured) onto `out`: one flat or Gouraud
 /// fragment, or Phong's triangles.
+/// How the fragments of `face` are shaded under `style`.
+fn shading_of(scene: &Scene, style: &Style, face: u32) -> Shading {
+    let face = &scene.faces[face as usize];
+    if style.smooth {
+        Shading::of_face(
+            scene.shading,
+            face,
+            &scene.materials[face.material as usize],
+        )
+    } else {
+        Shading::Flat
+    }
+}
+
 fn compose(
     scene: &Scene,
     style: &Style,
@@ -255,13 +283,7 @@ fn compose(
     fill: [f64; 4],
     out: &mut Vec<PaintFragment>,
 ) {
-    let face = &scene.faces[f.face as usize];
-    let m = &scene.materials[face.material as usize];
-    let shading = if style.smooth {
-        Shading::of_face(scene.shading, face, m)
-    } else {
-        Shading::Flat
-    };
+    let shading = shading_of(scene, style, f.face);
     let (mut frag, use_cover) = flat_fragment(scene, style, f, cover, fill);
     if shading == Shading::Flat {
         out.push(frag);
@@ -301,6 +323,55 @@ mod tests {
         }
         s.shading = Some(shading);
         s
+    }
+
+    #[test]
+    fn a_split_flat_face_is_written_once_as_its_cover() {
+        // An L-shaped hexagon (cut into triangles) and, beside it, a square: the L's
+        // pieces come one after another, the first painted as the whole L, the others
+        // left out; with outlines every piece stays (its strokes go over the cover).
+        let mut s = Scene::default();
+        let m = s.add_material(Material::unlit("flat", [0.4, 0.5, 0.6]));
+        let o = s.add_object("shapes");
+        let l = [
+            (0.0, 0.0),
+            (2.0, 0.0),
+            (2.0, 1.0),
+            (1.0, 1.0),
+            (1.0, 2.0),
+            (0.0, 2.0),
+        ];
+        let corners: Vec<DVec3> = l.iter().map(|&(x, y)| DVec3::new(x, y, 0.0)).collect();
+        s.add_polygon(&corners, m, o).unwrap();
+        let square: Vec<DVec3> = [(3.0, 0.0), (4.0, 0.0), (4.0, 1.0), (3.0, 1.0)]
+            .iter()
+            .map(|&(x, y)| DVec3::new(x, y, 0.0))
+            .collect();
+        s.add_polygon(&square, m, o).unwrap();
+        let camera = Camera::framing(&s, 320, 240).unwrap();
+        let ordered = order(&s, &camera, &OrderOptions::default()).unwrap();
+        let pieces = ordered.fragments.iter().filter(|f| f.face == 0).count();
+        assert!(pieces > 1);
+        let plain = Style {
+            seams: 0.0,
+            ..Style::default()
+        };
+        let of_l = |p: &Picture| {
+            p.fragments
+                .iter()
+                .filter(|f| f.face == 0)
+                .map(|f| f.points.len())
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(of_l(&picture(&s, &ordered, &plain)), vec![6]);
+        let outlined = Style {
+            outline: Some(crate::Outline {
+                color: [0.0, 0.0, 0.0, 1.0],
+                width: 1.0,
+            }),
+            ..plain
+        };
+        assert_eq!(of_l(&picture(&s, &ordered, &outlined)).len(), pieces);
     }
 
     #[test]

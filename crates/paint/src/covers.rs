@@ -56,5 +56,22 @@ pub fn covers(scene: &Scene, ordered: &Ordered) -> Vec<Option<Vec<[f64; 2]>>> {
         .collect()
 }
 
+/// Per fragment of `ordered`, whether it comes right after its face's cover (`cover`, from
+/// [`covers`]) or after such a fragment, in the same shadows: a piece of the face painted
+/// again, on the cover, in the same paint, with nothing between. A flat opaque piece so
+/// placed changes no pixel and need not be written at all (its outline edges lie on the
+/// cover's).
+pub(crate) fn repeats_of_covers(ordered: &Ordered, cover: &[Option<Vec<[f64; 2]>>]) -> Vec<bool> {
+    let frags = &ordered.fragments;
+    let mut repeat = vec![false; frags.len()];
+    for i in 1..frags.len() {
+        let (prev, f) = (&frags[i - 1], &frags[i]);
+        repeat[i] = f.face == prev.face
+            && f.shadowed == prev.shadowed
+            && (cover[i - 1].is_some() || repeat[i - 1]);
+    }
+    repeat
+}
+
 /// Fragments per parallel task of [`covers`].
 const FRAGMENTS_PER_TASK: usize = 4096;
