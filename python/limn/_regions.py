@@ -9,10 +9,12 @@ A path of mplot3d lies in one plane (a level's plane, or the plane ``zdir`` and 
 give a patch), so the bridge fills it in that plane: curves are flattened (a few
 degrees of arc per chord) and the outlines nested by containment. A region of nonzero
 winding number without holes is one face (limn takes simple non-convex polygons); a
-region with holes, and the fill of outlines that cross each other (a filled contour set
-of a folded mesh), is cut into trapezoids between the heights of its corners and
-crossings, whose tops and bottoms are not edges of the path: only the outlines' own
-edges are stroked.
+region with holes is one face too, its holes joined to the outline by cuts run both ways
+(limn fills such an outline by its winding number: the cuts are inside), where each cut
+can be shown in floating point to meet no edge. Otherwise, and for the fill of outlines
+that cross each other (a filled contour set of a folded mesh), the region is cut into
+trapezoids between the heights of its corners and crossings. Cuts, tops and bottoms of
+trapezoids are not edges of the path: only the outlines' own edges are stroked.
 """
 
 from __future__ import annotations
@@ -176,8 +178,112 @@ def region_faces(rings: List[np.ndarray]) -> List[Tuple[np.ndarray, np.ndarray]]
             flat[k][::-1],
         )
         parts = [ccw(i, True)] + [ccw(h, False) for h in holes[i]]
-        out += _slabs([r for r, _ in parts], [q for _, q in parts])
+        face = _keyhole([r for r, _ in parts], [q for _, q in parts])
+        if face is not None:
+            out.append(face)
+        else:
+            out += _slabs([r for r, _ in parts], [q for _, q in parts])
     return out
+
+
+_ORIENT_BOUND = (3.0 + 16.0 * 2.0**-53) * 2.0**-53
+"""Shewchuk's bound on the error of ``(a - o) × (p - o)`` computed in doubles, relative
+to the sum of the magnitudes of its two products: a value larger than the bound has
+the exact value's sign."""
+
+
+def _certain_side(o: np.ndarray, a: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """Per row, the sign of the orientation of ``o, a, p`` (points (k, 2)) where floating
+    point proves it, 0 where it does not (including where it is exactly 0)."""
+    left = (a[:, 0] - o[:, 0]) * (p[:, 1] - o[:, 1])
+    right = (a[:, 1] - o[:, 1]) * (p[:, 0] - o[:, 0])
+    det = left - right
+    bound = _ORIENT_BOUND * (np.abs(left) + np.abs(right))
+    return np.where(det > bound, 1, np.where(-det > bound, -1, 0))
+
+
+def _clear_cut(m: np.ndarray, p: np.ndarray, a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether the segment ``m``–``p`` provably meets no edge ``a``–``b`` (each (E, 2))
+    except at ``m`` and ``p`` themselves, by an end of an edge that leaves them off the
+    segment's line. Edges whose boxes miss the segment's are clear (exact comparisons);
+    an edge is clear when both its ends lie strictly on one side of the segment's line,
+    or both ends of the segment strictly on one side of the edge's line."""
+    lo, hi = np.minimum(m, p), np.maximum(m, p)
+    near = ~(
+        (np.maximum(a[:, 0], b[:, 0]) < lo[0])
+        | (np.minimum(a[:, 0], b[:, 0]) > hi[0])
+        | (np.maximum(a[:, 1], b[:, 1]) < lo[1])
+        | (np.minimum(a[:, 1], b[:, 1]) > hi[1])
+    )
+    a, b = a[near], b[near]
+    if not len(a):
+        return True
+    mm = np.broadcast_to(m, a.shape)
+    pp = np.broadcast_to(p, a.shape)
+    at_end_a = (a == m).all(axis=1) | (a == p).all(axis=1)
+    at_end_b = (b == m).all(axis=1) | (b == p).all(axis=1)
+    sa, sb = _certain_side(mm, pp, a), _certain_side(mm, pp, b)
+    # An edge from an end of the segment: clear when its other end is off the line.
+    from_end = at_end_a | at_end_b
+    other = np.where(at_end_a[:, None], b, a)
+    so = _certain_side(mm, pp, other)
+    clear_from_end = from_end & ~(at_end_a & at_end_b) & (so != 0)
+    # Both ends of the segment repeated by an edge: the segment is an edge (never cut).
+    same_side = (sa * sb) > 0
+    sm, sp = _certain_side(a, b, mm), _certain_side(a, b, pp)
+    apart = (sm * sp) > 0
+    clear = np.where(from_end, clear_from_end, same_side | apart)
+    return bool(clear.all())
+
+
+def _keyhole(
+    rings: List[np.ndarray], flat: List[np.ndarray]
+) -> "Tuple[np.ndarray, np.ndarray] | None":
+    """A region with holes as one face: the outline ``rings[0]`` (counter-clockwise in
+    ``flat``) with each hole (clockwise) joined to it by a cut run both ways, from the
+    hole's corner of largest first coordinate to the nearest corner of what is joined so
+    far that it provably sees (no edge of any outline meets the cut: see
+    ``_clear_cut``). The corners are the outlines' own; the cuts are not edges of the
+    path. ``None`` when some hole finds no such corner among its nearest few (the region
+    is then cut into trapezoids)."""
+    ring3, ring2 = rings[0], flat[0]
+    own = np.ones(len(ring3), dtype=bool)
+    holes = sorted(range(1, len(rings)), key=lambda k: -flat[k][:, 0].max())
+    for done, k in enumerate(holes):
+        h2, h3 = flat[k], rings[k]
+        mi = int(np.argmax(h2[:, 0]))
+        m = h2[mi]
+        # Every edge of every outline: what is joined so far and the holes not yet.
+        others = [ring2] + [flat[j] for j in holes[done:]]
+        a, b = _edges(others)
+        corners = np.concatenate(others)
+        if (corners == m).all(axis=1).sum() > 1:
+            return None  # the hole touches an outline at M: no unambiguous cut
+        ahead = np.nonzero(ring2[:, 0] >= m[0])[0]
+        if not len(ahead):
+            return None
+        d = np.hypot(*(ring2[ahead] - m).T)
+        chosen = None
+        for pi in ahead[np.argsort(d, kind="stable")][:16]:
+            # A corner met twice (an end of an earlier cut, outlines touching) has two
+            # sides to join at: left alone.
+            if (corners == ring2[pi]).all(axis=1).sum() > 1:
+                continue
+            if _clear_cut(m, ring2[pi], a, b):
+                chosen = int(pi)
+                break
+        if chosen is None:
+            return None
+        # ... → P, M, the hole round from M back to M, P → ...
+        hole_order = np.r_[np.arange(mi, len(h2)), np.arange(0, mi + 1)]
+        ring2 = np.concatenate([ring2[: chosen + 1], h2[hole_order], ring2[chosen:]])
+        ring3 = np.concatenate([ring3[: chosen + 1], h3[hole_order], ring3[chosen:]])
+        # Edge i runs from corner i: P → M is a cut, the hole's edges are its own, the
+        # last hole corner (M again) → P is the cut back.
+        own = np.concatenate(
+            [own[:chosen], [False], np.ones(len(h2), dtype=bool), [False], own[chosen:]]
+        )
+    return ring3, own
 
 
 def _parents(flat: List[np.ndarray], size: np.ndarray) -> np.ndarray:

@@ -201,3 +201,43 @@ def test_a_path_patch_is_hidden_where_a_surface_passes_in_front(tmp_path):
         mpl_wrong += not near(colour_at(fig, ax, theirs, p), want)
     assert mpl_wrong > 0
     plt.close(fig)
+
+
+def shifted_square(x, y, size, z=0.0):
+    return np.array(
+        [(x, y, z), (x + size, y, z), (x + size, y + size, z), (x, y + size, z)], dtype=float
+    )
+
+
+def test_a_region_with_holes_is_one_face_its_holes_joined_by_cuts(tmp_path):
+    # A 10 × 4 rectangle with three 1 × 1 holes side by side (given clockwise).
+    holes = [shifted_square(x, 1.5, 1.0)[::-1] for x in (1.0, 4.5, 8.0)]
+    ((face, own),) = region_faces([shifted_square(0, 0, 10) * (1, 0.4, 1)] + holes)
+    # Every corner of the outlines, each hole's first corner and its cut's other end
+    # twice; two cut edges per hole, every other edge the path's own.
+    assert len(face) == 4 + 3 * (4 + 2)
+    assert (~own).sum() == 6
+    assert abs(area(face)) == pytest.approx(40.0 - 3.0)
+    for i in np.nonzero(~own)[0]:
+        a, b = face[i], face[(i + 1) % len(face)]
+        # A cut runs between a hole and what was joined before, never along an outline.
+        assert not (a[0] == b[0] and a[0] in (0, 10)) and not (a[1] == b[1])
+    # limn draws it as the rectangle without its holes (the same frame: the same
+    # bounds; pixels of the face's colour on white, counted).
+    def painted(f, name):
+        s = limn.Scene()
+        s.add_mesh(f, [list(range(len(f)))], colors=[RED])
+        s.render(tmp_path / f"{name}.png", background="#ffffff")
+        img = plt.imread(tmp_path / f"{name}.png")[:, :, :3]
+        return int((np.abs(img - RED).max(axis=2) < 0.1).sum())
+
+    rectangle = painted(shifted_square(0, 0, 10) * (1, 0.4, 1), "rectangle")
+    assert painted(face, "region") / rectangle == pytest.approx(37.0 / 40.0, abs=0.005)
+
+
+def test_a_hole_touching_its_outline_is_filled_by_trapezoids():
+    # The hole's rightmost corner touches the outline: no unambiguous cut from it.
+    hole = np.array([(1, 1, 0), (1, 3, 0), (4, 2, 0)], dtype=float)
+    faces = region_faces([square(0, 4), hole])
+    assert len(faces) > 1
+    assert sum(abs(area(f)) for f, _ in faces) == pytest.approx(16.0 - 3.0)
