@@ -133,13 +133,22 @@ def draw_polygons(
     from matplotlib.path import Path
     from matplotlib.transforms import IdentityTransform
 
-    rings = []
-    for d in disps:
-        x, y = d[:, 0], d[:, 1]
-        if float(np.dot(x, np.roll(y, -1)) - np.dot(np.roll(x, -1), y)) < 0:
-            d = d[::-1]
-        rings.append(np.concatenate([d, d[:1]]))
-    path = Path(np.concatenate(rings), np.concatenate([_closed_codes(len(d)) for d in disps]))
+    lens = np.fromiter((len(d) for d in disps), dtype=np.intp, count=len(disps))
+    pts = np.concatenate(disps)
+    starts = np.cumsum(lens) - lens
+    # Each ring's corner after each corner, and twice each ring's signed area.
+    local = np.arange(len(pts)) - np.repeat(starts, lens)
+    after = np.where(local + 1 == np.repeat(lens, lens), 0, local + 1) + np.repeat(starts, lens)
+    cross = pts[:, 0] * pts[after, 1] - pts[after, 0] * pts[:, 1]
+    backwards = np.repeat(np.add.reduceat(cross, starts) < 0, lens)
+    # Corners of a ring turning the other way taken in reverse, then each ring closed.
+    order = np.repeat(starts, lens) + np.where(backwards, np.repeat(lens, lens) - 1 - local, local)
+    closed = np.insert(order, starts + lens, order[starts])
+    codes = np.full(len(closed), Path.LINETO, dtype=Path.code_type)
+    first = starts + np.arange(len(lens))
+    codes[first] = Path.MOVETO
+    codes[first + lens] = Path.CLOSEPOLY
+    path = Path(pts[closed], codes)
     gc = renderer.new_gc()
     gc.set_clip_rectangle(clip)
     gc.set_linewidth(0)

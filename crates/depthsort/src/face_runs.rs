@@ -5,7 +5,9 @@
 //! picture is written. Pieces of one face painted one after another are joined by the
 //! writers into one path (and need no seam flaps between them), so among the components
 //! free to come next this order takes a single piece of the face of the piece it took
-//! last when there is one, and otherwise the first free component of Tarjan's order.
+//! last when there is one, else one of the next face in the input (the triangles a
+//! polygon was given as, a quad's two halves: faces listed together come together),
+//! and otherwise the first free component of Tarjan's order.
 
 use crate::components::Components;
 
@@ -98,7 +100,7 @@ impl FaceRuns {
         }
         let mut last: Option<u32> = None;
         while self.order.len() < m {
-            let same = last.and_then(|f| {
+            let mut free_of = |f: u32| {
                 let ks = self.by_face.get_mut(&f)?;
                 while let Some(k) = ks.pop() {
                     if !self.taken[k as usize] {
@@ -106,7 +108,8 @@ impl FaceRuns {
                     }
                 }
                 None
-            });
+            };
+            let same = last.and_then(|f| free_of(f).or_else(|| free_of(f.checked_add(1)?)));
             let k = match same {
                 Some(k) => k,
                 None => loop {
@@ -186,6 +189,18 @@ mod tests {
             .filter(|w| faces[w[0] as usize] != faces[w[1] as usize])
             .count();
         assert_eq!(runs, 1, "{order:?}");
+    }
+
+    #[test]
+    fn free_pieces_of_consecutive_faces_come_in_input_order() {
+        // Pieces of faces 0..4, two each, listed in reverse with no constraint.
+        let faces = [3, 3, 2, 2, 1, 1, 0, 0];
+        let order = nodes(8, &[], &faces);
+        let seen: Vec<u32> = order.iter().map(|&v| faces[v as usize]).collect();
+        let runs = seen.windows(2).filter(|w| w[0] != w[1]).count();
+        assert_eq!(runs, 3, "{seen:?}");
+        let ascending = seen.windows(2).filter(|w| w[1] == w[0] + 1).count();
+        assert!(ascending >= 2, "{seen:?}");
     }
 
     #[test]
