@@ -101,19 +101,7 @@ def draw_polygon(
         renderer.draw_path(gc, path, IdentityTransform(), fill)
         gc.restore()
         return
-    gc.set_linewidth(0)
-    gc.set_foreground((0, 0, 0, 0), isRGBA=True)
-    renderer.draw_path(gc, path, IdentityTransform(), fill)
-    gc.restore()
-    if edges is not None and len(edges):
-        codes = np.tile(np.array([Path.MOVETO, Path.LINETO], dtype=Path.code_type), len(edges))
-        gc = renderer.new_gc()
-        gc.set_clip_rectangle(clip)
-        gc.set_foreground(edge, isRGBA=True)
-        gc.set_linewidth(renderer.points_to_pixels(width))
-        gc.set_capstyle("round")
-        renderer.draw_path(gc, Path(edges.reshape(-1, 2), codes), IdentityTransform())
-        gc.restore()
+    _fill_then_stroke(renderer, gc, path, fill, edges, edge, width, clip)
 
 
 def draw_polygons(
@@ -131,7 +119,6 @@ def draw_polygons(
     shows between them. Then the edge segments ``edges`` ((s, 2, 2) display units, or
     ``None``) in the edge colour and width (points), in one path."""
     from matplotlib.path import Path
-    from matplotlib.transforms import IdentityTransform
 
     lens = np.fromiter((len(d) for d in disps), dtype=np.intp, count=len(disps))
     pts = np.concatenate(disps)
@@ -151,6 +138,18 @@ def draw_polygons(
     path = Path(pts[closed], codes)
     gc = renderer.new_gc()
     gc.set_clip_rectangle(clip)
+    _fill_then_stroke(renderer, gc, path, fill, edges, edge, width, clip)
+
+
+def _fill_then_stroke(
+    renderer: Any, gc: Any, path: Any, fill: tuple, edges: Any, edge: tuple, width: float, clip: Any
+) -> None:
+    """Fills ``path`` with ``gc`` (no stroke), then strokes the segments ``edges``
+    ((s, 2, 2) display units, or ``None``) in the edge colour and width (points), in one
+    path with round caps."""
+    from matplotlib.path import Path
+    from matplotlib.transforms import IdentityTransform
+
     gc.set_linewidth(0)
     gc.set_foreground((0, 0, 0, 0), isRGBA=True)
     renderer.draw_path(gc, path, IdentityTransform(), fill)

@@ -97,10 +97,11 @@ impl Components {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::Components;
 
-    fn csr(n: usize, edges: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
+    /// A graph's edges in CSR form (`start`, `adj`), as the orderings build them.
+    pub(crate) fn csr(n: usize, edges: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
         let mut start = vec![0u32; n + 1];
         for &(a, _) in edges {
             start[a as usize + 1] += 1;

@@ -142,24 +142,8 @@ impl FaceRuns {
 #[cfg(test)]
 mod tests {
     use super::FaceRuns;
+    use crate::components::tests::csr;
     use crate::components::Components;
-
-    fn csr(n: usize, edges: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
-        let mut start = vec![0u32; n + 1];
-        for &(a, _) in edges {
-            start[a as usize + 1] += 1;
-        }
-        for i in 0..n {
-            start[i + 1] += start[i];
-        }
-        let mut fill = start.clone();
-        let mut adj = vec![0; edges.len()];
-        for &(a, b) in edges {
-            adj[fill[a as usize] as usize] = b;
-            fill[a as usize] += 1;
-        }
-        (start, adj)
-    }
 
     /// The nodes in the order found (members of a component in Tarjan's order).
     fn nodes(n: usize, edges: &[(u32, u32)], faces: &[u32]) -> Vec<u32> {
