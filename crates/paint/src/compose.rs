@@ -263,12 +263,23 @@ fn compose(
         Shading::Flat
     };
     let (mut frag, use_cover) = flat_fragment(scene, style, f, cover, fill);
-    if shading == Shading::Flat {
+    if shading == Shading::Flat && face.colors.is_none() {
         out.push(frag);
         return;
     }
     let world = world_of(scene, f, use_cover);
     let light = FaceLight::new(scene, f.face).in_shadow_of(f.shadowed);
+    if shading == Shading::Flat {
+        // Vertex colours: the flat lighting times the colour at each corner.
+        let colors = light.flat_vertex_colors(&world, view.camera.eye, fill[3]);
+        if colors.iter().all(|c| *c == colors[0]) {
+            frag.fill = colors[0];
+        } else {
+            frag.vertex_colors = Some(colors);
+        }
+        out.push(frag);
+        return;
+    }
     if shading == Shading::Phong && world.len() == frag.points.len() {
         light.phong(&frag, &world, view, out);
     } else {

@@ -91,6 +91,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         materials: HashMap::new(),
         skipped_modes: 0,
         triangles: 0,
+        vertex_alpha_warned: false,
     };
     b.walk(&doc)?;
     if !b.images.is_empty() && doc.extensions_used().any(|e| e == "KHR_texture_transform") {
@@ -190,6 +191,8 @@ struct Builder<'a, 'b> {
     materials: HashMap<Option<usize>, u32>,
     skipped_modes: usize,
     triangles: usize,
+    /// Whether the warning of [`Builder::vertex_alpha`] was given.
+    vertex_alpha_warned: bool,
 }
 
 impl Builder<'_, '_> {
@@ -273,12 +276,34 @@ impl Builder<'_, '_> {
                 at: at(),
                 message: "no POSITION attribute".into(),
             })?;
-        let positions = data::read_vec3(&pos, self.buffers, "position", self.path)?;
+        let positions = data::read_vec3(
+            &pos,
+            self.buffers,
+            data::POSITION_TYPES,
+            "position",
+            self.path,
+        )?;
         let normals = match prim.get(&::gltf::Semantic::Normals) {
-            Some(acc) if acc.count() == positions.len() => {
-                Some(data::read_vec3(&acc, self.buffers, "normal", self.path)?)
-            }
+            Some(acc) if acc.count() == positions.len() => Some(data::read_vec3(
+                &acc,
+                self.buffers,
+                data::NORMAL_TYPES,
+                "normal",
+                self.path,
+            )?),
             _ => None,
+        };
+        let colors = match prim.get(&::gltf::Semantic::Colors(0)) {
+            Some(acc) if acc.count() == positions.len() => {
+                Some(data::read_colors(&acc, self.buffers, self.path)?)
+            }
+            Some(acc) => {
+                return Err(LoadError::Invalid {
+                    at: Location::record(self.path, format!("accessor {}", acc.index())),
+                    message: format!("{} colours for {} positions", acc.count(), positions.len()),
+                })
+            }
+            None => None,
         };
         let indices = match prim.indices() {
             Some(acc) => data::read_indices(&acc, self.buffers, self.path)?,
@@ -311,6 +336,14 @@ impl Builder<'_, '_> {
             self.scene.normals.len(),
             self.scene.faces.len(),
         );
+        let c0 = self.scene.colors.len();
+        if let Some(cs) = &colors {
+            check_u32(c0 + cs.len(), "vertex colours", self.path)?;
+            self.vertex_alpha(prim, cs);
+            self.scene
+                .colors
+                .extend(cs.iter().map(|&[r, g, b, _]| [r, g, b]));
+        }
         let t0 = self.scene.texcoords.len();
         if let Some(ts) = &texcoords {
             check_u32(t0 + ts.len(), "texture coordinates", self.path)?;
@@ -328,10 +361,12 @@ impl Builder<'_, '_> {
             let texcoords = texcoords
                 .as_ref()
                 .map(|_| t.map(|i| t0 as u32 + i).to_vec());
+            let colors = colors.as_ref().map(|_| t.map(|i| c0 as u32 + i).to_vec());
             self.scene.faces.push(Face {
                 vertices,
                 normals,
                 texcoords,
+                colors,
                 material,
                 object,
             });
@@ -344,6 +379,26 @@ impl Builder<'_, '_> {
             });
         }
         Ok(())
+    }
+
+    /// Warns (once per file) when a primitive's `COLOR_0` alpha would show: below 1
+    /// under a `BLEND` or `MASK` material (vertex colours are drawn as RGB; the
+    /// material's own alpha rule stays).
+    fn vertex_alpha(&mut self, prim: &::gltf::Primitive, colors: &[[f64; 4]]) {
+        let mode = prim.material().alpha_mode();
+        if self.vertex_alpha_warned
+            || mode == AlphaMode::Opaque
+            || colors.iter().all(|c| c[3] >= 1.0)
+        {
+            return;
+        }
+        self.vertex_alpha_warned = true;
+        self.scene.warnings.push(format!(
+            "{} (mesh primitive {}): COLOR_0 alpha under alphaMode {mode:?} is not drawn \
+             (vertex colours are drawn opaque over the material's opacity)",
+            self.path.display(),
+            prim.index()
+        ));
     }
 
     /// The texture coordinates of a primitive whose material has a base-colour texture
@@ -365,7 +420,8 @@ impl Builder<'_, '_> {
         let set = ::gltf::Semantic::TexCoords(info.tex_coord());
         let Some(acc) = prim.get(&set) else {
             self.scene.warnings.push(format!(
-                "{} (mesh primitive {}): the base-colour texture's TEXCOORD_{} is missing;                  drawn untextured",
+                "{} (mesh primitive {}): the base-colour texture's TEXCOORD_{} is missing; \
+                 drawn untextured",
                 self.path.display(),
                 prim.index(),
                 info.tex_coord()

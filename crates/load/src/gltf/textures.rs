@@ -20,49 +20,28 @@ use super::data;
 use crate::{refs, LoadError, LoadOptions, Location};
 
 /// Reads a texture coordinate accessor: float, or normalised unsigned byte or short
-/// VEC2, each value finite.
+/// VEC2, and with `KHR_mesh_quantization` signed ones and unnormalised integers too,
+/// each value finite.
 pub(crate) fn read_vec2(
     acc: &::gltf::Accessor,
     buffers: &[Cow<[u8]>],
     path: &Path,
 ) -> Result<Vec<[f64; 2]>, LoadError> {
-    let at = || Location::record(path, format!("accessor {}", acc.index()));
-    let size = match (acc.dimensions(), acc.data_type(), acc.normalized()) {
-        (Dimensions::Vec2, DataType::F32, _) => 4,
-        (Dimensions::Vec2, DataType::U8, true) => 1,
-        (Dimensions::Vec2, DataType::U16, true) => 2,
-        (d, t, _) => {
-            return Err(LoadError::Unsupported {
-                at: at(),
-                what: format!(
-                    "texture coordinates of type {t:?} {d:?} (float, or normalised unsigned \
-                     byte or short, VEC2 is read)"
-                ),
-            })
-        }
-    };
-    let (bytes, start, stride) = data::layout(acc, buffers, 2 * size, path)?;
-    let mut out = Vec::with_capacity(acc.count());
-    for i in 0..acc.count() {
-        let o = start + i * stride;
-        let c = |k: usize| {
-            let b = &bytes[o + size * k..o + size * (k + 1)];
-            match size {
-                1 => f64::from(b[0]) / 255.0,
-                2 => f64::from(u16::from_le_bytes([b[0], b[1]])) / 65535.0,
-                _ => f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
-            }
-        };
-        let st = [c(0), c(1)];
-        if !st[0].is_finite() || !st[1].is_finite() {
-            return Err(LoadError::NonFinite {
-                at: Location::record(path, format!("accessor {} element {i}", acc.index())),
-                what: "texture coordinate".into(),
-            });
-        }
-        out.push(st);
-    }
-    Ok(out)
+    const TYPES: &[(DataType, Option<bool>)] = &[
+        (DataType::F32, Some(false)),
+        (DataType::I8, None),
+        (DataType::U8, None),
+        (DataType::I16, None),
+        (DataType::U16, None),
+    ];
+    data::read_components::<2>(
+        acc,
+        buffers,
+        Dimensions::Vec2,
+        TYPES,
+        "texture coordinates",
+        path,
+    )
 }
 
 /// Refuses images with neither a `uri` nor a `bufferView` with a `mimeType` (the
