@@ -172,6 +172,9 @@ impl Material {
 pub struct Object {
     /// The object's name (free text; writers escape it).
     pub name: String,
+    /// Its faces are seen from the front only (glTF `doubleSided: false`): their back
+    /// faces are culled under the default culling, closed or not.
+    pub single_sided: bool,
 }
 
 /// One input polygon. Vertices are indices into [`Scene::vertices`], counter-clockwise
@@ -255,6 +258,9 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Camera given by the input, if any.
     pub camera: Option<Camera>,
+    /// The view a model file suggests (a glTF file's first camera): used when neither
+    /// the options nor a scene file give a camera or an eye.
+    pub default_camera: Option<Camera>,
     /// Polylines drawn over the surfaces where visible.
     pub lines: Vec<Polyline>,
     /// Points drawn as markers when visible.
@@ -290,6 +296,7 @@ impl Scene {
     pub fn add_object(&mut self, name: &str) -> u32 {
         self.objects.push(Object {
             name: name.to_string(),
+            single_sided: false,
         });
         (self.objects.len() - 1) as u32
     }

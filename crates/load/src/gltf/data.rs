@@ -98,19 +98,39 @@ pub(crate) fn split_glb<'a>(
     Ok((json, bin))
 }
 
+/// Largest fallback buffer of `EXT_meshopt_compression` made to hold decoded views
+/// (1 GiB).
+const MAX_FALLBACK: usize = 1 << 30;
+
 /// Loads every buffer of `doc`, each cut to its declared length, and records in `files`
-/// every external file read.
+/// every external file read. A buffer marked in `fallback` (an `EXT_meshopt_compression`
+/// fallback) without a `uri` is made of zeros, for the decoded views to fill.
 pub(crate) fn buffers<'a>(
     doc: &Document,
     blob: Option<&'a [u8]>,
     path: &Path,
     opts: &LoadOptions,
+    fallback: &[bool],
     files: &mut Vec<std::path::PathBuf>,
 ) -> Result<Vec<Cow<'a, [u8]>>, LoadError> {
     let mut out = Vec::new();
     for buffer in doc.buffers() {
         let i = buffer.index();
         let at = Location::record(path, format!("buffer {i}"));
+        let empty_fallback = fallback.get(i).copied().unwrap_or(false)
+            && matches!(buffer.source(), Source::Bin)
+            && (i > 0 || blob.is_none());
+        if empty_fallback {
+            if buffer.length() > MAX_FALLBACK {
+                return Err(LoadError::TooLarge {
+                    at,
+                    what: "bytes in a meshopt fallback buffer",
+                    limit: MAX_FALLBACK as u64,
+                });
+            }
+            out.push(Cow::Owned(vec![0; buffer.length()]));
+            continue;
+        }
         let data: Cow<[u8]> = match buffer.source() {
             Source::Bin => Cow::Borrowed(blob.ok_or_else(|| LoadError::Invalid {
                 at: at.clone(),

@@ -5,7 +5,9 @@
 //! Images are read only for primitives that draw them (a textured material on a
 //! primitive with the texture coordinates), each at most once. Samplers: limn repeats
 //! textures (the glTF default); `CLAMP_TO_EDGE` and `MIRRORED_REPEAT` are drawn as
-//! repeat with a warning. `KHR_texture_transform` is not applied (a warning says so).
+//! repeat, with one warning per sampler whose primitives reach outside [0, 1] (inside,
+//! every mode draws the same). `KHR_texture_transform` (offset, rotation, scale, `texCoord`) moves the
+//! coordinates as they are read.
 
 use std::borrow::Cow;
 use std::path::Path;
@@ -13,7 +15,6 @@ use std::sync::Arc;
 
 use ::gltf::accessor::{DataType, Dimensions};
 use ::gltf::image::Source;
-use ::gltf::texture::WrappingMode;
 use limn_scene::Texture;
 
 use super::data;
@@ -44,6 +45,20 @@ pub(crate) fn read_vec2(
     )
 }
 
+/// Applies a `KHR_texture_transform` to texture coordinates, as the extension defines
+/// it: `translation · rotation · scale`, the rotation matrix's columns `(cos r, sin r)`
+/// and `(−sin r, cos r)`.
+pub(crate) fn transform(st: &mut [[f64; 2]], t: &::gltf::texture::TextureTransform) {
+    let [ox, oy] = t.offset().map(f64::from);
+    let [sx, sy] = t.scale().map(f64::from);
+    let r = f64::from(t.rotation());
+    let (sin, cos) = r.sin_cos();
+    for p in st.iter_mut() {
+        let (u, v) = (p[0] * sx, p[1] * sy);
+        *p = [cos * u - sin * v + ox, sin * u + cos * v + oy];
+    }
+}
+
 /// Refuses images with neither a `uri` nor a `bufferView` with a `mimeType` (the
 /// `gltf` crate assumes one of them when asked for the image's source).
 pub(crate) fn check_images(doc: &::gltf::Document, path: &Path) -> Result<(), LoadError> {
@@ -58,27 +73,16 @@ pub(crate) fn check_images(doc: &::gltf::Document, path: &Path) -> Result<(), Lo
     Ok(())
 }
 
-/// Decodes the image of `texture`; warnings for samplers limn draws differently.
+/// Decodes the image of `texture`.
 pub(crate) fn read_image(
     texture: &::gltf::Texture,
     buffers: &[Cow<[u8]>],
     path: &Path,
     opts: &LoadOptions,
     files: &mut Vec<std::path::PathBuf>,
-    warnings: &mut Vec<String>,
 ) -> Result<Arc<Texture>, LoadError> {
     let image = texture.source();
     let at = Location::record(path, format!("image {}", image.index()));
-    let sampler = texture.sampler();
-    if sampler.wrap_s() != WrappingMode::Repeat || sampler.wrap_t() != WrappingMode::Repeat {
-        warnings.push(format!(
-            "{} (texture {}): wrap modes {:?}/{:?} are drawn as REPEAT",
-            path.display(),
-            texture.index(),
-            sampler.wrap_s(),
-            sampler.wrap_t()
-        ));
-    }
     let (bytes, name): (Cow<[u8]>, String) = match image.source() {
         Source::View { view, .. } => {
             let buf = buffers
