@@ -22,7 +22,8 @@
 //! (see [`crate::image`]). Vertex colours are used by faces whose every corner has one
 //! ([`limn_scene::Face::colors`]): they multiply the material's `Kd`, and faces without
 //! a `usemtl` get a white diffuse material named `vertex colours` rather than the grey
-//! (channels outside [0, 1] are clamped, with a warning naming the first line). A
+//! (channels outside [0, 1] are clamped, and a colour with a NaN channel is no colour,
+//! each with a warning naming the first line). A
 //! point cloud's dots take their vertices' colours. Smoothing groups and the free-form geometry statements are
 //! accepted and ignored; any other statement is an error (so
 //! binary garbage is reported, not silently dropped).
@@ -122,6 +123,8 @@ struct Obj<'a> {
     white: Option<u32>,
     /// The first line with a colour channel outside [0, 1], and how many there are.
     clamped: Option<(u64, u64)>,
+    /// The first line with a colour channel that is not a number, and how many there are.
+    no_colour: Option<(u64, u64)>,
 }
 
 /// A vertex without a colour.
@@ -161,6 +164,7 @@ fn parse_with(
         vertex_color: Vec::new(),
         white: None,
         clamped: None,
+        no_colour: None,
     };
     let read = obj.statements(bytes);
     // A library's error comes first: it was named above any line the OBJ failed at.
@@ -180,6 +184,13 @@ fn parse_with(
     if let Some((line, count)) = obj.clamped {
         obj.scene.warnings.push(format!(
             "{}:{line}: vertex colour channels outside [0, 1] clamped ({count} vertices)",
+            path.display()
+        ));
+    }
+    if let Some((line, count)) = obj.no_colour {
+        obj.scene.warnings.push(format!(
+            "{}:{line}: vertex colours with a channel that is not a number are not used \
+             ({count} vertices; faces at them have no vertex colours)",
             path.display()
         ));
     }
@@ -409,13 +420,15 @@ impl Obj<'_> {
         Ok(())
     }
 
-    /// Records the colour of the vertex just added (clamped to [0, 1]; NaN is an error).
+    /// Records the colour of the vertex just added (clamped to [0, 1]; a colour with a
+    /// NaN channel is no colour, as exporters write it for "none").
     fn vertex_colour(&mut self, n: u64, rgb: [f64; 3]) -> Result<(), LoadError> {
         if rgb.iter().any(|c| c.is_nan()) {
-            return Err(LoadError::NonFinite {
-                at: Location::line(self.path, n),
-                what: "vertex colour".into(),
-            });
+            self.no_colour.get_or_insert((n, 0)).1 += 1;
+            if !self.vertex_color.is_empty() {
+                self.vertex_color.push(NO_COLOR);
+            }
+            return Ok(());
         }
         if rgb.iter().any(|c| !(0.0..=1.0).contains(c)) {
             self.clamped.get_or_insert((n, 0)).1 += 1;

@@ -34,8 +34,20 @@ fn obj_colours_out_of_range_are_clamped_with_a_warning_naming_the_line() {
     assert_eq!(s.colors[0], [1.0, 0.0, 0.0]);
     assert_eq!(s.warnings.len(), 1);
     assert!(s.warnings[0].contains("c.obj:1:"), "{:?}", s.warnings);
-    let nan = write(d.path(), "n.obj", "v 0 0 0 nan 0 0\n");
-    assert_at(&err(&nan), &nan, Some(1));
+    // A NaN channel (trimesh's nancolor.obj): that vertex has no colour.
+    let nan = write(
+        d.path(),
+        "n.obj",
+        "v 0 0 0 1 0 0\nv 1 0 0 nan nan nan\nv 0 1 0 0 0 1\nv 1 1 0 0 1 0\nf 1 2 3\nf 1 4 3\n",
+    );
+    let s = ok(&nan);
+    assert_eq!(s.faces[0].colors, None);
+    assert_eq!(s.faces[1].colors, Some(vec![0, 2, 1]));
+    assert!(
+        s.warnings.iter().any(|w| w.contains("n.obj:2:")),
+        "{:?}",
+        s.warnings
+    );
 }
 
 #[test]
