@@ -114,25 +114,30 @@ fn texture_maps_are_reported_with_file_and_line() {
 }
 
 #[test]
-fn averaged_ply_vertex_colours_are_reported_only_when_they_differ() {
+fn ply_vertex_colours_are_drawn_and_only_averaged_alphas_reported() {
     let head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
 property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n\
-element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+property uchar alpha\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
     let dir = tempdir();
     put(
         dir.path(),
         "mixed.ply",
-        format!("{head}0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n"),
+        format!("{head}0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n"),
     );
     put(
         dir.path(),
-        "plain.ply",
-        format!("{head}0 0 0 9 9 9\n1 0 0 9 9 9\n0 1 0 9 9 9\n3 0 1 2\n"),
+        "alphas.ply",
+        format!("{head}0 0 0 9 9 9 255\n1 0 0 9 9 9 100\n0 1 0 9 9 9 255\n3 0 1 2\n"),
     );
-    let r = limn(dir.path(), &["render", "mixed.ply"]);
-    assert!(r.stderr.contains("different colours"), "{}", r.stderr);
-    let r = limn(dir.path(), &["render", "plain.ply"]);
-    assert!(!r.stderr.contains("different colours"), "{}", r.stderr);
+    let r = limn(dir.path(), &["render", "mixed.ply", "--stats", "-"]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(!r.stderr.contains("warning"), "{}", r.stderr);
+    let stats = String::from_utf8_lossy(&r.stdout);
+    assert!(stats.contains("vertex-colors"), "{stats}");
+    let r = limn(dir.path(), &["render", "alphas.ply", "--stats", "-"]);
+    assert!(r.stderr.contains("different alphas"), "{}", r.stderr);
+    let stats = String::from_utf8_lossy(&r.stdout);
+    assert!(stats.contains("different alphas"), "{stats}");
 }
 
 #[test]

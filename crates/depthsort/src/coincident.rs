@@ -240,6 +240,7 @@ mod tests {
                     object: (r.next_u64() % 2) as u32,
                     normals: None,
                     texcoords: None,
+                    colors: None,
                 });
             }
             let canon = canonical_vertices(&s);

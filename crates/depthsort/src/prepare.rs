@@ -84,7 +84,13 @@ pub(crate) fn prepare<K: Kernel>(
     let mut whole = vec![false; scene.faces.len()];
     let canon = canonical_vertices(scene);
     let closed = match cull {
-        CullMode::Auto => closed_opaque_objects(scene, &canon),
+        CullMode::Auto => {
+            let mut cull = closed_opaque_objects(scene, &canon);
+            for (c, o) in cull.iter_mut().zip(&scene.objects) {
+                *c |= o.single_sided;
+            }
+            cull
+        }
         CullMode::On => vec![true; scene.objects.len()],
         CullMode::Off => vec![false; scene.objects.len()],
     };

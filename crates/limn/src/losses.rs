@@ -64,6 +64,21 @@ pub fn losses(
             }
         ));
     }
+    let tinted_textures = scene
+        .faces
+        .iter()
+        .filter(|f| {
+            f.colors.is_some()
+                && f.texcoords.is_some()
+                && scene.materials[f.material as usize].texture.is_some()
+        })
+        .count();
+    if tinted_textures > 0 {
+        out.push(format!(
+            "{tinted_textures} textured faces have vertex colours, which are not drawn over \
+             textures (the texture times the material's colour is)"
+        ));
+    }
     if ps.skipped > 0 {
         out.push(format!(
             "{} fragments with invalid coordinates were not painted",

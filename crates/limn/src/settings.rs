@@ -14,7 +14,8 @@ use crate::error::Error;
 use crate::input::Input;
 use crate::options::{Background, Look, RenderOptions, ViewOptions, DEFAULT_CREASE, DEFAULT_SIZE};
 
-/// The camera: options first, then the scene's camera, then framing the scene.
+/// The camera: options first, then the scene's camera, then the view the model file
+/// suggests (a glTF camera; not when an eye is given), then framing the scene.
 ///
 /// With an eye and no camera in the scene the camera looks at the target or the centre
 /// of the scene's bounds; nothing is framed, so a scene too large to frame can still be
@@ -46,7 +47,11 @@ pub fn camera(
         cam.validate().map_err(fail("invalid camera"))?;
         return Ok(cam);
     }
-    let mut cam = match (scene.camera, view.eye) {
+    // A model file's own view gives way to an eye given by the options.
+    let given = scene
+        .camera
+        .or(scene.default_camera.filter(|_| view.eye.is_none()));
+    let mut cam = match (given, view.eye) {
         (Some(c), _) => c,
         (None, Some(eye)) => {
             let (lo, hi) = scene.bounds().ok_or_else(|| Error::Camera {
@@ -96,7 +101,7 @@ pub fn camera(
     if let Some(height) = view.ortho {
         let framed = Camera::framing_orthographic(scene, cam.eye - cam.target, w, h)
             .map_err(fail("cannot frame the scene orthographically"))?;
-        if view.eye.is_none() && scene.camera.is_none() {
+        if view.eye.is_none() && given.is_none() {
             // Framed: the eye stands back far enough that nothing is clipped.
             cam.eye = cam.target + (framed.eye - framed.target);
         }

@@ -7,7 +7,9 @@
 //! its face is read: a face may only use vertices defined above it (positive indices
 //! count from the first vertex, negative ones back from the last one so far).
 //!
-//! Statements read: `v` (3 to 7 numbers: x y z, then an optional w or colour, ignored),
+//! Statements read: `v` (3 to 7 numbers: x y z, then an optional w, or a colour r g b
+//! in [0, 1] as MeshLab and others write it: a vertex colour, see below; a seventh number
+//! is ignored),
 //! `vn`, `f`/`fo` (`v`, `v/vt`, `v//vn`, `v/vt/vn`), `l` (a polyline of at least two
 //! vertices, `v` or `v/vt`), `p` (one point marker per vertex), `o` and `g` (each starts
 //! an object; the same name again continues it), `usemtl` (one without a name, as Rhino
@@ -17,7 +19,12 @@
 //! as a black dot, with a warning. Texture coordinates (`vt u [v [w]]`, stored as
 //! `(u, 1 − v)`: limn's `t` runs down the image) are used by faces whose every corner
 //! names one and whose material has a `map_Kd`; the image is read then, once per file
-//! (see [`crate::image`]). Smoothing groups and the free-form geometry statements are
+//! (see [`crate::image`]). Vertex colours are used by faces whose every corner has one
+//! ([`limn_scene::Face::colors`]): they multiply the material's `Kd`, and faces without
+//! a `usemtl` get a white diffuse material named `vertex colours` rather than the grey
+//! (channels outside [0, 1] are clamped, and a colour with a NaN channel is no colour,
+//! each with a warning naming the first line). A
+//! point cloud's dots take their vertices' colours. Smoothing groups and the free-form geometry statements are
 //! accepted and ignored; any other statement is an error (so
 //! binary garbage is reported, not silently dropped).
 //!
@@ -109,7 +116,19 @@ struct Obj<'a> {
     textured: HashMap<u32, Option<UvTransform>>,
     /// Transformed copies of texture coordinates: (index, material) → index.
     moved: HashMap<(u32, u32), u32>,
+    /// Per vertex, its colour's index in the scene ([`NO_COLOR`] for none); empty
+    /// until the first vertex with a colour.
+    vertex_color: Vec<u32>,
+    /// The white material of faces with vertex colours and no `usemtl`.
+    white: Option<u32>,
+    /// The first line with a colour channel outside [0, 1], and how many there are.
+    clamped: Option<(u64, u64)>,
+    /// The first line with a colour channel that is not a number, and how many there are.
+    no_colour: Option<(u64, u64)>,
 }
+
+/// A vertex without a colour.
+const NO_COLOR: u32 = u32::MAX;
 
 /// Parses an OBJ file (and the MTL libraries it names, large ones on another thread
 /// while the OBJ is read).
@@ -142,6 +161,10 @@ fn parse_with(
         images: HashMap::default(),
         textured: HashMap::default(),
         moved: HashMap::default(),
+        vertex_color: Vec::new(),
+        white: None,
+        clamped: None,
+        no_colour: None,
     };
     let read = obj.statements(bytes);
     // A library's error comes first: it was named above any line the OBJ failed at.
@@ -158,6 +181,19 @@ fn parse_with(
             path.display()
         ));
     }
+    if let Some((line, count)) = obj.clamped {
+        obj.scene.warnings.push(format!(
+            "{}:{line}: vertex colour channels outside [0, 1] clamped ({count} vertices)",
+            path.display()
+        ));
+    }
+    if let Some((line, count)) = obj.no_colour {
+        obj.scene.warnings.push(format!(
+            "{}:{line}: vertex colours with a channel that is not a number are not used \
+             ({count} vertices; faces at them have no vertex colours)",
+            path.display()
+        ));
+    }
     obj.scene.materials.shrink_to_fit();
     let s = &mut obj.scene;
     if s.faces.is_empty() && s.lines.is_empty() && s.points.is_empty() {
@@ -169,10 +205,15 @@ fn parse_with(
             s.points.reserve(s.vertices.len());
             for i in 0..s.vertices.len() {
                 let at = s.vertices[i];
-                s.points.push(PointMark {
+                let mut point = PointMark {
                     object,
                     ..PointMark::new(at)
-                });
+                };
+                if let Some(&c) = obj.vertex_color.get(i).filter(|&&c| c != NO_COLOR) {
+                    let [r, g, b] = s.colors[c as usize];
+                    point.color = [r, g, b, 1.0];
+                }
+                s.points.push(point);
             }
             s.warnings.push(format!(
                 "{}: no faces, lines or points; its {} vertices are drawn as points",
@@ -202,16 +243,30 @@ impl Obj<'_> {
         match key {
             b"v" => {
                 let p = self.triple(n, &mut toks, "vertex")?;
-                let extra = toks.count();
-                if extra > 4 {
-                    return Err(LoadError::syntax(
-                        self.path,
-                        n,
-                        format!("v has {} numbers; at most 7 are allowed", 3 + extra),
-                    ));
+                let mut extra = [None; 4];
+                let mut count = 0;
+                for t in toks {
+                    if count == 4 {
+                        return Err(LoadError::syntax(
+                            self.path,
+                            n,
+                            "v has more than 7 numbers; at most 7 are allowed",
+                        ));
+                    }
+                    extra[count] = Some(t);
+                    count += 1;
                 }
                 check_u32(self.scene.vertices.len(), "vertices", self.path)?;
                 self.scene.vertices.push(p);
+                if count >= 3 {
+                    let rgb = [0, 1, 2]
+                        .map(|k| number(self.path, n, extra[k], "vertex colour"))
+                        .into_iter()
+                        .collect::<Result<Vec<f64>, _>>()?;
+                    self.vertex_colour(n, [rgb[0], rgb[1], rgb[2]])?;
+                } else if !self.vertex_color.is_empty() {
+                    self.vertex_color.push(NO_COLOR);
+                }
             }
             b"vn" => {
                 let p = self.triple(n, &mut toks, "normal")?;
@@ -343,6 +398,11 @@ impl Obj<'_> {
         }
         let object = self.current_object()?;
         let material = self.current_material()?;
+        let colors = self.face_colors(&vertices);
+        let material = match (colors.is_some(), &self.material_name) {
+            (true, None) => self.white_material()?,
+            _ => material,
+        };
         let texcoords = if all_texcoords {
             self.face_texcoords(material, texcoords)?
         } else {
@@ -353,10 +413,63 @@ impl Obj<'_> {
             vertices,
             normals: all_normals.then_some(normals),
             texcoords,
+            colors,
             material,
             object,
         });
         Ok(())
+    }
+
+    /// Records the colour of the vertex just added (clamped to [0, 1]; a colour with a
+    /// NaN channel is no colour, as exporters write it for "none").
+    fn vertex_colour(&mut self, n: u64, rgb: [f64; 3]) -> Result<(), LoadError> {
+        if rgb.iter().any(|c| c.is_nan()) {
+            self.no_colour.get_or_insert((n, 0)).1 += 1;
+            if !self.vertex_color.is_empty() {
+                self.vertex_color.push(NO_COLOR);
+            }
+            return Ok(());
+        }
+        if rgb.iter().any(|c| !(0.0..=1.0).contains(c)) {
+            self.clamped.get_or_insert((n, 0)).1 += 1;
+        }
+        let v = self.scene.vertices.len() - 1;
+        if self.vertex_color.len() < v {
+            self.vertex_color.resize(v, NO_COLOR);
+        }
+        check_u32(self.scene.colors.len(), "vertex colours", self.path)?;
+        self.vertex_color.push(self.scene.colors.len() as u32);
+        self.scene.colors.push(rgb.map(|c| c.clamp(0.0, 1.0)));
+        Ok(())
+    }
+
+    /// The colour indices of a face's corners, when every corner has a colour.
+    fn face_colors(&self, vertices: &[u32]) -> Option<Vec<u32>> {
+        if self.vertex_color.is_empty() {
+            return None;
+        }
+        vertices
+            .iter()
+            .map(|&v| {
+                self.vertex_color
+                    .get(v as usize)
+                    .copied()
+                    .filter(|&c| c != NO_COLOR)
+            })
+            .collect()
+    }
+
+    /// The white diffuse material of faces with vertex colours and no `usemtl`.
+    fn white_material(&mut self) -> Result<u32, LoadError> {
+        if let Some(m) = self.white {
+            return Ok(m);
+        }
+        check_u32(self.scene.materials.len(), "materials", self.path)?;
+        let m = self
+            .scene
+            .add_material(Material::diffuse("vertex colours", [1.0; 3]));
+        self.white = Some(m);
+        Ok(m)
     }
 
     /// The texture coordinates a face keeps: `None` unless its material has a

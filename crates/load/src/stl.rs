@@ -138,6 +138,7 @@ impl<'a, K: std::hash::Hash + Eq + Copy> Builder<'a, K> {
             vertices,
             normals: None,
             texcoords: None,
+            colors: None,
             material: self.material,
             object,
         });

@@ -277,27 +277,38 @@ fn ascii_stl_with_uppercase_keywords_and_two_solids() {
 }
 
 #[test]
-fn ascii_ply_vertex_colours_are_averaged_into_unlit_materials() {
+fn ascii_ply_vertex_colours_are_kept_per_corner_over_a_white_unlit_material() {
     let d = dir();
     let header = "comment made by hand\nelement vertex 4\nproperty float x\nproperty float y\n\
                   property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n\
                   element face 3\nproperty list uchar int vertex_indices\n";
     let body = "0 0 0 255 0 0\n1 0 0 255 0 0\n1 1 0 0 0 255\n0 1 0 0 0 255\n\
-                4 0 1 2 3\n3 0 1 2\n3 0 1 2\n";
+                4 0 1 2 3\n3 0 1 2\n3 2 3 2\n";
     let p = write(d.path(), "sq.ply", ply("ascii", header, body.as_bytes()));
     let s = ok(&p);
     assert_eq!(s.faces.len(), 3);
     assert_eq!(s.faces[0].vertices, vec![0, 1, 2, 3], "quads stay quads");
-    let m0 = &s.materials[s.faces[0].material as usize];
-    assert_eq!((m0.kd, m0.illum), ([0.5, 0.0, 0.5], 0));
-    assert_eq!(m0.name, "#800080");
-    let m1 = &s.materials[s.faces[1].material as usize];
-    assert_eq!(m1.kd, [2.0 / 3.0, 0.0, 1.0 / 3.0]);
     assert_eq!(
-        s.faces[1].material, s.faces[2].material,
-        "equal colours share a material"
+        s.colors,
+        [
+            [1.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, 1.0]
+        ]
     );
+    // Corners of different colours: vertex colours over white.
+    assert_eq!(s.faces[0].colors, Some(vec![0, 1, 2, 3]));
+    assert_eq!(s.faces[1].colors, Some(vec![0, 1, 2]));
+    let m0 = &s.materials[s.faces[0].material as usize];
+    assert_eq!((m0.kd, m0.illum), ([1.0; 3], 0));
+    assert_eq!(s.faces[0].material, s.faces[1].material);
+    // Corners of one colour: that colour, no vertex colours.
+    assert_eq!(s.faces[2].colors, None);
+    let m2 = &s.materials[s.faces[2].material as usize];
+    assert_eq!((m2.kd, m2.name.as_str()), ([0.0, 0.0, 1.0], "#0000ff"));
     assert_eq!(s.materials.len(), 2);
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
 }
 
 #[test]
@@ -309,8 +320,8 @@ fn binary_ply_both_byte_orders_read_the_same() {
     assert_eq!(le.faces, be.faces);
     assert_eq!(le.vertices[2], DVec3::new(1.0, 1.0, 0.0));
     assert_eq!(le.faces[1].vertices, vec![0, 2, 3]);
-    let m = &le.materials[le.faces[1].material as usize];
-    assert_eq!(m.kd, [1.0 / 3.0, 0.0, 2.0 / 3.0]);
+    assert_eq!(le.faces[1].colors, Some(vec![0, 2, 3]));
+    assert_eq!(le.colors, be.colors);
 }
 
 #[test]

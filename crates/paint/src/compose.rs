@@ -140,7 +140,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
                         && style.outline.is_none()
                         && style.seamless
                         && fill[3] >= 1.0
-                        && shading_of(scene, style, f.face) == Shading::Flat
+                        && one_fill(scene, style, f.face)
                     {
                         continue;
                     }
@@ -274,6 +274,12 @@ fn shading_of(scene: &Scene, style: &Style, face: u32) -> Shading {
     }
 }
 
+/// Whether every fragment of `face` is painted in its one flat fill (flat shading and no
+/// vertex colours).
+fn one_fill(scene: &Scene, style: &Style, face: u32) -> bool {
+    shading_of(scene, style, face) == Shading::Flat && scene.faces[face as usize].colors.is_none()
+}
+
 fn compose(
     scene: &Scene,
     style: &Style,
@@ -285,12 +291,23 @@ fn compose(
 ) {
     let shading = shading_of(scene, style, f.face);
     let (mut frag, use_cover) = flat_fragment(scene, style, f, cover, fill);
-    if shading == Shading::Flat {
+    if one_fill(scene, style, f.face) {
         out.push(frag);
         return;
     }
     let world = world_of(scene, f, use_cover);
     let light = FaceLight::new(scene, f.face).in_shadow_of(f.shadowed);
+    if shading == Shading::Flat {
+        // Vertex colours: the flat lighting times the colour at each corner.
+        let colors = light.flat_vertex_colors(&world, view.camera.eye, fill[3]);
+        if colors.iter().all(|c| *c == colors[0]) {
+            frag.fill = colors[0];
+        } else {
+            frag.vertex_colors = Some(colors);
+        }
+        out.push(frag);
+        return;
+    }
     if shading == Shading::Phong && world.len() == frag.points.len() {
         light.phong(&frag, &world, view, out);
     } else {

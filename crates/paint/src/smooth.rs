@@ -1,10 +1,14 @@
 //! Smooth shading of one fragment: Gouraud (colours at the fragment's corners, the
 //! painter interpolates) or Phong (the fragment split into Gouraud triangles within a
-//! tolerance of per-point shading, see [`crate::phong`]).
+//! tolerance of per-point shading, see [`crate::phong`]). A face with vertex colours
+//! ([`limn_scene::Face::colors`]) is tinted at each point by its interpolated colour,
+//! and lit flat it still is not one colour: its corners get the flat lighting times
+//! their colours, interpolated by the painter.
 
 use glam::{DMat4, DVec3};
 use limn_scene::{
-    polygon_normal, shade_sided_in_shadow, Camera, FaceNormals, LightSet, Material, Scene,
+    polygon_normal, shade_face_tinted, shade_tinted_in_shadow, Camera, FaceColors, FaceNormals,
+    LightSet, Material, Rgb, Scene,
 };
 
 use crate::phong::{subdivide, Surface};
@@ -27,7 +31,9 @@ pub(crate) struct View<'a> {
 /// One face's shading data, gathered once per face.
 pub(crate) struct FaceLight<'a> {
     scene: &'a Scene,
+    face: u32,
     material: &'a Material,
+    colors: Option<FaceColors>,
     normals: Option<FaceNormals>,
     flat_normal: DVec3,
     /// The lights left out (the fragment lies in their shadow).
@@ -39,7 +45,9 @@ impl<'a> FaceLight<'a> {
         let f = &scene.faces[face as usize];
         FaceLight {
             scene,
+            face,
             material: &scene.materials[f.material as usize],
+            colors: FaceColors::new(scene, face),
             normals: FaceNormals::new(scene, face),
             flat_normal: polygon_normal(&scene.face_points(face)),
             shadowed: LightSet::EMPTY,
@@ -58,10 +66,16 @@ impl<'a> FaceLight<'a> {
             .unwrap_or(self.flat_normal)
     }
 
+    /// The vertex colour at `p` (white without vertex colours).
+    fn tint(&self, p: DVec3) -> Rgb {
+        self.colors.as_ref().map_or([1.0; 3], |c| c.at(p))
+    }
+
     fn shade(&self, p: DVec3, eye: DVec3) -> [f64; 3] {
-        shade_sided_in_shadow(
+        shade_tinted_in_shadow(
             self.scene,
             self.material,
+            self.tint(p),
             p,
             self.normal(p),
             self.flat_normal,
@@ -76,6 +90,19 @@ impl<'a> FaceLight<'a> {
             .iter()
             .map(|&p| {
                 let c = self.shade(p, eye);
+                [c[0], c[1], c[2], alpha]
+            })
+            .collect()
+    }
+
+    /// A flat-lit face with vertex colours: at each world corner, the face's flat
+    /// colour (lit at its centroid) tinted by the vertex colour there, with alpha
+    /// `alpha`.
+    pub fn flat_vertex_colors(&self, world: &[DVec3], eye: DVec3, alpha: f64) -> Vec<[f64; 4]> {
+        world
+            .iter()
+            .map(|&p| {
+                let c = shade_face_tinted(self.scene, self.face, eye, self.shadowed, self.tint(p));
                 [c[0], c[1], c[2], alpha]
             })
             .collect()

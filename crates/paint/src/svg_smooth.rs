@@ -15,8 +15,34 @@
 //! gradients. The budget is half the tolerance: the other half covers rounding the
 //! written colours to 8 bits (at most 0.5/255, which is half of the default 1/255).
 //! Splitting stops at edges of [`MIN_EDGE_PX`] or after [`MAX_DEPTH`] levels.
-
+//!
+//! A triangle whose colours are far from one line (three unrelated vertex colours:
+//! more than [`CHANNELS_FROM`] from the nearest gradient) would need thousands of
+//! pieces, below a pixel each, which anti-aliasing blends with what lies under them.
+//! It is drawn exactly instead as its three channels: each channel of the linear
+//! interpolation is one ramp (black to red, to green, to blue) along its own
+//! direction, and the three ramps, painted over each other with `mix-blend-mode:
+//! lighten` inside an isolated group, give their per-channel maximum, which is their
+//! sum since each holds one channel only.
 use crate::phong::{MAX_DEPTH, MIN_EDGE_PX};
+
+/// A triangle whose third colour lies farther than this (per channel, colours in
+/// [0, 1]) from the line through the other two is drawn as its channels.
+pub(crate) const CHANNELS_FROM: f64 = 8.0 / 255.0;
+
+/// One channel's ramp over a triangle: the channel's value goes from `v0` at `from`
+/// to `v1` at `to` (padded beyond them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Ramp {
+    /// Where the ramp starts.
+    pub from: [f64; 2],
+    /// Where it ends.
+    pub to: [f64; 2],
+    /// The channel's value at `from`.
+    pub v0: f64,
+    /// The channel's value at `to`.
+    pub v1: f64,
+}
 
 /// One piece of a smooth fill.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,6 +68,24 @@ pub(crate) enum Piece {
         /// Colour at `to`.
         c1: [f64; 3],
     },
+    /// A triangle filled with the sum of one ramp per channel (see the module docs).
+    Channels {
+        /// Corners in pixels.
+        tri: [[f64; 2]; 3],
+        /// The red, green and blue ramps.
+        ramps: [Ramp; 3],
+    },
+}
+
+impl Piece {
+    /// The piece's triangle.
+    pub(crate) fn tri(&self) -> [[f64; 2]; 3] {
+        match *self {
+            Piece::Flat { tri, .. } | Piece::Gradient { tri, .. } | Piece::Channels { tri, .. } => {
+                tri
+            }
+        }
+    }
 }
 
 /// The pieces of a fragment with corners `points` and corner colours `colors` (fanned
@@ -89,6 +133,12 @@ fn split(tri: [[f64; 2]; 3], c: [[f64; 3]; 3], budget: f64, depth: u32, out: &mu
         out.push(g);
         return;
     }
+    if depth == 0 && gradient(tri, c, CHANNELS_FROM).is_none() {
+        if let Some(ch) = channels(tri, c) {
+            out.push(ch);
+            return;
+        }
+    }
     let longest = (0..3)
         .map(|i| (tri[i][0] - tri[(i + 1) % 3][0]).hypot(tri[i][1] - tri[(i + 1) % 3][1]))
         .fold(0.0, f64::max);
@@ -110,6 +160,46 @@ fn split(tri: [[f64; 2]; 3], c: [[f64; 3]; 3], budget: f64, depth: u32, out: &mu
     split([pab, b, pbc], [cab, c[1], cbc], budget, d, out);
     split([pca, pbc, cc], [cca, cbc, c[2]], budget, d, out);
     split([pab, pbc, pca], [cab, cbc, cca], budget, d, out);
+}
+
+/// The triangle as one ramp per channel; `None` when it has no area on the page.
+fn channels(tri: [[f64; 2]; 3], c: [[f64; 3]; 3]) -> Option<Piece> {
+    let u = [tri[1][0] - tri[0][0], tri[1][1] - tri[0][1]];
+    let v = [tri[2][0] - tri[0][0], tri[2][1] - tri[0][1]];
+    let det = u[0] * v[1] - u[1] * v[0];
+    if det == 0.0 || !det.is_finite() {
+        return None;
+    }
+    let ramp = |k: usize| -> Option<Ramp> {
+        let (f0, du, dv) = (c[0][k], c[1][k] - c[0][k], c[2][k] - c[0][k]);
+        // The channel's gradient g: g·u = du, g·v = dv.
+        let g = [(du * v[1] - dv * u[1]) / det, (dv * u[0] - du * v[0]) / det];
+        let gg = g[0] * g[0] + g[1] * g[1];
+        if !gg.is_finite() {
+            return None;
+        }
+        if gg == 0.0 {
+            return Some(Ramp {
+                from: tri[0],
+                to: tri[0],
+                v0: f0,
+                v1: f0,
+            });
+        }
+        let lo = c.iter().map(|x| x[k]).fold(f64::INFINITY, f64::min);
+        let hi = c.iter().map(|x| x[k]).fold(f64::NEG_INFINITY, f64::max);
+        let at = |f: f64| [0, 1].map(|m| tri[0][m] + g[m] * (f - f0) / gg);
+        Some(Ramp {
+            from: at(lo),
+            to: at(hi),
+            v0: lo,
+            v1: hi,
+        })
+    };
+    Some(Piece::Channels {
+        tri,
+        ramps: [ramp(0)?, ramp(1)?, ramp(2)?],
+    })
 }
 
 /// The triangle as one linear gradient, when its third colour lies within `budget`
@@ -165,9 +255,7 @@ mod tests {
 
     /// The colour a piece paints at `p` (before 8-bit rounding), or `None` outside.
     fn paint_at(piece: &Piece, p: [f64; 2]) -> Option<[f64; 3]> {
-        let tri = match piece {
-            Piece::Flat { tri, .. } | Piece::Gradient { tri, .. } => *tri,
-        };
+        let tri = piece.tri();
         let b = bary(tri, p);
         if b.iter().any(|&x| x < -1e-12) {
             return None;
@@ -182,6 +270,15 @@ mod tests {
                     .clamp(0.0, 1.0);
                 [0, 1, 2].map(|k| c0[k] + t * (c1[k] - c0[k]))
             }
+            Piece::Channels { ramps, .. } => ramps.map(|r| {
+                let (dx, dy) = (r.to[0] - r.from[0], r.to[1] - r.from[1]);
+                let dd = dx * dx + dy * dy;
+                if dd == 0.0 {
+                    return r.v1;
+                }
+                let t = (((p[0] - r.from[0]) * dx + (p[1] - r.from[1]) * dy) / dd).clamp(0.0, 1.0);
+                r.v0 + t * (r.v1 - r.v0)
+            }),
         })
     }
 
@@ -228,11 +325,25 @@ mod tests {
     }
 
     #[test]
-    fn other_colours_are_split_within_the_tolerance() {
+    fn unrelated_colours_are_three_exact_channel_ramps() {
         let c = [
             [1.0, 0.0, 0.0, 1.0],
             [0.0, 1.0, 0.0, 1.0],
-            [0.0, 0.0, 1.0, 1.0],
+            [0.2, 0.3, 1.0, 1.0],
+        ];
+        let (w, ps) = worst(&TRI, &c, 1.0 / 255.0);
+        assert_eq!(ps.len(), 1);
+        assert!(matches!(ps[0], Piece::Channels { .. }));
+        assert!(w < 1e-9, "{w}");
+    }
+
+    #[test]
+    fn other_colours_are_split_within_the_tolerance() {
+        // Within CHANNELS_FROM of one line: split.
+        let c = [
+            [0.5, 0.5, 0.5, 1.0],
+            [0.52, 0.5, 0.5, 1.0],
+            [0.5, 0.52, 0.5, 1.0],
         ];
         for tol in [1.0 / 255.0, 4.0 / 255.0, 16.0 / 255.0] {
             let (w, ps) = worst(&TRI, &c, tol);
@@ -243,7 +354,7 @@ mod tests {
             );
         }
         let fine = pieces(&TRI, &c, 1.0 / 255.0).len();
-        let coarse = pieces(&TRI, &c, 16.0 / 255.0).len();
+        let coarse = pieces(&TRI, &c, 4.0 / 255.0).len();
         assert!(coarse * 4 < fine, "{coarse} {fine}");
     }
 

@@ -116,9 +116,7 @@ pub(crate) fn write(
 
 /// The corners of a piece.
 fn corners(p: &Piece) -> [[f64; 2]; 3] {
-    match *p {
-        Piece::Flat { tri, .. } | Piece::Gradient { tri, .. } => tri,
-    }
+    p.tri()
 }
 
 /// The edges of polygons painted in order, sorted by key: the polygons that share an
@@ -185,13 +183,13 @@ impl Edges {
 fn ranks(pieces: &[Piece]) -> Vec<usize> {
     let gradients = pieces
         .iter()
-        .filter(|p| matches!(p, Piece::Gradient { .. }))
+        .filter(|p| !matches!(p, Piece::Flat { .. }))
         .count();
     let colours: BTreeMap<[u8; 3], usize> = pieces
         .iter()
         .filter_map(|p| match *p {
             Piece::Flat { rgb, .. } => Some((rgb_u8(rgb), 0)),
-            Piece::Gradient { .. } => None,
+            Piece::Gradient { .. } | Piece::Channels { .. } => None,
         })
         .collect();
     let colours: BTreeMap<[u8; 3], usize> = colours
@@ -204,7 +202,7 @@ fn ranks(pieces: &[Piece]) -> Vec<usize> {
         .iter()
         .map(|p| match *p {
             Piece::Flat { rgb, .. } => colours[&rgb_u8(rgb)],
-            Piece::Gradient { .. } => {
+            Piece::Gradient { .. } | Piece::Channels { .. } => {
                 next += 1;
                 next - 1
             }
@@ -235,7 +233,7 @@ fn write_pieces(
     for (i, p) in pieces.iter().enumerate() {
         match *p {
             Piece::Flat { rgb, .. } => flat.entry(rgb_u8(rgb)).or_default().push(i),
-            Piece::Gradient { .. } => {
+            Piece::Gradient { .. } | Piece::Channels { .. } => {
                 write_path(b, p, &polygons(i), alpha, d, gradients);
                 paths += 1;
             }
@@ -259,6 +257,10 @@ fn write_path(
     d: u8,
     gradients: &mut u64,
 ) {
+    if let Piece::Channels { ramps, .. } = *paint {
+        write_channels(b, &ramps, polygons, alpha, d, gradients);
+        return;
+    }
     if let Piece::Gradient {
         from, to, c0, c1, ..
     } = *paint
@@ -295,9 +297,65 @@ fn write_path(
             push_hex_color(b, rgb_u8(rgb));
             b.push(b'"');
         }
+        Piece::Channels { .. } => unreachable!("written by write_channels"),
     }
     opacity(b, alpha);
     b.extend_from_slice(b"/>\n");
+}
+
+/// Writes `polygons` filled with the sum of three channel ramps (see
+/// [`crate::svg_smooth`]): an isolated group (with the opacity, when below 1) of the
+/// same path three times, the red ramp, then the green and blue ones blended with
+/// `lighten`.
+fn write_channels(
+    b: &mut Vec<u8>,
+    ramps: &[svg_smooth::Ramp; 3],
+    polygons: &[&[[f64; 2]]],
+    alpha: u16,
+    d: u8,
+    gradients: &mut u64,
+) {
+    b.extend_from_slice(b"<g style=\"isolation:isolate\"");
+    if alpha < 1000 {
+        b.extend_from_slice(b" opacity=\"");
+        push_milli(b, alpha);
+        b.push(b'"');
+    }
+    b.extend_from_slice(b">\n");
+    for (k, r) in ramps.iter().enumerate() {
+        let colour = |v: f64| {
+            let mut c = [0.0; 3];
+            c[k] = v;
+            rgb_u8(c)
+        };
+        b.extend_from_slice(b"<linearGradient id=\"s");
+        push_uint(b, *gradients);
+        b.extend_from_slice(b"\" gradientUnits=\"userSpaceOnUse\" x1=\"");
+        push_num(b, r.from[0], d + 1);
+        b.extend_from_slice(b"\" y1=\"");
+        push_num(b, r.from[1], d + 1);
+        b.extend_from_slice(b"\" x2=\"");
+        push_num(b, r.to[0], d + 1);
+        b.extend_from_slice(b"\" y2=\"");
+        push_num(b, r.to[1], d + 1);
+        b.extend_from_slice(b"\"><stop stop-color=\"");
+        push_hex_color(b, colour(r.v0));
+        b.extend_from_slice(b"\"/><stop offset=\"1\" stop-color=\"");
+        push_hex_color(b, colour(r.v1));
+        b.extend_from_slice(b"\"/></linearGradient>\n<path d=\"");
+        for p in polygons {
+            push_polygon(b, p, d);
+        }
+        b.extend_from_slice(b"\" fill=\"url(#s");
+        push_uint(b, *gradients);
+        b.extend_from_slice(b")\"");
+        if k > 0 {
+            b.extend_from_slice(b" style=\"mix-blend-mode:lighten\"");
+        }
+        b.extend_from_slice(b"/>\n");
+        *gradients += 1;
+    }
+    b.extend_from_slice(b"</g>\n");
 }
 
 /// ` fill-opacity="a"` when the opacity is below 1.
@@ -372,6 +430,35 @@ mod tests {
         [0.5, 0.5, 0.5, 1.0],
     ];
 
+    /// Off one line by less than `CHANNELS_FROM`, more than the tolerance.
+    const NEAR_RAMP: [[f64; 4]; 3] = [
+        [0.2, 0.2, 0.2, 1.0],
+        [0.8, 0.8, 0.8, 1.0],
+        [0.5, 0.52, 0.5, 1.0],
+    ];
+
+    #[test]
+    fn unrelated_colours_are_three_ramps_added_in_an_isolated_group() {
+        let c = vec![
+            [1.0, 0.0, 0.0, 0.5],
+            [0.0, 1.0, 0.0, 0.5],
+            [0.0, 0.0, 1.0, 0.5],
+        ];
+        let mut f = smooth(vec![[0.0, 0.0], [60.0, 0.0], [0.0, 60.0]], c);
+        f.fill[3] = 0.5;
+        let (svg, paths) = written(vec![f], 500);
+        assert_eq!(paths, 1);
+        assert!(
+            svg.starts_with("<g style=\"isolation:isolate\" opacity=\"0.5\">\n"),
+            "{svg}"
+        );
+        assert_eq!(svg.matches("<path").count(), 3);
+        assert_eq!(svg.matches("mix-blend-mode:lighten").count(), 2);
+        // Red runs from the first corner (full) to the opposite edge (none).
+        assert!(svg.contains("x1=\"30\" y1=\"30\" x2=\"0\" y2=\"0\"><stop stop-color=\"#000000\"/><stop offset=\"1\" stop-color=\"#ff0000\"/>"), "{svg}");
+        assert!(!svg.contains("fill-opacity"));
+    }
+
     #[test]
     fn a_flap_joins_a_single_gradient_in_one_path() {
         let tri = smooth(vec![[0.0, 0.0], [50.0, 0.0], [0.0, 50.0]], RAMP.to_vec());
@@ -388,12 +475,8 @@ mod tests {
 
     #[test]
     fn pieces_flap_into_later_pieces_turning_one_way() {
-        // Corner colours off one line in RGB: split into pieces.
-        let c = vec![
-            [1.0, 0.0, 0.0, 1.0],
-            [0.0, 1.0, 0.0, 1.0],
-            [0.0, 0.0, 1.0, 1.0],
-        ];
+        // Corner colours a little off one line in RGB: split into pieces.
+        let c = NEAR_RAMP.to_vec();
         let f = smooth(vec![[0.0, 0.0], [60.0, 0.0], [0.0, 60.0]], c);
         let pieces = svg_smooth::pieces(&f.points, f.vertex_colors.as_ref().unwrap(), 1.0 / 255.0);
         assert!(pieces.len() > 1);
@@ -433,11 +516,7 @@ mod tests {
 
     #[test]
     fn a_translucent_run_of_pieces_is_one_group() {
-        let c = vec![
-            [1.0, 0.0, 0.0, 0.5],
-            [0.0, 1.0, 0.0, 0.5],
-            [0.0, 0.0, 1.0, 0.5],
-        ];
+        let c = NEAR_RAMP.map(|[r, g, b, _]| [r, g, b, 0.5]).to_vec();
         let mut f = smooth(vec![[0.0, 0.0], [60.0, 0.0], [0.0, 60.0]], c);
         f.fill[3] = 0.5;
         let (svg, _) = written(vec![f], 500);

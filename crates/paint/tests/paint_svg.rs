@@ -194,10 +194,11 @@ fn out_of_range_object_gets_an_unnamed_group() {
 fn gouraud_is_a_fitted_cover_under_pieces_within_the_tolerance() {
     let mut p = Picture::new(10, 10);
     let mut f = PaintFragment::new(vec![[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]], BLUE);
+    // A little off one line in RGB.
     f.vertex_colors = Some(vec![
-        [1.0, 0.0, 0.0, 1.0],
-        [0.0, 1.0, 0.0, 1.0],
-        [0.0, 0.0, 1.0, 1.0],
+        [0.2, 0.2, 0.2, 1.0],
+        [0.8, 0.8, 0.8, 1.0],
+        [0.5, 0.52, 0.5, 1.0],
     ]);
     p.fragments.push(f.clone());
     let (text, stats) = svg(&p);
@@ -208,6 +209,16 @@ fn gouraud_is_a_fitted_cover_under_pieces_within_the_tolerance() {
         .expect(&text);
     assert!(text[cover..].matches("<path").count() > 4, "{text}");
     assert_eq!(stats.approximated, 0);
+    // Far from one line: three channel ramps added, exactly.
+    f.vertex_colors = Some(vec![
+        [1.0, 0.0, 0.0, 1.0],
+        [0.0, 1.0, 0.0, 1.0],
+        [0.0, 0.0, 1.0, 1.0],
+    ]);
+    p.fragments = vec![f.clone()];
+    let (text, _) = svg(&p);
+    assert!(text.contains("<g style=\"isolation:isolate\">"), "{text}");
+    assert_eq!(text.matches("<path").count(), 3, "{text}");
     // Colours on one line in RGB: one exact gradient.
     f.vertex_colors = Some(vec![
         [0.2, 0.2, 0.2, 1.0],

@@ -23,6 +23,7 @@
 //! ```
 
 mod camera;
+mod face_colors;
 mod light_set;
 mod look;
 mod marks;
@@ -32,13 +33,14 @@ pub mod shapes;
 pub mod texture;
 
 pub use camera::{Camera, CameraError, Projected, Projection, Viewpoint, DEFAULT_VIEW_DIRECTION};
+pub use face_colors::FaceColors;
 pub use light_set::LightSet;
 pub use look::{Fog, FogError, FogFalloff, ParseShadingError, Shading};
 pub use marks::{LabelAnchor, MarkerShape, PointMark, Polyline, TextLabel};
 pub use model::{Face, Light, LightKind, Material, Object, Scene, SceneError};
 pub use shade::{
     fan_weights, interpolated_normal, polygon_normal, shade_face, shade_face_in_shadow,
-    shade_in_scene, shade_point, shade_sided, shade_sided_in_scene, shade_sided_in_shadow, Effects,
-    FaceNormals, Rgb,
+    shade_face_tinted, shade_in_scene, shade_point, shade_sided, shade_sided_in_scene,
+    shade_sided_in_shadow, shade_tinted_in_shadow, Effects, FaceNormals, Rgb,
 };
 pub use texture::{FaceTexcoords, Texture, TextureError};

@@ -59,6 +59,22 @@ pub enum SceneError {
         /// Number of texture coordinates in the scene.
         count: usize,
     },
+    /// A vertex colour index is out of range, or a face gives colours for some corners
+    /// only.
+    #[error("face refers to vertex colour {index}, but the scene has {count}")]
+    ColorOutOfRange {
+        /// The offending index (or the number of colours given, when it does not match
+        /// the corners).
+        index: u32,
+        /// Number of vertex colours in the scene.
+        count: usize,
+    },
+    /// A vertex colour has a channel outside [0, 1].
+    #[error("vertex colour {index} has a channel outside [0, 1]")]
+    ColorOutOfGamut {
+        /// The colour's index in [`Scene::colors`].
+        index: usize,
+    },
     /// Too many faces or vertices for 32-bit ids.
     #[error("scene too large: more than 2^32 - 1 {0}")]
     TooLarge(&'static str),
@@ -156,6 +172,9 @@ impl Material {
 pub struct Object {
     /// The object's name (free text; writers escape it).
     pub name: String,
+    /// Its faces are seen from the front only (glTF `doubleSided: false`): their back
+    /// faces are culled under the default culling, closed or not.
+    pub single_sided: bool,
 }
 
 /// One input polygon. Vertices are indices into [`Scene::vertices`], counter-clockwise
@@ -169,6 +188,11 @@ pub struct Face {
     /// Per-corner texture coordinate indices into [`Scene::texcoords`], if the input
     /// gave them.
     pub texcoords: Option<Vec<u32>>,
+    /// Per-corner vertex colour indices into [`Scene::colors`], if the input gave them.
+    /// A corner's colour multiplies the material's `Kd` and `Ka` there (as glTF's
+    /// `COLOR_0` multiplies `baseColorFactor`); colours are interpolated between the
+    /// corners, so the face is not one colour even when lit flat.
+    pub colors: Option<Vec<u32>>,
     /// Index into [`Scene::materials`].
     pub material: u32,
     /// Index into [`Scene::objects`].
@@ -222,6 +246,8 @@ pub struct Scene {
     /// Texture coordinates `(s, t)`, `t` down the image (referenced by
     /// [`Face::texcoords`]; see [`crate::texture`]).
     pub texcoords: Vec<[f64; 2]>,
+    /// Vertex colours, RGB in [0, 1] as `Kd` (referenced by [`Face::colors`]).
+    pub colors: Vec<[f64; 3]>,
     /// Faces in input order; a face's index here is its face id.
     pub faces: Vec<Face>,
     /// Materials.
@@ -232,6 +258,9 @@ pub struct Scene {
     pub lights: Vec<Light>,
     /// Camera given by the input, if any.
     pub camera: Option<Camera>,
+    /// The view a model file suggests (a glTF file's first camera): used when neither
+    /// the options nor a scene file give a camera or an eye.
+    pub default_camera: Option<Camera>,
     /// Polylines drawn over the surfaces where visible.
     pub lines: Vec<Polyline>,
     /// Points drawn as markers when visible.
@@ -267,6 +296,7 @@ impl Scene {
     pub fn add_object(&mut self, name: &str) -> u32 {
         self.objects.push(Object {
             name: name.to_string(),
+            single_sided: false,
         });
         (self.objects.len() - 1) as u32
     }
@@ -282,6 +312,7 @@ impl Scene {
             vertices: vertices.to_vec(),
             normals: None,
             texcoords: None,
+            colors: None,
             material,
             object,
         };
@@ -339,6 +370,18 @@ impl Scene {
                 return Err(SceneError::TexcoordOutOfRange { index, count });
             }
         }
+        if let Some(cs) = &face.colors {
+            let count = self.colors.len();
+            if cs.len() != face.vertices.len() {
+                return Err(SceneError::ColorOutOfRange {
+                    index: cs.len() as u32,
+                    count,
+                });
+            }
+            if let Some(&index) = cs.iter().find(|&&c| c as usize >= count) {
+                return Err(SceneError::ColorOutOfRange { index, count });
+            }
+        }
         if face.material as usize >= self.materials.len() {
             return Err(SceneError::BadReference {
                 what: "material",
@@ -365,6 +408,13 @@ impl Scene {
         }
         if self.texcoords.iter().flatten().any(|v| !v.is_finite()) {
             return Err(SceneError::NonFinite("texture coordinate"));
+        }
+        if let Some(index) = self
+            .colors
+            .iter()
+            .position(|c| !c.iter().all(|v| (0.0..=1.0).contains(v)))
+        {
+            return Err(SceneError::ColorOutOfGamut { index });
         }
         for f in &self.faces {
             self.check_face(f)?;
@@ -477,11 +527,13 @@ impl Scene {
         let vo = self.vertices.len() as u32;
         let no = self.normals.len() as u32;
         let to = self.texcoords.len() as u32;
+        let co = self.colors.len() as u32;
         let mo = self.materials.len() as u32;
         let oo = self.objects.len() as u32;
         self.vertices.extend_from_slice(&other.vertices);
         self.normals.extend_from_slice(&other.normals);
         self.texcoords.extend_from_slice(&other.texcoords);
+        self.colors.extend_from_slice(&other.colors);
         self.materials.extend(other.materials.iter().cloned());
         self.objects.extend(other.objects.iter().cloned());
         for f in &other.faces {
@@ -495,6 +547,10 @@ impl Scene {
                     .texcoords
                     .as_ref()
                     .map(|ts| ts.iter().map(|t| t + to).collect()),
+                colors: f
+                    .colors
+                    .as_ref()
+                    .map(|cs| cs.iter().map(|c| c + co).collect()),
                 material: f.material + mo,
                 object: f.object + oo,
             });

@@ -33,6 +33,8 @@ pub struct Effects {
     pub fog: bool,
     /// Some light casts shadows (`shadows = true`) and some face is lit.
     pub shadows: bool,
+    /// Some face has vertex colours (interpolated between its corners).
+    pub vertex_colors: bool,
 }
 
 impl Effects {
@@ -42,6 +44,7 @@ impl Effects {
         let mut e = Effects::default();
         for f in &scene.faces {
             used[f.material as usize] = true;
+            e.vertex_colors |= f.colors.is_some();
             if f.texcoords.is_some() && scene.materials[f.material as usize].texture.is_some() {
                 e.texture = true;
             }
@@ -94,6 +97,9 @@ impl Effects {
         if self.shadows {
             v.push("shadows");
         }
+        if self.vertex_colors {
+            v.push("vertex-colors");
+        }
         v
     }
 }
@@ -128,13 +134,19 @@ pub fn shade_sided(
     eye: DVec3,
     lights: &[Light],
 ) -> Rgb {
-    shade_lit_by(m, p, n, side, eye, lights, LightSet::EMPTY)
+    shade_lit_by(m, WHITE, p, n, side, eye, lights, LightSet::EMPTY)
 }
 
+/// The tint that changes nothing.
+const WHITE: Rgb = [1.0; 3];
+
 /// [`shade_sided`] leaving out the lights in `shadowed` (indices into `lights`): the
-/// colour of a point in their shadow. Ambient light is never left out.
+/// colour of a point in their shadow. Ambient light is never left out. `tint` (a vertex
+/// colour) multiplies `Kd` and `Ka`, not the specular term.
+#[allow(clippy::too_many_arguments)]
 fn shade_lit_by(
     m: &Material,
+    tint: Rgb,
     p: DVec3,
     n: DVec3,
     side: DVec3,
@@ -143,7 +155,7 @@ fn shade_lit_by(
     shadowed: LightSet,
 ) -> Rgb {
     if m.illum == 0 {
-        return m.kd;
+        return [0, 1, 2].map(|k| m.kd[k] * tint[k]);
     }
     let to_eye = (eye - p).normalize_or_zero();
     let mut n = n.normalize_or_zero();
@@ -177,7 +189,7 @@ fn shade_lit_by(
     }
     let mut out = [0.0f64; 3];
     for (k, o) in out.iter_mut().enumerate() {
-        *o = m.ka[k] * ambient[k];
+        *o = m.ka[k] * tint[k] * ambient[k];
     }
     for (i, l) in lights.iter().enumerate() {
         if shadowed.contains(i) {
@@ -198,7 +210,7 @@ fn shade_lit_by(
             0.0
         };
         for (k, o) in out.iter_mut().enumerate() {
-            *o += l.color[k] * (m.kd[k] * diff + m.ks[k] * spec);
+            *o += l.color[k] * (m.kd[k] * tint[k] * diff + m.ks[k] * spec);
         }
     }
     out.map(|c| c.clamp(0.0, 1.0))
@@ -298,15 +310,27 @@ pub fn shade_face(scene: &Scene, face: u32, eye: DVec3) -> Rgb {
 /// [`shade_face`] for a piece of the face in the shadow of the lights in `shadowed`: the
 /// same point, normal and fog, without those lights.
 pub fn shade_face_in_shadow(scene: &Scene, face: u32, eye: DVec3, shadowed: LightSet) -> Rgb {
+    shade_face_tinted(scene, face, eye, shadowed, WHITE)
+}
+
+/// [`shade_face_in_shadow`] with `Kd` and `Ka` multiplied by `tint`: the flat colour of
+/// a face's point whose vertex colour is `tint` (lit at the centroid, as the face).
+pub fn shade_face_tinted(
+    scene: &Scene,
+    face: u32,
+    eye: DVec3,
+    shadowed: LightSet,
+    tint: Rgb,
+) -> Rgb {
     let f = &scene.faces[face as usize];
     let m = &scene.materials[f.material as usize];
     if m.illum == 0 {
-        return m.kd;
+        return [0, 1, 2].map(|k| m.kd[k] * tint[k]);
     }
     let pts = scene.face_points(face);
     let c = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
     let n = polygon_normal(&pts);
-    shade_sided_in_shadow(scene, m, c, n, n, eye, shadowed)
+    shade_tinted_in_shadow(scene, m, tint, c, n, n, eye, shadowed)
 }
 
 /// [`shade_point`] under the scene's lights, then seen through the scene's fog (when it
@@ -338,7 +362,23 @@ pub fn shade_sided_in_shadow(
     eye: DVec3,
     shadowed: LightSet,
 ) -> Rgb {
-    let c = shade_lit_by(m, p, n, side, eye, &scene.lights, shadowed);
+    shade_tinted_in_shadow(scene, m, WHITE, p, n, side, eye, shadowed)
+}
+
+/// [`shade_sided_in_shadow`] with `Kd` and `Ka` multiplied by `tint` (the vertex colour
+/// at `p`).
+#[allow(clippy::too_many_arguments)]
+pub fn shade_tinted_in_shadow(
+    scene: &Scene,
+    m: &Material,
+    tint: Rgb,
+    p: DVec3,
+    n: DVec3,
+    side: DVec3,
+    eye: DVec3,
+    shadowed: LightSet,
+) -> Rgb {
+    let c = shade_lit_by(m, tint, p, n, side, eye, &scene.lights, shadowed);
     match &scene.fog {
         Some(fog) if m.illum >= 1 => fog.apply(c, p, eye),
         _ => c,

@@ -6,26 +6,30 @@
 //! Flat faces keep their one colour. Textured faces (texture coordinates and a textured
 //! material) are shaded flat, as the painter draws them, times the texture sampled at
 //! the point's texture coordinates (bilinear, repeating; perspective-correct, as they
-//! are interpolated in world space). Nothing here runs when no face is smooth or
-//! textured.
+//! are interpolated in world space). A face with vertex colours is tinted at the point
+//! by its interpolated colour (Phong), or interpolates its corners' tinted colours
+//! (Gouraud; lit flat, the corners' colours are the flat lighting times their vertex
+//! colours), as the painter draws it. Nothing here runs when no face is smooth,
+//! textured or vertex-coloured.
 
 use glam::DVec3;
 use limn_scene::{
-    polygon_normal, shade_face, shade_face_in_shadow, shade_sided_in_scene, shade_sided_in_shadow,
-    FaceNormals, FaceTexcoords, LightSet, Rgb, Scene, Shading,
+    fan_weights, polygon_normal, shade_face, shade_face_in_shadow, shade_face_tinted,
+    shade_tinted_in_shadow, FaceColors, FaceNormals, FaceTexcoords, LightSet, Rgb, Scene, Shading,
 };
 
 use crate::image::{rgb_to_u8, NO_FACE};
 use crate::pixel_rays::PixelRays;
 use crate::setup::Frame;
 
-/// Whether some face of `scene` is shaded smoothly or textured (and [`shade`] is
-/// needed).
+/// Whether some face of `scene` is shaded smoothly, textured or vertex-coloured (and
+/// [`shade`] is needed).
 pub(crate) fn needed(scene: &Scene) -> bool {
     scene.faces.iter().any(|f| {
         let m = &scene.materials[f.material as usize];
         Shading::of_face(scene.shading, f, m) != Shading::Flat
             || (f.texcoords.is_some() && m.texture.is_some())
+            || f.colors.is_some()
     })
 }
 
@@ -35,12 +39,21 @@ struct Smooth {
     /// Textured: the mapping and the face's flat colour it multiplies.
     texture: Option<(FaceTexcoords, Rgb)>,
     normals: Option<FaceNormals>,
+    /// The vertex colours, if the face has them.
+    colors: Option<FaceColors>,
+    /// Lit flat (with vertex colours: the corners' colours are the flat lighting times
+    /// theirs).
+    flat: bool,
+    /// The face's corners.
+    corners: Vec<DVec3>,
     /// Gouraud: the colour at each corner.
     corner_colors: Vec<Rgb>,
     /// The face's geometric normal (lit side, plane).
     side: DVec3,
     /// A point of the face's plane.
     origin: DVec3,
+    /// The eye the face is shaded from.
+    eye: DVec3,
 }
 
 /// Colours of `ids` (face per pixel, [`NO_FACE`] for the background): `flat(pixel,
@@ -82,21 +95,16 @@ pub(crate) fn shade(
                 [0, 1, 2].map(|k| flat[k] * t[k])
             } else if s.phong {
                 let n = s.normals.as_ref().and_then(|ns| ns.at(p)).unwrap_or(s.side);
-                shade_sided_in_shadow(scene, m, p, n, s.side, eye, set)
+                let tint = s.colors.as_ref().map_or([1.0; 3], |c| c.at(p));
+                shade_tinted_in_shadow(scene, m, tint, p, n, s.side, eye, set)
             } else {
-                match s.normals.as_ref().and_then(|ns| ns.weights(p)) {
+                match fan_weights(&s.corners, p) {
                     Some((idx, wts)) => {
                         let corner = |j: usize| -> Rgb {
                             if set.is_empty() {
                                 s.corner_colors[j]
                             } else {
-                                match s.normals.as_ref() {
-                                    Some(ns) => {
-                                        let (c, n) = (ns.corners()[j], ns.normals()[j]);
-                                        shade_sided_in_shadow(scene, m, c, n, s.side, eye, set)
-                                    }
-                                    None => s.corner_colors[j],
-                                }
+                                corner_color(scene, id, s, j, set)
                             }
                         };
                         let cc = idx.map(corner);
@@ -123,37 +131,62 @@ fn smooth_face(scene: &Scene, face: u32, eye: DVec3) -> Option<Smooth> {
             phong: false,
             texture: Some((tex, shade_face(scene, face, eye))),
             normals: None,
+            colors: None,
+            flat: true,
+            corners: Vec::new(),
             corner_colors: Vec::new(),
             side,
             origin,
+            eye,
         });
     }
-    let phong = match Shading::of_face(scene.shading, f, m) {
+    let colors = FaceColors::new(scene, face);
+    let (phong, flat) = match Shading::of_face(scene.shading, f, m) {
+        Shading::Flat if colors.is_some() => (false, true),
         Shading::Flat => return None,
-        Shading::Gouraud => false,
-        Shading::Phong => true,
+        Shading::Gouraud => (false, false),
+        Shading::Phong => (true, false),
     };
-    let normals = FaceNormals::new(scene, face)?;
-    let pts = normals.corners();
-    let side = polygon_normal(pts);
+    let normals = if flat {
+        None
+    } else {
+        Some(FaceNormals::new(scene, face)?)
+    };
+    let corners = scene.face_points(face);
+    let side = polygon_normal(&corners);
     if side.length_squared() == 0.0 {
         return None;
     }
-    let origin = pts.iter().copied().sum::<DVec3>() / pts.len() as f64;
-    let corner_colors = if phong {
-        Vec::new()
-    } else {
-        pts.iter()
-            .zip(normals.normals())
-            .map(|(&p, &n)| shade_sided_in_scene(scene, m, p, n, side, eye))
-            .collect()
-    };
-    Some(Smooth {
+    let origin = corners.iter().copied().sum::<DVec3>() / corners.len() as f64;
+    let mut s = Smooth {
         phong,
         texture: None,
-        normals: Some(normals),
-        corner_colors,
+        normals,
+        colors,
+        flat,
+        corners,
+        corner_colors: Vec::new(),
         side,
         origin,
-    })
+        eye,
+    };
+    if !phong {
+        s.corner_colors = (0..s.corners.len())
+            .map(|j| corner_color(scene, face, &s, j, LightSet::EMPTY))
+            .collect();
+    }
+    Some(s)
+}
+
+/// The Gouraud colour of corner `j` of smooth face `face` without the lights in
+/// `shadowed`: lit there with its normal (or flat, at the centroid), tinted by its
+/// vertex colour.
+fn corner_color(scene: &Scene, face: u32, s: &Smooth, j: usize, shadowed: LightSet) -> Rgb {
+    let tint = s.colors.as_ref().map_or([1.0; 3], |c| c.colors()[j]);
+    if s.flat {
+        return shade_face_tinted(scene, face, s.eye, shadowed, tint);
+    }
+    let m = &scene.materials[scene.faces[face as usize].material as usize];
+    let n = s.normals.as_ref().map_or(s.side, |ns| ns.normals()[j]);
+    shade_tinted_in_shadow(scene, m, tint, s.corners[j], n, s.side, s.eye, shadowed)
 }

@@ -36,6 +36,7 @@ fn invalid_input_is_an_error_not_a_panic() {
         vertices: vec![0, 1, 9],
         normals: None,
         texcoords: None,
+        colors: None,
         material: 0,
         object: 0,
     });

@@ -98,19 +98,39 @@ pub(crate) fn split_glb<'a>(
     Ok((json, bin))
 }
 
+/// Largest fallback buffer of `EXT_meshopt_compression` made to hold decoded views
+/// (1 GiB).
+const MAX_FALLBACK: usize = 1 << 30;
+
 /// Loads every buffer of `doc`, each cut to its declared length, and records in `files`
-/// every external file read.
+/// every external file read. A buffer marked in `fallback` (an `EXT_meshopt_compression`
+/// fallback) without a `uri` is made of zeros, for the decoded views to fill.
 pub(crate) fn buffers<'a>(
     doc: &Document,
     blob: Option<&'a [u8]>,
     path: &Path,
     opts: &LoadOptions,
+    fallback: &[bool],
     files: &mut Vec<std::path::PathBuf>,
 ) -> Result<Vec<Cow<'a, [u8]>>, LoadError> {
     let mut out = Vec::new();
     for buffer in doc.buffers() {
         let i = buffer.index();
         let at = Location::record(path, format!("buffer {i}"));
+        let empty_fallback = fallback.get(i).copied().unwrap_or(false)
+            && matches!(buffer.source(), Source::Bin)
+            && (i > 0 || blob.is_none());
+        if empty_fallback {
+            if buffer.length() > MAX_FALLBACK {
+                return Err(LoadError::TooLarge {
+                    at,
+                    what: "bytes in a meshopt fallback buffer",
+                    limit: MAX_FALLBACK as u64,
+                });
+            }
+            out.push(Cow::Owned(vec![0; buffer.length()]));
+            continue;
+        }
         let data: Cow<[u8]> = match buffer.source() {
             Source::Bin => Cow::Borrowed(blob.ok_or_else(|| LoadError::Invalid {
                 at: at.clone(),
@@ -230,42 +250,134 @@ pub(crate) fn layout<'b>(
     Ok((data, acc.offset(), stride))
 }
 
-/// Reads a float VEC3 accessor (positions, normals), checking every value is finite.
-pub(crate) fn read_vec3(
+/// The value of one component of type `t` at the start of `b`: floats as they are,
+/// normalised integers scaled to [0, 1] (unsigned) or [-1, 1] (signed, as the
+/// specification asks: the most negative value is -1 too), other integers as they are.
+fn component(b: &[u8], t: DataType, normalized: bool) -> f64 {
+    let (v, full) = match t {
+        DataType::F32 => return f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+        DataType::I8 => (f64::from(b[0] as i8), 127.0),
+        DataType::U8 => (f64::from(b[0]), 255.0),
+        DataType::I16 => (f64::from(i16::from_le_bytes([b[0], b[1]])), 32767.0),
+        DataType::U16 => (f64::from(u16::from_le_bytes([b[0], b[1]])), 65535.0),
+        DataType::U32 => (
+            f64::from(u32::from_le_bytes([b[0], b[1], b[2], b[3]])),
+            4294967295.0,
+        ),
+    };
+    if normalized {
+        (v / full).max(-1.0)
+    } else {
+        v
+    }
+}
+
+/// Reads an accessor of `N` components each (`dims`) whose component type is one of
+/// `types` (with `normalized` flags as listed: `None` for either), every value finite.
+/// `what` names the attribute in messages.
+pub(crate) fn read_components<const N: usize>(
     acc: &::gltf::Accessor,
     buffers: &[Cow<[u8]>],
+    dims: Dimensions,
+    types: &[(DataType, Option<bool>)],
     what: &str,
     path: &Path,
-) -> Result<Vec<DVec3>, LoadError> {
+) -> Result<Vec<[f64; N]>, LoadError> {
     let at = || Location::record(path, format!("accessor {}", acc.index()));
-    if acc.dimensions() != Dimensions::Vec3 || acc.data_type() != DataType::F32 {
+    let (t, normalized) = (acc.data_type(), acc.normalized());
+    let known = types
+        .iter()
+        .any(|&(ty, n)| ty == t && n.is_none_or(|n| n == normalized));
+    if acc.dimensions() != dims || !known {
+        let list: Vec<String> = types
+            .iter()
+            .map(|(ty, n)| match n {
+                Some(true) => format!("normalised {ty:?}"),
+                _ => format!("{ty:?}"),
+            })
+            .collect();
         return Err(LoadError::Unsupported {
             at: at(),
             what: format!(
-                "{what} of type {:?} {:?} (float VEC3 is read)",
-                acc.data_type(),
-                acc.dimensions()
+                "{what} of type {}{t:?} {:?} ({dims:?} of {} is read)",
+                if normalized { "normalised " } else { "" },
+                acc.dimensions(),
+                list.join(", ")
             ),
         });
     }
-    let (data, start, stride) = layout(acc, buffers, 12, path)?;
+    let size = t.size();
+    let (data, start, stride) = layout(acc, buffers, N * size, path)?;
     let mut out = Vec::with_capacity(acc.count());
     for i in 0..acc.count() {
         let o = start + i * stride;
-        let c = |k: usize| {
-            let b = &data[o + 4 * k..o + 4 * k + 4];
-            f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64
-        };
-        let p = DVec3::new(c(0), c(1), c(2));
-        if !p.is_finite() {
+        let v: [f64; N] = std::array::from_fn(|k| component(&data[o + size * k..], t, normalized));
+        if !v.iter().all(|c| c.is_finite()) {
             return Err(LoadError::NonFinite {
                 at: Location::record(path, format!("accessor {} element {i}", acc.index())),
                 what: what.to_string(),
             });
         }
-        out.push(p);
+        out.push(v);
     }
     Ok(out)
+}
+
+/// Component types of positions: float, and with `KHR_mesh_quantization` (signed or
+/// unsigned) bytes and shorts, normalised or not.
+pub(crate) const POSITION_TYPES: &[(DataType, Option<bool>)] = &[
+    (DataType::F32, Some(false)),
+    (DataType::I8, None),
+    (DataType::U8, None),
+    (DataType::I16, None),
+    (DataType::U16, None),
+];
+
+/// Component types of normals: float, and with `KHR_mesh_quantization` normalised
+/// signed bytes and shorts.
+pub(crate) const NORMAL_TYPES: &[(DataType, Option<bool>)] = &[
+    (DataType::F32, Some(false)),
+    (DataType::I8, Some(true)),
+    (DataType::I16, Some(true)),
+];
+
+/// Reads a VEC3 accessor of positions or normals (`types`: [`POSITION_TYPES`] or
+/// [`NORMAL_TYPES`]), checking every value is finite.
+pub(crate) fn read_vec3(
+    acc: &::gltf::Accessor,
+    buffers: &[Cow<[u8]>],
+    types: &[(DataType, Option<bool>)],
+    what: &str,
+    path: &Path,
+) -> Result<Vec<DVec3>, LoadError> {
+    let v = read_components::<3>(acc, buffers, Dimensions::Vec3, types, what, path)?;
+    Ok(v.into_iter().map(DVec3::from_array).collect())
+}
+
+/// Reads a `COLOR_n` accessor (float, normalised unsigned byte or short; VEC3 or VEC4)
+/// as RGBA (alpha 1 for VEC3), each channel clamped to [0, 1].
+pub(crate) fn read_colors(
+    acc: &::gltf::Accessor,
+    buffers: &[Cow<[u8]>],
+    path: &Path,
+) -> Result<Vec<[f64; 4]>, LoadError> {
+    const TYPES: &[(DataType, Option<bool>)] = &[
+        (DataType::F32, Some(false)),
+        (DataType::U8, Some(true)),
+        (DataType::U16, Some(true)),
+    ];
+    let rgba: Vec<[f64; 4]> = if acc.dimensions() == Dimensions::Vec3 {
+        read_components::<3>(acc, buffers, Dimensions::Vec3, TYPES, "colour", path)?
+            .into_iter()
+            .map(|[r, g, b]| [r, g, b, 1.0])
+            .collect()
+    } else {
+        read_components::<4>(acc, buffers, Dimensions::Vec4, TYPES, "colour", path)?
+    };
+    Ok(rgba
+        .into_iter()
+        .map(|c| c.map(|v| v.clamp(0.0, 1.0)))
+        .collect())
 }
 
 /// Reads an index accessor (unsigned scalars).

@@ -11,13 +11,25 @@
 //! specification asks.
 //!
 //! Materials: `baseColorFactor` RGB becomes `Kd`; its alpha becomes the opacity when
-//! `alphaMode` is `BLEND` (opaque otherwise: `MASK` cut-outs need textures). Materials
-//! with `KHR_materials_unlit` are unlit (`illum 0`), others diffusely lit (`illum 1`).
-//! Primitives without a material get [`Material::default_grey`]. A
-//! `baseColorTexture` becomes the material's texture, for primitives that have its
-//! `TEXCOORD_n` (see [`textures`]); other textures (normal, emissive, occlusion,
-//! metallic-roughness) are not drawn.
+//! `alphaMode` is `BLEND`. Under `MASK`, a factor alpha below `alphaCutoff` (default
+//! 0.5) cuts the whole primitive away (its faces are not drawn, with a warning); a
+//! base-colour texture whose alpha would cut parts away is drawn whole, with a warning
+//! (as is a `BLEND` texture's alpha: the opacity is the factor's). `OPAQUE` ignores
+//! alpha, as the specification says. Materials with `KHR_materials_unlit` are unlit
+//! (`illum 0`), others diffusely lit (`illum 1`). Primitives without a material get
+//! [`Material::default_grey`]. A `baseColorTexture` becomes the material's texture,
+//! for primitives that have its `TEXCOORD_n` (see [`textures`]); other textures
+//! (normal, emissive, occlusion, metallic-roughness) are not drawn. `COLOR_0` becomes
+//! vertex colours (multiplying `Kd`, as it multiplies the base colour).
+//!
+//! Sides: a node's primitives with `doubleSided: false` materials (the default, also of
+//! primitives without a material) form an object of their own marked
+//! [`limn_scene::Object::single_sided`] (their back faces are culled), those with
+//! double-sided materials another. The first camera met while walking the nodes
+//! becomes the scene's [`Scene::default_camera`] (see [`camera`]).
 
+mod camera;
+mod compression;
 mod data;
 mod textures;
 
@@ -27,6 +39,7 @@ use std::sync::Arc;
 
 use ::gltf::material::AlphaMode;
 use ::gltf::mesh::Mode;
+use ::gltf::texture::WrappingMode;
 use ::gltf::Document;
 use glam::DMat4;
 
@@ -61,24 +74,48 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
     } else {
         (bytes, None)
     };
-    let root: ::gltf::json::Root =
+    let mut root: ::gltf::json::Root =
         ::gltf::json::deserialize::from_slice(json).map_err(|e| json_error(&e, path, glb))?;
-    check_position_accessors(&root, path)?;
-    let doc = Document::from_json(root).map_err(|e| LoadError::Invalid {
-        at: Location::file(path),
-        message: validation_message(&e),
-    })?;
-    for ext in doc.extensions_required() {
-        if !HARMLESS.contains(&ext) {
+    // Required extensions are judged before validation, which would report those it
+    // does not know among other findings (and cut the list short).
+    for ext in &root.extensions_required {
+        if let Some(e) = compression::refused(ext, path) {
+            return Err(e);
+        }
+        if !HARMLESS.contains(&ext.as_str()) && !compression::READ.contains(&ext.as_str()) {
             return Err(LoadError::Unsupported {
                 at: Location::file(path),
                 what: format!("required extension {ext}"),
             });
         }
     }
+    root.extensions_required.clear();
+    let fallbacks: Vec<String> = root
+        .extensions_used
+        .iter()
+        .filter_map(|ext| compression::fallback_warning(ext, path))
+        .collect();
+    let meshopt = if root
+        .extensions_used
+        .iter()
+        .any(|e| e == "EXT_meshopt_compression")
+    {
+        Some(compression::Meshopt::read(json, path)?)
+    } else {
+        None
+    };
+    check_position_accessors(&root, path)?;
+    let doc = Document::from_json(root).map_err(|e| LoadError::Invalid {
+        at: Location::file(path),
+        message: validation_message(&e),
+    })?;
     textures::check_images(&doc, path)?;
     let mut files = Vec::new();
-    let buffers = data::buffers(&doc, blob, path, opts, &mut files)?;
+    let fallback = meshopt.as_ref().map_or(&[][..], |m| &m.fallback[..]);
+    let mut buffers = data::buffers(&doc, blob, path, opts, fallback, &mut files)?;
+    if let Some(m) = &meshopt {
+        m.decode(&mut buffers, path)?;
+    }
     let mut b = Builder {
         path,
         opts,
@@ -86,17 +123,33 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         buffers: &buffers,
         scene: Scene {
             files,
+            warnings: fallbacks,
             ..Scene::default()
         },
         materials: HashMap::new(),
         skipped_modes: 0,
         triangles: 0,
+        vertex_alpha_warned: false,
+        camera_tried: false,
+        masked: Default::default(),
+        alpha_warned: Default::default(),
+        samplers: Default::default(),
     };
     b.walk(&doc)?;
-    if !b.images.is_empty() && doc.extensions_used().any(|e| e == "KHR_texture_transform") {
+    for (m, faces) in &b.masked {
         b.scene.warnings.push(format!(
-            "{}: KHR_texture_transform is not applied to textures",
-            path.display()
+            "{} (material {}): alphaMode MASK with a base colour alpha below alphaCutoff: \
+             its {faces} faces are cut away, as the file asks, and not drawn",
+            b.path.display(),
+            m.map_or("default".to_string(), |i| i.to_string())
+        ));
+    }
+    for (sampler, (modes, prims)) in &b.samplers {
+        b.scene.warnings.push(format!(
+            "{} (sampler {}): wrap modes {modes} are drawn as REPEAT ({prims} primitives \
+             reach outside [0, 1])",
+            b.path.display(),
+            sampler.map_or("default".to_string(), |i| i.to_string())
         ));
     }
     if b.skipped_modes > 0 {
@@ -190,6 +243,17 @@ struct Builder<'a, 'b> {
     materials: HashMap<Option<usize>, u32>,
     skipped_modes: usize,
     triangles: usize,
+    /// Whether the warning of [`Builder::vertex_alpha`] was given.
+    vertex_alpha_warned: bool,
+    /// Whether a camera was looked at for the default view.
+    camera_tried: bool,
+    /// Per glTF material cut away by `MASK`: the faces not drawn.
+    masked: std::collections::BTreeMap<Option<usize>, usize>,
+    /// glTF materials whose texture alpha was warned about.
+    alpha_warned: std::collections::BTreeSet<Option<usize>>,
+    /// Samplers drawn as `REPEAT` over coordinates outside [0, 1]: by sampler index,
+    /// its wrap modes and the primitives.
+    samplers: std::collections::BTreeMap<Option<usize>, (String, usize)>,
 }
 
 impl Builder<'_, '_> {
@@ -228,15 +292,38 @@ impl Builder<'_, '_> {
                     what: "transform".into(),
                 });
             }
+            if let Some(cam) = node.camera() {
+                if self.scene.default_camera.is_none() && !self.camera_tried {
+                    self.camera_tried = true;
+                    match camera::placed(&cam, &world) {
+                        Ok(c) => self.scene.default_camera = Some(c),
+                        Err(why) => {
+                            let w = camera::unusable(self.path, &cam, &why);
+                            self.scene.warnings.push(w);
+                        }
+                    }
+                }
+            }
             if let Some(mesh) = node.mesh() {
                 let name = node
                     .name()
                     .or(mesh.name())
                     .map(str::to_string)
                     .unwrap_or_else(|| format!("node {}", node.index()));
-                check_u32(self.scene.objects.len(), "objects", self.path)?;
-                let object = self.scene.add_object(&name);
+                // One object for the double-sided primitives, one for the others.
+                let mut objects: [Option<u32>; 2] = [None, None];
                 for prim in mesh.primitives() {
+                    let single = !prim.material().double_sided();
+                    let object = match objects[usize::from(single)] {
+                        Some(o) => o,
+                        None => {
+                            check_u32(self.scene.objects.len(), "objects", self.path)?;
+                            let o = self.scene.add_object(&name);
+                            self.scene.objects[o as usize].single_sided = single;
+                            objects[usize::from(single)] = Some(o);
+                            o
+                        }
+                    };
                     self.primitive(&mesh, &prim, object, &world)?;
                 }
             }
@@ -273,12 +360,34 @@ impl Builder<'_, '_> {
                 at: at(),
                 message: "no POSITION attribute".into(),
             })?;
-        let positions = data::read_vec3(&pos, self.buffers, "position", self.path)?;
+        let positions = data::read_vec3(
+            &pos,
+            self.buffers,
+            data::POSITION_TYPES,
+            "position",
+            self.path,
+        )?;
         let normals = match prim.get(&::gltf::Semantic::Normals) {
-            Some(acc) if acc.count() == positions.len() => {
-                Some(data::read_vec3(&acc, self.buffers, "normal", self.path)?)
-            }
+            Some(acc) if acc.count() == positions.len() => Some(data::read_vec3(
+                &acc,
+                self.buffers,
+                data::NORMAL_TYPES,
+                "normal",
+                self.path,
+            )?),
             _ => None,
+        };
+        let colors = match prim.get(&::gltf::Semantic::Colors(0)) {
+            Some(acc) if acc.count() == positions.len() => {
+                Some(data::read_colors(&acc, self.buffers, self.path)?)
+            }
+            Some(acc) => {
+                return Err(LoadError::Invalid {
+                    at: Location::record(self.path, format!("accessor {}", acc.index())),
+                    message: format!("{} colours for {} positions", acc.count(), positions.len()),
+                })
+            }
+            None => None,
         };
         let indices = match prim.indices() {
             Some(acc) => data::read_indices(&acc, self.buffers, self.path)?,
@@ -304,6 +413,13 @@ impl Builder<'_, '_> {
                 limit: MAX_TRIANGLES as u64,
             });
         }
+        let gm = prim.material();
+        if gm.alpha_mode() == AlphaMode::Mask
+            && gm.pbr_metallic_roughness().base_color_factor()[3] < gm.alpha_cutoff().unwrap_or(0.5)
+        {
+            *self.masked.entry(gm.index()).or_default() += tris.len();
+            return Ok(());
+        }
         let material = self.material(prim.material());
         let texcoords = self.texcoords(prim, material, positions.len())?;
         let (v0, n0, f0) = (
@@ -311,6 +427,14 @@ impl Builder<'_, '_> {
             self.scene.normals.len(),
             self.scene.faces.len(),
         );
+        let c0 = self.scene.colors.len();
+        if let Some(cs) = &colors {
+            check_u32(c0 + cs.len(), "vertex colours", self.path)?;
+            self.vertex_alpha(prim, cs);
+            self.scene
+                .colors
+                .extend(cs.iter().map(|&[r, g, b, _]| [r, g, b]));
+        }
         let t0 = self.scene.texcoords.len();
         if let Some(ts) = &texcoords {
             check_u32(t0 + ts.len(), "texture coordinates", self.path)?;
@@ -328,10 +452,12 @@ impl Builder<'_, '_> {
             let texcoords = texcoords
                 .as_ref()
                 .map(|_| t.map(|i| t0 as u32 + i).to_vec());
+            let colors = colors.as_ref().map(|_| t.map(|i| c0 as u32 + i).to_vec());
             self.scene.faces.push(Face {
                 vertices,
                 normals,
                 texcoords,
+                colors,
                 material,
                 object,
             });
@@ -344,6 +470,26 @@ impl Builder<'_, '_> {
             });
         }
         Ok(())
+    }
+
+    /// Warns (once per file) when a primitive's `COLOR_0` alpha would show: below 1
+    /// under a `BLEND` or `MASK` material (vertex colours are drawn as RGB; the
+    /// material's own alpha rule stays).
+    fn vertex_alpha(&mut self, prim: &::gltf::Primitive, colors: &[[f64; 4]]) {
+        let mode = prim.material().alpha_mode();
+        if self.vertex_alpha_warned
+            || mode == AlphaMode::Opaque
+            || colors.iter().all(|c| c[3] >= 1.0)
+        {
+            return;
+        }
+        self.vertex_alpha_warned = true;
+        self.scene.warnings.push(format!(
+            "{} (mesh primitive {}): COLOR_0 alpha under alphaMode {mode:?} is not drawn \
+             (vertex colours are drawn opaque over the material's opacity)",
+            self.path.display(),
+            prim.index()
+        ));
     }
 
     /// The texture coordinates of a primitive whose material has a base-colour texture
@@ -362,13 +508,19 @@ impl Builder<'_, '_> {
         else {
             return Ok(None);
         };
-        let set = ::gltf::Semantic::TexCoords(info.tex_coord());
+        let transform = info.texture_transform();
+        let coord = transform
+            .as_ref()
+            .and_then(|t| t.tex_coord())
+            .unwrap_or(info.tex_coord());
+        let set = ::gltf::Semantic::TexCoords(coord);
         let Some(acc) = prim.get(&set) else {
             self.scene.warnings.push(format!(
-                "{} (mesh primitive {}): the base-colour texture's TEXCOORD_{} is missing;                  drawn untextured",
+                "{} (mesh primitive {}): the base-colour texture's TEXCOORD_{} is missing; \
+                 drawn untextured",
                 self.path.display(),
                 prim.index(),
-                info.tex_coord()
+                coord
             ));
             return Ok(None);
         };
@@ -378,7 +530,10 @@ impl Builder<'_, '_> {
                 message: format!("{} texture coordinates for {count} positions", acc.count()),
             });
         }
-        let st = textures::read_vec2(&acc, self.buffers, self.path)?;
+        let mut st = textures::read_vec2(&acc, self.buffers, self.path)?;
+        if let Some(t) = &transform {
+            textures::transform(&mut st, t);
+        }
         let texture = info.texture();
         let image = texture.source().index();
         let t = match self.images.get(&image) {
@@ -390,14 +545,57 @@ impl Builder<'_, '_> {
                     self.path,
                     self.opts,
                     &mut self.scene.files,
-                    &mut self.scene.warnings,
                 )?;
                 self.images.insert(image, t.clone());
                 t
             }
         };
+        self.texture_alpha(prim, &t);
+        let sampler = texture.sampler();
+        let (ws, wt) = (sampler.wrap_s(), sampler.wrap_t());
+        if (ws != WrappingMode::Repeat || wt != WrappingMode::Repeat)
+            && st.iter().flatten().any(|&c| !(0.0..=1.0).contains(&c))
+        {
+            self.samplers
+                .entry(sampler.index())
+                .or_insert_with(|| (format!("{ws:?}/{wt:?}"), 0))
+                .1 += 1;
+        }
         self.scene.materials[material as usize].texture = Some(t);
         Ok(Some(st))
+    }
+
+    /// Warns (once per material) when the alpha of a `MASK` or `BLEND` material's
+    /// texture would show and is not drawn.
+    fn texture_alpha(&mut self, prim: &::gltf::Primitive, t: &Texture) {
+        let m = prim.material();
+        let mode = m.alpha_mode();
+        if mode == AlphaMode::Opaque || self.alpha_warned.contains(&m.index()) {
+            return;
+        }
+        let factor = f64::from(m.pbr_metallic_roughness().base_color_factor()[3]);
+        let what = if mode == AlphaMode::Mask {
+            let cutoff = f64::from(m.alpha_cutoff().unwrap_or(0.5));
+            let cut = t
+                .rgba()
+                .chunks_exact(4)
+                .any(|p| factor * f64::from(p[3]) / 255.0 < cutoff);
+            if !cut {
+                return;
+            }
+            "the texture's alpha cut-out (alphaMode MASK) is not drawn: its faces are drawn whole"
+        } else {
+            if t.rgba().chunks_exact(4).all(|p| p[3] == 255) {
+                return;
+            }
+            "the texture's alpha (alphaMode BLEND) is not drawn: the opacity is the base colour factor's"
+        };
+        self.alpha_warned.insert(m.index());
+        self.scene.warnings.push(format!(
+            "{} (material {}): {what}",
+            self.path.display(),
+            m.index().map_or("default".to_string(), |i| i.to_string())
+        ));
     }
 
     fn material(&mut self, m: ::gltf::Material) -> u32 {

@@ -5,7 +5,9 @@
 //! Images are read only for primitives that draw them (a textured material on a
 //! primitive with the texture coordinates), each at most once. Samplers: limn repeats
 //! textures (the glTF default); `CLAMP_TO_EDGE` and `MIRRORED_REPEAT` are drawn as
-//! repeat with a warning. `KHR_texture_transform` is not applied (a warning says so).
+//! repeat, with one warning per sampler whose primitives reach outside [0, 1] (inside,
+//! every mode draws the same). `KHR_texture_transform` (offset, rotation, scale, `texCoord`) moves the
+//! coordinates as they are read.
 
 use std::borrow::Cow;
 use std::path::Path;
@@ -13,56 +15,48 @@ use std::sync::Arc;
 
 use ::gltf::accessor::{DataType, Dimensions};
 use ::gltf::image::Source;
-use ::gltf::texture::WrappingMode;
 use limn_scene::Texture;
 
 use super::data;
 use crate::{refs, LoadError, LoadOptions, Location};
 
 /// Reads a texture coordinate accessor: float, or normalised unsigned byte or short
-/// VEC2, each value finite.
+/// VEC2, and with `KHR_mesh_quantization` signed ones and unnormalised integers too,
+/// each value finite.
 pub(crate) fn read_vec2(
     acc: &::gltf::Accessor,
     buffers: &[Cow<[u8]>],
     path: &Path,
 ) -> Result<Vec<[f64; 2]>, LoadError> {
-    let at = || Location::record(path, format!("accessor {}", acc.index()));
-    let size = match (acc.dimensions(), acc.data_type(), acc.normalized()) {
-        (Dimensions::Vec2, DataType::F32, _) => 4,
-        (Dimensions::Vec2, DataType::U8, true) => 1,
-        (Dimensions::Vec2, DataType::U16, true) => 2,
-        (d, t, _) => {
-            return Err(LoadError::Unsupported {
-                at: at(),
-                what: format!(
-                    "texture coordinates of type {t:?} {d:?} (float, or normalised unsigned \
-                     byte or short, VEC2 is read)"
-                ),
-            })
-        }
-    };
-    let (bytes, start, stride) = data::layout(acc, buffers, 2 * size, path)?;
-    let mut out = Vec::with_capacity(acc.count());
-    for i in 0..acc.count() {
-        let o = start + i * stride;
-        let c = |k: usize| {
-            let b = &bytes[o + size * k..o + size * (k + 1)];
-            match size {
-                1 => f64::from(b[0]) / 255.0,
-                2 => f64::from(u16::from_le_bytes([b[0], b[1]])) / 65535.0,
-                _ => f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
-            }
-        };
-        let st = [c(0), c(1)];
-        if !st[0].is_finite() || !st[1].is_finite() {
-            return Err(LoadError::NonFinite {
-                at: Location::record(path, format!("accessor {} element {i}", acc.index())),
-                what: "texture coordinate".into(),
-            });
-        }
-        out.push(st);
+    const TYPES: &[(DataType, Option<bool>)] = &[
+        (DataType::F32, Some(false)),
+        (DataType::I8, None),
+        (DataType::U8, None),
+        (DataType::I16, None),
+        (DataType::U16, None),
+    ];
+    data::read_components::<2>(
+        acc,
+        buffers,
+        Dimensions::Vec2,
+        TYPES,
+        "texture coordinates",
+        path,
+    )
+}
+
+/// Applies a `KHR_texture_transform` to texture coordinates, as the extension defines
+/// it: `translation · rotation · scale`, the rotation matrix's columns `(cos r, sin r)`
+/// and `(−sin r, cos r)`.
+pub(crate) fn transform(st: &mut [[f64; 2]], t: &::gltf::texture::TextureTransform) {
+    let [ox, oy] = t.offset().map(f64::from);
+    let [sx, sy] = t.scale().map(f64::from);
+    let r = f64::from(t.rotation());
+    let (sin, cos) = r.sin_cos();
+    for p in st.iter_mut() {
+        let (u, v) = (p[0] * sx, p[1] * sy);
+        *p = [cos * u - sin * v + ox, sin * u + cos * v + oy];
     }
-    Ok(out)
 }
 
 /// Refuses images with neither a `uri` nor a `bufferView` with a `mimeType` (the
@@ -79,27 +73,16 @@ pub(crate) fn check_images(doc: &::gltf::Document, path: &Path) -> Result<(), Lo
     Ok(())
 }
 
-/// Decodes the image of `texture`; warnings for samplers limn draws differently.
+/// Decodes the image of `texture`.
 pub(crate) fn read_image(
     texture: &::gltf::Texture,
     buffers: &[Cow<[u8]>],
     path: &Path,
     opts: &LoadOptions,
     files: &mut Vec<std::path::PathBuf>,
-    warnings: &mut Vec<String>,
 ) -> Result<Arc<Texture>, LoadError> {
     let image = texture.source();
     let at = Location::record(path, format!("image {}", image.index()));
-    let sampler = texture.sampler();
-    if sampler.wrap_s() != WrappingMode::Repeat || sampler.wrap_t() != WrappingMode::Repeat {
-        warnings.push(format!(
-            "{} (texture {}): wrap modes {:?}/{:?} are drawn as REPEAT",
-            path.display(),
-            texture.index(),
-            sampler.wrap_s(),
-            sampler.wrap_t()
-        ));
-    }
     let (bytes, name): (Cow<[u8]>, String) = match image.source() {
         Source::View { view, .. } => {
             let buf = buffers

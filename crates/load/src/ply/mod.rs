@@ -18,11 +18,14 @@
 //!
 //! Colours: integer channels are scaled by their type's largest value (255 for
 //! `uchar`), float channels are taken as they are; both are clamped to [0, 1]. A face
-//! with its own colour gets it; otherwise, when vertices have colours, the face gets the
-//! mean of its corners' colours. Each distinct colour becomes one *unlit* material
-//! (`illum 0`, drawn with exactly that colour, as a coloured PLY is meant to look),
-//! named `#rrggbb` (`#rrggbbaa` when translucent: alpha is the opacity). Faces of a PLY
-//! without colours get [`Material::default_grey`].
+//! with its own colour gets it; otherwise, when vertices have colours, a face whose
+//! corners share one colour gets it, and a face whose corners differ gets their colours
+//! as vertex colours ([`Face::colors`], interpolated between the corners) over a white
+//! material. Each distinct colour becomes one *unlit* material (`illum 0`, drawn with
+//! exactly that colour, as a coloured PLY is meant to look), named `#rrggbb`
+//! (`#rrggbbaa` when translucent: alpha is the opacity; a face whose corners' alphas
+//! differ is drawn with their mean, with a warning). Faces of a PLY without colours get
+//! [`Material::default_grey`].
 
 mod header;
 mod source;
@@ -94,7 +97,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
     let mut scene = Scene::default();
     let object = scene.add_object(&stem(path));
     let mut vertex_colours: Vec<[f64; 4]> = Vec::new();
-    // Faces whose corners have different colours, drawn with their mean.
+    // Faces whose corners have different alphas, drawn with their mean.
     let mut averaged = 0usize;
     let mut has_normals = false;
     let mut seen_vertex = false;
@@ -150,7 +153,9 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
                         scene.normals.push(nv);
                     }
                     if let Some(c) = colour {
-                        vertex_colours.push(c.read(el, &vals));
+                        let rgba = c.read(el, &vals);
+                        vertex_colours.push(rgba);
+                        scene.colors.push([rgba[0], rgba[1], rgba[2]]);
                     }
                 }
             }
@@ -236,8 +241,8 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
     }
     if averaged > 0 {
         scene.warnings.push(format!(
-            "{}: {averaged} faces have corners of different colours; each is drawn in the \
-             mean of its corners' colours",
+            "{}: {averaged} faces have corners of different alphas; each is drawn with the \
+             mean of its corners' alphas",
             path.display()
         ));
     }
@@ -257,8 +262,8 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
 /// In a strip, the index -1 ends one strip and starts the next.
 const RESTART: u32 = u32::MAX;
 
-/// Adds faces to a PLY's scene with their material (the face's colour, else the mean of
-/// its corners' colours, else the default grey).
+/// Adds faces to a PLY's scene with their material (the face's colour, else its
+/// corners' shared colour, else white under their vertex colours, else the default grey).
 struct Faces<'a> {
     scene: &'a mut Scene,
     materials: &'a mut BitsMap<[u64; 4], u32>,
@@ -273,22 +278,25 @@ struct Faces<'a> {
 impl Faces<'_> {
     /// Adds the face with corners `vertices` and its own colour `rgba`, if any.
     fn push(&mut self, vertices: Vec<u32>, rgba: Option<[f64; 4]>) -> Result<(), LoadError> {
+        let mut colors = None;
         let rgba = rgba.or_else(|| {
             if self.vertex_colours.is_empty() {
                 return None;
             }
             let first = self.vertex_colours[vertices[0] as usize];
-            *self.averaged += vertices
-                .iter()
-                .any(|&v| self.vertex_colours[v as usize] != first)
-                as usize;
-            let mut sum = [0.0; 4];
-            for &v in &vertices {
-                for (s, c) in sum.iter_mut().zip(self.vertex_colours[v as usize]) {
-                    *s += c;
-                }
+            let corner = |v: &u32| self.vertex_colours[*v as usize];
+            if vertices.iter().all(|v| corner(v) == first) {
+                return Some(first);
             }
-            Some(sum.map(|s| s / vertices.len() as f64))
+            *self.averaged += vertices.iter().any(|v| corner(v)[3] != first[3]) as usize;
+            if vertices.iter().any(|v| corner(v)[..3] != first[..3]) {
+                colors = Some(vertices.clone());
+            }
+            let alpha = vertices.iter().map(|v| corner(v)[3]).sum::<f64>() / vertices.len() as f64;
+            Some(match colors {
+                Some(_) => [1.0, 1.0, 1.0, alpha],
+                None => [first[0], first[1], first[2], alpha],
+            })
         });
         check_u32(self.scene.faces.len(), "faces", self.path)?;
         let material = material_for(self.scene, self.materials, rgba);
@@ -297,6 +305,7 @@ impl Faces<'_> {
             vertices,
             normals,
             texcoords: None,
+            colors,
             material,
             object: self.object,
         });
