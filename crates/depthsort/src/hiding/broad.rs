@@ -1,13 +1,16 @@
-//! The broad phase of the shadows: which occluders may shadow a receiver, found in a
-//! view from the light (in floats, with margins: a false candidate only costs an exact
-//! clip, a missed one would be a bug, so every bound is widened).
+//! The broad phase of the hiding: which occluders may hide a receiver from a source,
+//! found in a view from the source (in floats, with margins: a false candidate only
+//! costs an exact clip, a missed one would be a bug, so every bound is widened).
 //!
 //! A light at infinity projects along its direction; a point light outside the scene's
 //! box projects centrally onto a plane across the axis on which it lies outside the
 //! box (every point of the scene then has positive depth, and the projection of a
 //! convex polygon lies in the box of its projected corners). A point light inside the
 //! box, or too close to it for the projection to be well conditioned, has no such
-//! view: every occluder is then a candidate of every receiver.
+//! view: every occluder is then a candidate of every receiver. A finite eye projects
+//! centrally along the camera's axis (everything it sees lies beyond the near plane).
+//! A point seen at depth zero or less has no position in a central view: a polygon
+//! with such a corner has no extent, and is then tested against every occluder.
 
 use glam::DVec3;
 
@@ -17,7 +20,7 @@ pub(crate) enum LightView {
     /// Parallel along `-dir`: screen `(x·e1, x·e2)`, depth `−x·dir` (larger is farther
     /// from the light).
     Parallel { e1: DVec3, e2: DVec3, dir: DVec3 },
-    /// Central from `at` along the axis `axis` (±1 on one coordinate).
+    /// Central from `at` along the unit vector `axis`, `e1` and `e2` across it.
     Central {
         at: DVec3,
         axis: DVec3,
@@ -67,13 +70,30 @@ impl LightView {
         }
     }
 
-    /// Screen position and depth of `x` (`None` for [`LightView::All`]).
+    /// The central view from `at` along `axis` (not zero), for points that lie beyond
+    /// `at` along it.
+    pub fn along(at: DVec3, axis: DVec3) -> LightView {
+        let axis = axis.normalize();
+        let e1 = axis.any_orthonormal_vector();
+        LightView::Central {
+            at,
+            axis,
+            e1,
+            e2: axis.cross(e1),
+        }
+    }
+
+    /// Screen position and depth of `x` (`None` for [`LightView::All`], and for a point
+    /// at depth zero or less in a central view).
     fn project(&self, x: DVec3) -> Option<([f64; 2], f64)> {
         match *self {
             LightView::Parallel { e1, e2, dir } => Some(([x.dot(e1), x.dot(e2)], -x.dot(dir))),
             LightView::Central { at, axis, e1, e2 } => {
                 let v = x - at;
                 let z = v.dot(axis);
+                if z.is_nan() || z <= 0.0 {
+                    return None;
+                }
                 Some(([v.dot(e1) / z, v.dot(e2) / z], z))
             }
             LightView::All => None,
@@ -199,10 +219,10 @@ impl Grid {
         self.extents[i as usize]
     }
 
-    /// Whether an occluder of extent `o` may shadow a part of extent `r` (boxes meet and
+    /// Whether an occluder of extent `o` may hide a part of extent `r` (boxes meet and
     /// the occluder reaches nearer to the light than the part's farthest point, within
     /// the margins).
-    pub fn may_shadow(&self, o: Extent, r: &Extent) -> bool {
+    pub fn may_hide(&self, o: Extent, r: &Extent) -> bool {
         let m = self.margin;
         o.lo[0] <= r.hi[0] + m
             && r.lo[0] <= o.hi[0] + m
@@ -225,7 +245,7 @@ impl Grid {
                         continue;
                     }
                     seen[i as usize] = true;
-                    if self.may_shadow(self.extents[i as usize], r) {
+                    if self.may_hide(self.extents[i as usize], r) {
                         out.push(i);
                     }
                 }
