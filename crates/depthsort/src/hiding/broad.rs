@@ -130,9 +130,12 @@ pub(crate) struct Extent {
     pub far: f64,
 }
 
-/// Occluders binned by their box on the light's screen.
+/// Occluders binned by their box on the light's screen; those without one (a corner
+/// at depth zero or less in a central view) are candidates of every receiver.
 pub(crate) struct Grid {
-    extents: Vec<Extent>,
+    extents: Vec<Option<Extent>>,
+    /// The occluders without an extent.
+    everywhere: Vec<u32>,
     lo: [f64; 2],
     cell: [f64; 2],
     n: usize,
@@ -143,12 +146,13 @@ pub(crate) struct Grid {
 }
 
 impl Grid {
-    /// Bins `extents` (one per occluder; all `Some`, or the view is [`LightView::All`]).
-    pub fn new(extents: Vec<Extent>) -> Grid {
+    /// Bins `extents` (one per occluder; all `None` when the view is
+    /// [`LightView::All`]).
+    pub fn new(extents: Vec<Option<Extent>>) -> Grid {
         let mut lo = [f64::INFINITY; 2];
         let mut hi = [f64::NEG_INFINITY; 2];
         let (mut dlo, mut dhi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for e in &extents {
+        for e in extents.iter().flatten() {
             for i in 0..2 {
                 lo[i] = lo[i].min(e.lo[i]);
                 hi[i] = hi[i].max(e.hi[i]);
@@ -166,6 +170,9 @@ impl Grid {
         let margin = 1e-9 * span(lo[0], hi[0]).max(span(lo[1], hi[1])) + 1e-300;
         let dmargin = 1e-9 * span(dlo, dhi) + 1e-300;
         let n = ((extents.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
+        let everywhere = (0..extents.len() as u32)
+            .filter(|&i| extents[i as usize].is_none())
+            .collect();
         let size = |i: usize| {
             let s = (hi[i] - lo[i]) / n as f64;
             if s.is_finite() && s > 0.0 {
@@ -177,6 +184,7 @@ impl Grid {
         let cell = [size(0), size(1)];
         let mut grid = Grid {
             extents,
+            everywhere,
             lo,
             cell,
             n,
@@ -185,6 +193,7 @@ impl Grid {
             dmargin,
         };
         for (i, e) in grid.extents.iter().enumerate() {
+            let Some(e) = e else { continue };
             let (x0, x1, y0, y1) = grid.range(e);
             for y in y0..=y1 {
                 for x in x0..=x1 {
@@ -215,7 +224,7 @@ impl Grid {
     }
 
     /// Occluder `i`'s extent.
-    pub fn extent(&self, i: u32) -> Extent {
+    pub fn extent(&self, i: u32) -> Option<Extent> {
         self.extents[i as usize]
     }
 
@@ -245,7 +254,7 @@ impl Grid {
                         continue;
                     }
                     seen[i as usize] = true;
-                    if self.may_hide(self.extents[i as usize], r) {
+                    if self.extents[i as usize].is_some_and(|e| self.may_hide(e, r)) {
                         out.push(i);
                     }
                 }
@@ -262,6 +271,7 @@ impl Grid {
                 }
             }
         }
+        out.extend(&self.everywhere);
         out.sort_unstable();
     }
 }

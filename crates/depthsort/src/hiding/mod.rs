@@ -33,7 +33,7 @@ use rayon::prelude::*;
 use crate::options::OrderError;
 use crate::pieces::Ctx;
 use broad::{Extent, Grid, LightView};
-use volume::{clip, Clip, Source, Volume};
+use volume::{clip, covers, Clip, Source, Volume};
 
 pub(crate) use sight::Sight;
 
@@ -83,24 +83,18 @@ struct Caster<K: Kernel> {
     source: Source<K::Point>,
     view: LightView,
     volumes: Vec<Volume<K::Plane>>,
-    /// `None` when every occluder is a candidate of every receiver.
-    grid: Option<Grid>,
+    grid: Grid,
 }
 
 impl<K: Kernel> Caster<K> {
-    /// A caster of `volumes`, each with its extent seen in `view` (binned when every one
-    /// has one).
+    /// A caster of `volumes`, each with its extent seen in `view` (binned).
     fn new(
         who: Who,
         source: Source<K::Point>,
         view: LightView,
         built: Vec<(Volume<K::Plane>, Option<Extent>)>,
     ) -> Caster<K> {
-        let grid = if built.iter().all(|(_, e)| e.is_some()) {
-            Some(Grid::new(built.iter().filter_map(|(_, e)| *e).collect()))
-        } else {
-            None
-        };
+        let grid = Grid::new(built.iter().map(|(_, e)| *e).collect());
         Caster {
             who,
             source,
@@ -223,24 +217,41 @@ fn cast<K: Kernel>(
         None
     });
     let all = extent(whole, corners);
-    match (&c.grid, all) {
-        (Some(grid), Some(e)) => grid.candidates(&e, seen, cand),
-        _ => {
+    match all {
+        Some(e) => c.grid.candidates(&e, seen, cand),
+        None => {
             cand.clear();
             cand.extend(0..c.volumes.len() as u32);
         }
     }
+    // The painter's coplanar rule, seen from the eye: the later face wins.
+    let coplanar_hidden = |vol: &Volume<K::Plane>| c.who == Who::Eye && face < vol.face;
+    // A receiver not yet cut that one occluder hides whole is hidden without a cut (most
+    // of what the eye cannot see, in a scene of many layers; one cut by an occluder that
+    // hides only a part of it would leave parts to clip by every later candidate).
+    if let Node::Leaf(p, s, _) = node {
+        if !s.contains(c.who) && !s.from_eye {
+            let vols = cand.iter().map(|&q| &c.volumes[q as usize]);
+            if vols
+                .clone()
+                .any(|v| covers(ctx.k, p, v, coplanar_hidden(v)))
+            {
+                s.insert(c.who);
+                return;
+            }
+        }
+    }
     for &q in cand.iter() {
         let vol = &c.volumes[q as usize];
-        // The painter's coplanar rule, seen from the eye: the later face wins.
-        let coplanar_hidden = c.who == Who::Eye && face < vol.face;
-        let ve = c.grid.as_ref().map(|g| (g, g.extent(q)));
-        let skip = |e: &Extent| ve.is_some_and(|(g, ve)| !g.may_hide(ve, e));
+        let coplanar_hidden = coplanar_hidden(vol);
+        let g = &c.grid;
+        let ve = g.extent(q);
+        let skip = |e: &Extent| ve.is_some_and(|ve| !g.may_hide(ve, e));
         node.visit(&skip, &mut |p, s, e| {
             if s.contains(c.who) || s.from_eye {
                 return None;
             }
-            if let (Some((g, ve)), Some(e)) = (ve, e.as_ref()) {
+            if let (Some(ve), Some(e)) = (ve, e.as_ref()) {
                 if !g.may_hide(ve, e) {
                     return None;
                 }

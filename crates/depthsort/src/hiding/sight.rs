@@ -2,19 +2,23 @@
 //! the parts of the ordered pieces it cannot see are dropped (the visible map).
 //!
 //! The eye's occluders are the convex polygons of the opaque faces that the painter
-//! draws whole: not culled (back faces of the objects whose back faces are culled, and
-//! polygons seen exactly edge-on, hide nothing in the picture) and entirely in front of
-//! the near plane (the part the near plane cuts away is not drawn, and a volume through
-//! the cut's edge is not defined by input points: a polygon the near plane cuts hides
-//! nothing here, its drawn pieces are painted over what they hide, as in painter's
-//! output). Translucent faces hide nothing: what lies behind them stays and is painted
+//! draws: not culled (back faces of the objects whose back faces are culled, and
+//! polygons seen exactly edge-on, hide nothing in the picture) and not cut by the near
+//! plane where the camera would see the cut part. A polygon whose part behind the near
+//! plane lies behind the eye or outside the view pyramid hides, within the view, exactly
+//! what its drawn part hides (the segment from the eye to a point in view stays in
+//! view, in front of the eye); one cut in view (a warning says so) hides nothing here:
+//! a volume through the cut's edge is not defined by input points, so its drawn pieces
+//! are painted over what they hide, as in painter's output, and the picture stays
+//! exact. Translucent faces hide nothing: what lies behind them stays and is painted
 //! under them. A polygon lying in an occluder's plane is hidden where the occluder
 //! covers it when the occluder's face comes later in the input (the painter's coplanar
 //! rule).
 //!
-//! Seen from a finite eye, every occluder and every receiver lies beyond the near plane,
-//! so the broad phase views them centrally along the camera's axis; an eye at infinity
-//! views them in parallel.
+//! Seen from a finite eye, every receiver lies beyond the near plane, so the broad phase
+//! views them centrally along the camera's axis (an occluder reaching behind the eye has
+//! no extent there and is a candidate of every receiver); an eye at infinity views them
+//! in parallel.
 
 use limn_kernel::{Kernel, PolygonSide, Side};
 use limn_scene::Scene;
@@ -26,6 +30,7 @@ use super::{Caster, Who};
 use crate::eye::Eye;
 use crate::options::OrderError;
 use crate::pieces::Ctx;
+use crate::prepare::lost_in_view;
 use crate::view::view_planes;
 
 /// What the eye's volumes need of the preparation.
@@ -70,7 +75,18 @@ impl Sight {
                             Side::Back => !cull_back,
                             Side::Front => true,
                         };
-                        drawn && ctx.k.classify(p, &planes.near) == PolygonSide::Front
+                        drawn
+                            && match ctx.k.classify(p, &planes.near) {
+                                PolygonSide::Front => true,
+                                PolygonSide::Spanning => !lost_in_view(
+                                    ctx,
+                                    p,
+                                    &planes.near,
+                                    planes.eye.as_ref(),
+                                    &planes.sides,
+                                ),
+                                _ => false,
+                            }
                     })
                     .map(move |p| (p, i as u32))
                     .collect::<Vec<_>>())

@@ -151,6 +151,25 @@ pub(crate) fn volume<K: Kernel>(
     Ok(Some(Volume { bounds, face }))
 }
 
+/// Whether all of the convex polygon `poly` lies inside `vol` (its boundary may touch
+/// the volume's), exactly: [`clip`] without cutting anything, which says
+/// [`Clip::Inside`] for the same polygon.
+pub(crate) fn covers<K: Kernel>(
+    k: &K,
+    poly: &K::Polygon,
+    vol: &Volume<K::Plane>,
+    coplanar_hidden: bool,
+) -> bool {
+    vol.bounds
+        .iter()
+        .enumerate()
+        .all(|(i, b)| match (k.classify(poly, &b.plane), b.inside) {
+            (PolygonSide::Front, Side::Front) | (PolygonSide::Back, Side::Back) => true,
+            (PolygonSide::Coplanar | PolygonSide::CoplanarOpposite, _) => i == 0 && coplanar_hidden,
+            _ => false,
+        })
+}
+
 /// Clips the convex polygon `poly` by `vol`, exactly. A polygon lying in one of the
 /// volume's planes is outside (it touches the volume in zero volume), except in the
 /// occluder's own plane when `coplanar_hidden`: there the occluder covers it.
