@@ -154,28 +154,22 @@ pub(crate) fn hidden_parts<K: Kernel>(
                 };
                 let mut node = Node::Leaf(piece.poly.clone(), Hidden::default(), None);
                 for c in &casters {
-                    let Who::Light(_) = c.who else {
-                        cast(
-                            ctx,
-                            c,
-                            piece.face,
-                            &piece.poly,
-                            &mut node,
-                            (seen, cand, corners),
-                        );
-                        continue;
-                    };
-                    if !lit[piece.face as usize] {
-                        continue;
+                    if matches!(&node, Node::Leaf(_, s, _) if s.from_eye) {
+                        break; // the eye sees none of it: no shadow to split
                     }
-                    if c.source.side(ctx.k, &piece.plane) != seen_side {
-                        node.visit(&|_| false, &mut |_, s, _| {
-                            if !s.from_eye {
-                                s.insert(c.who);
-                            }
-                            None
-                        });
-                        continue;
+                    if let Who::Light(_) = c.who {
+                        if !lit[piece.face as usize] {
+                            continue;
+                        }
+                        if c.source.side(ctx.k, &piece.plane) != seen_side {
+                            node.visit(&|_| false, &mut |_, s, _| {
+                                if !s.from_eye {
+                                    s.insert(c.who);
+                                }
+                                None
+                            });
+                            continue;
+                        }
                     }
                     cast(
                         ctx,
