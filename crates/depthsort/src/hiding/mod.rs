@@ -218,10 +218,14 @@ fn cast<K: Kernel>(
             cand.extend(0..c.volumes.len() as u32);
         }
     }
-    // Nearest to the source first: what the nearest occluders hide needs no cut by the
-    // occluders behind them (ties and occluders without extent in index order).
-    let near = |q: u32| c.grid.extent(q).map_or(f64::NEG_INFINITY, |e| e.near);
-    cand.sort_by(|&a, &b| near(a).total_cmp(&near(b)).then(a.cmp(&b)));
+    // Seen from the eye, nearest first: what the nearest occluders hide needs no cut by
+    // the occluders behind them (ties and occluders without extent in index order). A
+    // light's occluders stay in index order: sorted, the demo's shadow parts took 68 %
+    // more bytes.
+    if c.who == Who::Eye {
+        let near = |q: u32| c.grid.extent(q).map_or(f64::NEG_INFINITY, |e| e.near);
+        cand.sort_by(|&a, &b| near(a).total_cmp(&near(b)).then(a.cmp(&b)));
+    }
     // The painter's coplanar rule, seen from the eye: the later face wins.
     let coplanar_hidden = |vol: &Volume<K::Plane>| c.who == Who::Eye && face < vol.face;
     // A receiver not yet cut that one occluder hides whole is hidden without a cut (most
