@@ -214,6 +214,12 @@ pub struct ViewArgs {
     /// 200,000].
     #[arg(long, value_name = "N")]
     pub max_fragments: Option<usize>,
+    /// The visible map: split every face exactly along what hides it and leave the hidden
+    /// parts out of the picture (each visible region drawn once; smaller files for
+    /// assemblies and meshes seen with much hidden) [default: off, or the scene file's
+    /// `visible`].
+    #[arg(long)]
+    pub visible: bool,
     /// Follow references (MTL, buffers, meshes) that lead outside the input's folder.
     #[arg(long)]
     pub allow_outside: bool,
@@ -433,6 +439,7 @@ impl ViewArgs {
             allow_outside: self.allow_outside,
             shading: self.shading,
             matrix: None,
+            visible: self.visible,
         }
     }
 }

@@ -381,6 +381,7 @@ class Scene:
         shadow_bias: float = 1e-3,
         standalone: bool = False,
         max_fragments: Optional[int] = None,
+        visible: bool = False,
         near: Optional[float] = None,
         far: Optional[float] = None,
         threads: Optional[int] = None,
@@ -399,7 +400,9 @@ class Scene:
         seams: seam flap width in pixels (0 to 10). shading: flat, gouraud, phong;
         shading_tolerance: per channel (0, 1]. method: painter, zbuffer, scanline,
         abuffer, warnock, raycast (a PNG). standalone: a TikZ file that compiles alone.
-        max_fragments: give up beyond. near, far: clipping distances. threads: worker
+        max_fragments: give up beyond. visible: draw only the visible map (each face split
+        exactly along what hides it, the hidden parts left out; also a scene file's
+        ``visible = true``). near, far: clipping distances. threads: worker
         threads (the picture is the same for every count). stats: also write the
         statistics as JSON to this path.
 
@@ -440,6 +443,7 @@ class Scene:
             shadow_bias=float(shadow_bias),
             standalone=bool(standalone),
             max_fragments=max_fragments,
+            visible=bool(visible),
             near=near,
             far=far,
             threads=threads,
@@ -453,6 +457,7 @@ class Scene:
         sort: Optional[str] = None,
         arith: Optional[str] = None,
         seams: float = 1.0,
+        visible: bool = False,
         diff: Any = None,
         stats: Any = None,
         threads: Optional[int] = None,
@@ -461,13 +466,16 @@ class Scene:
         included) with an image-space reference (raycast, zbuffer, scanline, warnock) at
         every pixel centre, as ``limn check`` does; return its report, with ``agrees``
         (no pixel outside the band of centres too close to an edge to call disagrees, nor
-        any shadow or line pixel) and ``failures`` (why not). diff: write a PNG of the
-        disagreeing pixels; stats: write the report as JSON."""
+        any shadow or line pixel) and ``failures`` (why not). visible: check the visible
+        map ``render(visible=True)`` draws (also that no pixel centre is covered by two
+        of its opaque regions). diff: write a PNG of the disagreeing pixels; stats:
+        write the report as JSON."""
         return self._s.check(
             against,
             sort=sort,
             arith=arith,
             seams=float(seams),
+            visible=bool(visible),
             diff=None if diff is None else str(diff),
             stats=None if stats is None else str(stats),
             threads=threads,

@@ -77,6 +77,7 @@ pub(crate) struct RenderKeywords<'a, 'py> {
     pub shadow_bias: f64,
     pub standalone: bool,
     pub max_fragments: Option<usize>,
+    pub visible: bool,
     pub near: Option<f64>,
     pub far: Option<f64>,
     pub stats: Option<PathBuf>,
@@ -95,6 +96,7 @@ impl RenderKeywords<'_, '_> {
         view.near = self.near.or(view.near);
         view.far = self.far.or(view.far);
         view.max_fragments = self.max_fragments;
+        view.visible |= self.visible;
         if let Some(s) = self.shading {
             view.shading = Some(named("shading", s, &Shading::ALL, Shading::name)?);
         }
@@ -154,18 +156,21 @@ impl RenderKeywords<'_, '_> {
     }
 }
 
-/// Check options by name.
+/// Check options by name (`visible`: check the visible map).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn check_options(
     view: &ViewOptions,
     against: &str,
     sort: Option<&str>,
     arith: Option<&str>,
     seams: f64,
+    visible: bool,
     diff: Option<PathBuf>,
     stats: Option<PathBuf>,
 ) -> PyResult<CheckOptions> {
     let mut view = view.clone();
     order_names(&mut view, sort, arith, None)?;
+    view.visible |= visible;
     Ok(CheckOptions {
         view,
         against: named("reference", against, &Against::ALL, Against::name)?,

@@ -330,7 +330,8 @@ impl PyScene {
         fill=None, crease=None, seams=limn::DEFAULT_SEAMS, shading=None,
         shading_tolerance=limn::DEFAULT_SHADING_TOLERANCE, method="painter",
         shadow_map_size=limn::DEFAULT_SHADOW_MAP_SIZE, shadow_bias=limn::DEFAULT_SHADOW_BIAS,
-        standalone=false, max_fragments=None, near=None, far=None, threads=None, stats=None))]
+        standalone=false, max_fragments=None, visible=false, near=None, far=None, threads=None,
+        stats=None))]
     #[allow(clippy::too_many_arguments)]
     fn render<'py>(
         &self,
@@ -356,6 +357,7 @@ impl PyScene {
         shadow_bias: f64,
         standalone: bool,
         max_fragments: Option<usize>,
+        visible: bool,
         near: Option<f64>,
         far: Option<f64>,
         threads: Option<usize>,
@@ -382,6 +384,7 @@ impl PyScene {
             shadow_bias,
             standalone,
             max_fragments,
+            visible,
             near,
             far,
             stats,
@@ -415,7 +418,7 @@ impl PyScene {
     /// Compares the painted picture with an image-space reference pixel by pixel; the
     /// report `limn check` prints, with `agrees` and `failures`.
     #[pyo3(signature = (against="raycast", sort=None, arith=None, seams=limn::DEFAULT_SEAMS,
-        diff=None, stats=None, threads=None))]
+        visible=false, diff=None, stats=None, threads=None))]
     #[allow(clippy::too_many_arguments)]
     fn check<'py>(
         &self,
@@ -424,11 +427,14 @@ impl PyScene {
         sort: Option<&str>,
         arith: Option<&str>,
         seams: f64,
+        visible: bool,
         diff: Option<PathBuf>,
         stats: Option<PathBuf>,
         threads: Option<usize>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let o = check_options(&self.view, against, sort, arith, seams, diff, stats)?;
+        let o = check_options(
+            &self.view, against, sort, arith, seams, visible, diff, stats,
+        )?;
         let input = self.input();
         let mut events = Collected::default();
         let report = py

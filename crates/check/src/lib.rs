@@ -39,8 +39,8 @@ pub use lines::{compare_line_images, LineComparison};
 use limn_depthsort::{order_with_marks, CullMode, OrderError, OrderOptions, Ordered, VisibleMarks};
 use limn_scene::{Camera, Scene};
 use limn_zbuffer::{
-    compare, default_band_tolerance, edge_band, rasterize_ids, render, scene_edges, Comparison,
-    DepthFormat, IdImage, Mask, Method, RenderOptions, Segment2, ZError,
+    compare, coverage_counts, default_band_tolerance, edge_band, rasterize_ids, render,
+    scene_edges, Comparison, DepthFormat, IdImage, Mask, Method, RenderOptions, Segment2, ZError,
 };
 
 /// Why a check could not be made.
@@ -103,6 +103,27 @@ impl Painted {
     /// Compares the painter's ids with `other` outside [`Painted::band`].
     pub fn compare(&self, other: &IdImage) -> Comparison {
         compare(&self.ids, other, Some(&self.band))
+    }
+
+    /// Pixel centres outside [`Painted::band`] covered by two or more opaque fragments
+    /// (a visible map's regions cover each centre once: this is 0).
+    pub fn double_covered(&self, scene: &Scene) -> usize {
+        let polys: Vec<&[[f64; 2]]> = self
+            .ordered
+            .fragments
+            .iter()
+            .filter(|f| {
+                let face = &scene.faces[f.face as usize];
+                scene.materials[face.material as usize].is_opaque()
+            })
+            .map(|f| f.points.as_slice())
+            .collect();
+        let c = self.camera();
+        coverage_counts(&polys, c.width, c.height)
+            .iter()
+            .zip(&self.band.bits)
+            .filter(|&(&n, &in_band)| n > 1 && !in_band)
+            .count()
     }
 
     /// A band of `tolerance_px` around the same edges.

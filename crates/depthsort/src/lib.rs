@@ -42,6 +42,7 @@ mod eye;
 mod face_runs;
 mod feature_edges;
 mod geom;
+mod hiding;
 mod marks;
 mod merge;
 mod meshed;
@@ -55,7 +56,6 @@ mod prepare;
 mod probe;
 mod rng;
 mod separation;
-mod shadows;
 mod simple;
 mod split_apart;
 mod sweep;
@@ -200,7 +200,7 @@ fn ordered<K: Kernel>(
     ctx.limit = limit;
     let prepare::PreparedFaces {
         items,
-        whole: whole_faces,
+        whole: mut whole_faces,
         culled_objects,
     } = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
     let t1 = Instant::now();
@@ -220,17 +220,26 @@ fn ordered<K: Kernel>(
     } else {
         order
     };
-    let parts = if scene.shadow_lights().is_empty() {
+    let sight = opts.visible.then(|| hiding::Sight {
+        culled_objects: culled_objects.clone(),
+        near,
+    });
+    let parts = if scene.shadow_lights().is_empty() && sight.is_none() {
         None
     } else {
         let t = Instant::now();
-        let parts = shadows::shadow_parts(&ctx, scene, &order)?;
-        ctx.stats.ms_shadows = t.elapsed().as_secs_f64() * 1e3;
+        let parts = hiding::hidden_parts(&ctx, scene, &order, sight.as_ref())?;
+        let ms = t.elapsed().as_secs_f64() * 1e3;
+        if opts.visible {
+            ctx.stats.ms_visible = ms;
+        } else {
+            ctx.stats.ms_shadows = ms;
+        }
         Some(parts)
     };
     let (fragments, polys) = match parts {
         None => fragments(&ctx, &order, with_polygons),
-        Some(parts) => shadowed_fragments(&mut ctx, &order, parts),
+        Some(parts) => part_fragments(&mut ctx, &order, parts, &mut whole_faces),
     };
     let t3 = Instant::now();
     let mut stats = ctx.stats;
@@ -238,7 +247,7 @@ fn ordered<K: Kernel>(
     stats.filter_fallbacks = kernel.fallbacks() - fallbacks0;
     stats.ms_prepare = (t1 - t0).as_secs_f64() * 1e3;
     stats.ms_order = (t2 - t1).as_secs_f64() * 1e3;
-    stats.ms_merge = (t3 - t2).as_secs_f64() * 1e3 - stats.ms_shadows;
+    stats.ms_merge = (t3 - t2).as_secs_f64() * 1e3 - stats.ms_shadows - stats.ms_visible;
     let ordered = Ordered {
         fragments,
         stats,
@@ -312,11 +321,14 @@ fn fragments<K: Kernel>(
 /// than they save).
 const FRAGMENTS_PER_TASK: usize = 1024;
 
-/// [`fragments`] with each piece of `order` replaced by its shadow parts (in order).
-fn shadowed_fragments<K: Kernel>(
+/// [`fragments`] with each piece of `order` replaced by its parts (in order): the
+/// parts the eye cannot see left out (their faces are then not whole), the others with
+/// the lights they are in the shadow of.
+fn part_fragments<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     order: &[u32],
-    parts: Vec<shadows::Parts<K::Polygon>>,
+    parts: Vec<hiding::Parts<K::Polygon>>,
+    whole_faces: &mut [bool],
 ) -> (Vec<Fragment>, Vec<K::Polygon>) {
     let mut fragments = Vec::with_capacity(order.len());
     let mut polys = Vec::with_capacity(order.len());
@@ -326,12 +338,17 @@ fn shadowed_fragments<K: Kernel>(
             let p = &ctx.pieces[id as usize];
             (p.face, p.eye_front)
         };
-        for (poly, shadowed) in parts {
+        for (poly, hidden) in parts {
+            if hidden.from_eye {
+                ctx.stats.fragments_hidden += 1;
+                whole_faces[face as usize] = false;
+                continue;
+            }
             let piece = ctx.piece(poly, face, id, Some(eye_front), &mut scratch);
             let original_edges = (0..scratch.len())
                 .map(|i| ctx.k.edge_is_original(&piece.poly, i))
                 .collect();
-            if !shadowed.is_empty() {
+            if !hidden.lights.is_empty() {
                 ctx.stats.fragments_in_shadow += 1;
             }
             fragments.push(Fragment {
@@ -339,7 +356,7 @@ fn shadowed_fragments<K: Kernel>(
                 points: piece.pts,
                 world: std::mem::take(&mut scratch),
                 original_edges,
-                shadowed,
+                shadowed: hidden.lights,
             });
             polys.push(piece.poly);
         }

@@ -146,6 +146,10 @@ pub struct OrderOptions {
     /// (thousands of triangles in a tiny cube) stop with
     /// [`OrderError::TooManyFragments`] instead of running for minutes.
     pub max_fragments: Option<usize>,
+    /// The visible map: split every fragment exactly along what hides it from the eye
+    /// and leave out the hidden parts, so that each point of the picture is painted by
+    /// one opaque fragment (and the translucent ones in front of it). Default: false.
+    pub visible: bool,
 }
 
 /// The default fragment limit for a scene of `faces` faces: 50 per face plus 200,000,
@@ -165,6 +169,7 @@ impl Default for OrderOptions {
             candidates: 5,
             merge: true,
             max_fragments: None,
+            visible: false,
         }
     }
 }
@@ -226,6 +231,12 @@ pub struct Stats {
     /// Milliseconds spent splitting fragments along shadows (0 unless a light casts
     /// shadows).
     pub ms_shadows: f64,
+    /// Parts of fragments left out of the visible map: hidden from the eye (0 unless
+    /// [`OrderOptions::visible`]).
+    pub fragments_hidden: usize,
+    /// Milliseconds spent splitting fragments along what hides them from the eye (and
+    /// along shadows, done in the same pass; 0 unless [`OrderOptions::visible`]).
+    pub ms_visible: f64,
 }
 
 impl Stats {

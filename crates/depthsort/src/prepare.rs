@@ -304,8 +304,9 @@ fn prepare_face<K: Kernel>(
 
 /// Whether the near plane cuts away a part of `poly` that the camera would see: some of
 /// what lies behind `near` is in front of the eye's plane and inside the view pyramid
-/// (clipped exactly, one plane after another). A warning depends on it, no picture does.
-fn lost_in_view<K: Kernel>(
+/// (clipped exactly, one plane after another). A warning depends on it, and whether the
+/// polygon hides anything in the visible map (`hiding/sight.rs`).
+pub(crate) fn lost_in_view<K: Kernel>(
     ctx: &Ctx<'_, K>,
     poly: &K::Polygon,
     near: &K::Plane,

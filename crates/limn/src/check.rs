@@ -1,7 +1,9 @@
 //! A check: the painter's order against an image-space reference, pixel by pixel
 //! (through [`limn_check`], the routine the tests use; the faces compared are those of the
 //! picture a render draws, with its whole-face covers and seam flaps), and the visible
-//! line pieces against the z-buffer's depth-tested lines.
+//! line pieces against the z-buffer's depth-tested lines. A visible map (`--visible`) is
+//! also checked to cover every pixel centre outside the edge band at most once with its
+//! opaque regions.
 
 use limn_check::paint;
 use limn_paint::{picture, Style};
@@ -99,6 +101,9 @@ pub fn check(
         let png = diff_png(&painted.ids, &reference, Some(&painted.band))?;
         write_bytes(path, &scene.files, &png)?;
     }
+    // The visible map's opaque regions (the ordered fragments, before seam flaps) cover
+    // each pixel centre once.
+    let double_covered = oo.visible.then(|| painted.double_covered(scene));
     let per_face: serde_json::Map<String, serde_json::Value> = cmp
         .per_face
         .iter()
@@ -117,6 +122,8 @@ pub fn check(
         "against": method.name(),
         "sort": oo.sort.name(),
         "arith": oo.arith.name(),
+        "visible": oo.visible,
+        "double_covered": double_covered,
         "seams": o.seams,
         "width": w,
         "height": h,
@@ -163,6 +170,12 @@ pub fn check(
             "{} pixels disagree with {} outside the edge band",
             cmp.mismatches_outside_band,
             method.name()
+        ));
+    }
+    if let Some(n) = double_covered.filter(|&n| n > 0) {
+        failures.push(format!(
+            "{n} pixel centres outside the edge band are covered by two opaque regions of \
+             the visible map"
         ));
     }
     if let Some(c) = shadows.filter(|c| method == Method::RayCast && c.mismatches_outside_band > 0)

@@ -62,6 +62,10 @@ pub struct ViewOptions {
     /// A view-projection matrix (world to OpenGL clip coordinates, column-major) that
     /// replaces the scene's camera, the eye, target, up, field of view and projection.
     pub matrix: Option<[f64; 16]>,
+    /// The visible map: every fragment split exactly along what hides it from the eye,
+    /// the hidden parts left out of the picture (also when the scene file says
+    /// `visible = true`).
+    pub visible: bool,
 }
 
 /// How to compute the picture.

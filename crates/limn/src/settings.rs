@@ -159,6 +159,7 @@ pub fn order_options(view: &ViewOptions, file: &SceneOptions) -> Result<OrderOpt
             CullMode::Auto,
         )?,
         max_fragments: view.max_fragments,
+        visible: view.visible || file.visible == Some(true),
         ..OrderOptions::default()
     })
 }

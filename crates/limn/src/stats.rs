@@ -25,6 +25,9 @@ pub struct Timing {
     pub merge: f64,
     /// Of ordering: splitting fragments at shadow boundaries.
     pub shadows: f64,
+    /// Of ordering: splitting fragments along what hides them from the eye (`--visible`;
+    /// shadows are split in the same pass and counted here then).
+    pub visible: f64,
 }
 
 /// Counts of hidden lines, markers and labels.
@@ -92,6 +95,8 @@ pub struct RenderStats {
     pub fragments_made: usize,
     /// Fragments in the shadow of some light.
     pub fragments_in_shadow: usize,
+    /// Parts of fragments left out as hidden (`--visible`).
+    pub fragments_hidden: usize,
     /// The limit on fragments in force.
     pub fragment_limit: usize,
     /// Paths written.
@@ -148,6 +153,7 @@ impl RenderStats {
             fragments_out: s.fragments_out,
             fragments_made: s.fragments_made,
             fragments_in_shadow: s.fragments_in_shadow,
+            fragments_hidden: s.fragments_hidden,
             fragment_limit: s.fragment_limit,
             paths_out: paint.paths,
             bytes_out: paint.bytes,
@@ -178,6 +184,7 @@ impl RenderStats {
                 sort: s.ms_order,
                 merge: s.ms_merge,
                 shadows: s.ms_shadows,
+                visible: s.ms_visible,
             },
         }
     }

@@ -61,6 +61,38 @@ pub fn rasterize_ids(polys: &[(Vec<[f64; 2]>, u32)], width: u32, height: u32) ->
     out
 }
 
+/// How many of `polys` (convex polygons in pixel coordinates, y down) cover each pixel
+/// centre, with the sampling of [`rasterize_ids`] (the references' edge test and
+/// top-left rule): polygons that tile a region without overlapping cover each centre of
+/// it once. A polygon that is not convex counts once wherever its boundary winds round.
+pub fn coverage_counts(polys: &[&[[f64; 2]]], width: u32, height: u32) -> Vec<u32> {
+    let mut counts = vec![0u32; width as usize * height as usize];
+    let mut winding = vec![0i32; counts.len()];
+    for poly in polys {
+        let mut rows = (u32::MAX, 0);
+        for (s, sign) in fan(poly, width, height) {
+            rows = (rows.0.min(s.row_lo), rows.1.max(s.row_hi));
+            for row in s.row_lo..=s.row_hi {
+                if let Some((x0, x1)) = s.span(row) {
+                    let base = row as usize * width as usize;
+                    for w in &mut winding[base + x0 as usize..base + x1 as usize] {
+                        *w += sign;
+                    }
+                }
+            }
+        }
+        for row in rows.0..=rows.1.min(height.saturating_sub(1)) {
+            let base = row as usize * width as usize;
+            let cells = base..base + width as usize;
+            for (c, w) in counts[cells.clone()].iter_mut().zip(&mut winding[cells]) {
+                *c += u32::from(*w != 0);
+                *w = 0;
+            }
+        }
+    }
+    counts
+}
+
 /// The triangles of `poly`'s fan from its first corner that cover some pixel centre,
 /// each with the sign of its turn (exact).
 fn fan(poly: &[[f64; 2]], width: u32, height: u32) -> impl Iterator<Item = (TriSetup, i32)> + '_ {

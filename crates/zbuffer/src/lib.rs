@@ -78,7 +78,7 @@ mod zbuf;
 pub use compare::{compare, default_band_tolerance, edge_band, Comparison, Segment2};
 pub use depth::DepthFormat;
 pub use error::ZError;
-pub use fragment_ids::rasterize_ids;
+pub use fragment_ids::{coverage_counts, rasterize_ids};
 pub use image::{rgb_to_u8, to_u8, ColorImage, DepthImage, IdImage, Mask, NO_FACE};
 pub use lines::{bresenham, dda, scene_lines, wireframe, LineAlgorithm, LineOptions};
 pub use options::{Method, ParseMethodError, RenderOptions};

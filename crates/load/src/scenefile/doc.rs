@@ -63,6 +63,7 @@ pub(crate) struct OutputDoc {
     pub(crate) crease: Option<Spanned<f64>>,
     pub(crate) hidden: Option<HiddenDoc>,
     pub(crate) fill: Option<FillDoc>,
+    pub(crate) visible: Option<bool>,
 }
 
 #[derive(Deserialize, Clone, Copy, Debug)]

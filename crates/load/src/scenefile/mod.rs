@@ -24,6 +24,7 @@
 //! crease = 30.0             #   creases above this angle, exactly where visible
 //! hidden = "dashed"         # omit (default) | dashed
 //! fill = "none"             # background (default) | none: lines only, joined
+//! visible = true            # the visible map: hidden parts left out (default false)
 //! shading = "phong"         # flat | gouraud | phong (default: gouraud where there
 //!                           # are vertex normals, see limn_scene::Shading)
 //!
@@ -124,6 +125,8 @@ pub struct SceneOptions {
     pub hidden: Option<String>,
     /// Faces of hidden-line drawings: `background` or `none`.
     pub fill: Option<String>,
+    /// Draw only the visible map: each fragment's hidden parts left out.
+    pub visible: Option<bool>,
 }
 
 /// Loads a scene file: its meshes (placed and with their material overrides), lights,

@@ -135,6 +135,7 @@ pub(super) fn options(cx: &Ctx, doc: &Doc) -> Result<SceneOptions, LoadError> {
         },
         hidden: o.hidden.map(lower),
         fill: o.fill.map(lower),
+        visible: o.visible,
     })
 }
 

@@ -1,13 +1,18 @@
-//! One occluder's shadow volume as exact half-spaces, and the exact clip of a convex
-//! polygon by it.
+//! One occluder's volume as exact half-spaces (what it hides from a light or from the
+//! eye), and the exact clip of a convex polygon by it.
 //!
-//! A convex occluder `Q` (its corners are input points) hides a point `x` from a light
-//! exactly when the segment from `x` to the light crosses `Q`'s interior: `x` lies
-//! strictly beyond `Q`'s plane (on the side away from the light) and strictly inside
-//! every side plane, the plane through the light and an edge of `Q` (for a light at
-//! infinity in direction `d`, the plane through the edge containing `d`). Every one of
-//! these planes is defined by input points and the light, so every side a clip decides
-//! is exact; the pieces it cuts have implicit vertices, never rounded ones.
+//! A convex occluder `Q` (its corners are input points) hides a point `x` from a source
+//! (a light, or the eye) exactly when the segment from `x` to the source crosses `Q`'s
+//! interior: `x` lies strictly beyond `Q`'s plane (on the side away from the source) and
+//! strictly inside every side plane, the plane through the source and an edge of `Q`
+//! (for a source at infinity in direction `d`, the plane through the edge containing
+//! `d`). Every one of these planes is defined by input points and the source, so every
+//! side a clip decides is exact; the pieces it cuts have implicit vertices, never
+//! rounded ones.
+//!
+//! Seen from the eye, a polygon lying in `Q`'s plane is hidden where `Q` covers it when
+//! `Q` is painted over it (the painter's coplanar rule: the later face wins); the clip
+//! then keeps only the side planes, which meet that plane in `Q`'s edges.
 
 use std::collections::HashMap;
 
@@ -16,17 +21,17 @@ use limn_kernel::{Kernel, PolygonSide, Side};
 
 use crate::options::OrderError;
 
-/// A light as the shadow volumes see it.
+/// A light, or the eye, as the volumes see it.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Source<P> {
-    /// A point light at this position (`P`: the kernel's point).
+    /// A point light (or a finite eye) at this position (`P`: the kernel's point).
     At(DVec3, P),
-    /// A light at infinity in this direction (from the scene towards the light).
+    /// A light (or an eye) at infinity in this direction (from the scene towards it).
     Toward(DVec3),
 }
 
 impl<P> Source<P> {
-    /// The side of `plane` the light lies on.
+    /// The side of `plane` the source lies on.
     pub fn side<K: Kernel<Point = P>>(&self, k: &K, plane: &K::Plane) -> Side {
         match self {
             Source::At(_, p) => k.side_of_point(plane, p),
@@ -42,11 +47,13 @@ pub(crate) struct Bound<P> {
     pub inside: Side,
 }
 
-/// The shadow volume of one convex occluder: the intersection of its bounds' inner
-/// open half-spaces. The first bound is the occluder's own plane.
+/// The volume one convex occluder hides: the intersection of its bounds' inner open
+/// half-spaces. The first bound is the occluder's own plane.
 #[derive(Debug, Clone)]
 pub(crate) struct Volume<P> {
     pub bounds: Vec<Bound<P>>,
+    /// The occluder's input face.
+    pub face: u32,
 }
 
 /// The side planes of the occluders, one per edge: occluders sharing an edge share its
@@ -99,12 +106,13 @@ pub(crate) enum Clip<P> {
     Split { inside: P, outside: Vec<P> },
 }
 
-/// The shadow volume of the convex polygon `poly` (whose vertices must be input points)
-/// under `light`; `None` when it casts none of positive volume (the light lies in its
-/// plane).
+/// The volume the convex polygon `poly` of input face `face` (whose vertices must be
+/// input points) hides from `light`; `None` when it hides none of positive volume (the
+/// light lies in its plane).
 pub(crate) fn volume<K: Kernel>(
     k: &K,
     poly: &K::Polygon,
+    face: u32,
     light: &Source<K::Point>,
     corners: &mut Vec<DVec3>,
     shared: &mut SidePlanes<K::Plane>,
@@ -140,23 +148,46 @@ pub(crate) fn volume<K: Kernel>(
         }
         bounds.push(Bound { plane, inside });
     }
-    Ok(Some(Volume { bounds }))
+    Ok(Some(Volume { bounds, face }))
+}
+
+/// Whether all of the convex polygon `poly` lies inside `vol` (its boundary may touch
+/// the volume's), exactly: [`clip`] without cutting anything, which says
+/// [`Clip::Inside`] for the same polygon.
+pub(crate) fn covers<K: Kernel>(
+    k: &K,
+    poly: &K::Polygon,
+    vol: &Volume<K::Plane>,
+    coplanar_hidden: bool,
+) -> bool {
+    vol.bounds
+        .iter()
+        .enumerate()
+        .all(|(i, b)| match (k.classify(poly, &b.plane), b.inside) {
+            (PolygonSide::Front, Side::Front) | (PolygonSide::Back, Side::Back) => true,
+            (PolygonSide::Coplanar | PolygonSide::CoplanarOpposite, _) => i == 0 && coplanar_hidden,
+            _ => false,
+        })
 }
 
 /// Clips the convex polygon `poly` by `vol`, exactly. A polygon lying in one of the
-/// volume's planes is outside (it touches the volume in zero volume).
+/// volume's planes is outside (it touches the volume in zero volume), except in the
+/// occluder's own plane when `coplanar_hidden`: there the occluder covers it.
 pub(crate) fn clip<K: Kernel>(
     k: &K,
     poly: &K::Polygon,
     vol: &Volume<K::Plane>,
+    coplanar_hidden: bool,
 ) -> Clip<K::Polygon> {
     let mut rest: Option<K::Polygon> = None;
     let mut outside = Vec::new();
-    for b in &vol.bounds {
+    for (i, b) in vol.bounds.iter().enumerate() {
         let cur = rest.as_ref().unwrap_or(poly);
         let side = k.classify(cur, &b.plane);
         match (side, b.inside) {
             (PolygonSide::Front, Side::Front) | (PolygonSide::Back, Side::Back) => {}
+            (PolygonSide::Coplanar | PolygonSide::CoplanarOpposite, _)
+                if i == 0 && coplanar_hidden => {}
             (PolygonSide::Spanning, _) => {
                 let (front, back) = k.split(cur, &b.plane);
                 let (inn, out) = if b.inside == Side::Front {

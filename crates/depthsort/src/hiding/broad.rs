@@ -1,13 +1,16 @@
-//! The broad phase of the shadows: which occluders may shadow a receiver, found in a
-//! view from the light (in floats, with margins: a false candidate only costs an exact
-//! clip, a missed one would be a bug, so every bound is widened).
+//! The broad phase of the hiding: which occluders may hide a receiver from a source,
+//! found in a view from the source (in floats, with margins: a false candidate only
+//! costs an exact clip, a missed one would be a bug, so every bound is widened).
 //!
 //! A light at infinity projects along its direction; a point light outside the scene's
 //! box projects centrally onto a plane across the axis on which it lies outside the
 //! box (every point of the scene then has positive depth, and the projection of a
 //! convex polygon lies in the box of its projected corners). A point light inside the
 //! box, or too close to it for the projection to be well conditioned, has no such
-//! view: every occluder is then a candidate of every receiver.
+//! view: every occluder is then a candidate of every receiver. A finite eye projects
+//! centrally along the camera's axis (everything it sees lies beyond the near plane).
+//! A point seen at depth zero or less has no position in a central view: a polygon
+//! with such a corner has no extent, and is then tested against every occluder.
 
 use glam::DVec3;
 
@@ -17,7 +20,7 @@ pub(crate) enum LightView {
     /// Parallel along `-dir`: screen `(x·e1, x·e2)`, depth `−x·dir` (larger is farther
     /// from the light).
     Parallel { e1: DVec3, e2: DVec3, dir: DVec3 },
-    /// Central from `at` along the axis `axis` (±1 on one coordinate).
+    /// Central from `at` along the unit vector `axis`, `e1` and `e2` across it.
     Central {
         at: DVec3,
         axis: DVec3,
@@ -67,13 +70,30 @@ impl LightView {
         }
     }
 
-    /// Screen position and depth of `x` (`None` for [`LightView::All`]).
+    /// The central view from `at` along `axis` (not zero), for points that lie beyond
+    /// `at` along it.
+    pub fn along(at: DVec3, axis: DVec3) -> LightView {
+        let axis = axis.normalize();
+        let e1 = axis.any_orthonormal_vector();
+        LightView::Central {
+            at,
+            axis,
+            e1,
+            e2: axis.cross(e1),
+        }
+    }
+
+    /// Screen position and depth of `x` (`None` for [`LightView::All`], and for a point
+    /// at depth zero or less in a central view).
     fn project(&self, x: DVec3) -> Option<([f64; 2], f64)> {
         match *self {
             LightView::Parallel { e1, e2, dir } => Some(([x.dot(e1), x.dot(e2)], -x.dot(dir))),
             LightView::Central { at, axis, e1, e2 } => {
                 let v = x - at;
                 let z = v.dot(axis);
+                if z.is_nan() || z <= 0.0 {
+                    return None;
+                }
                 Some(([v.dot(e1) / z, v.dot(e2) / z], z))
             }
             LightView::All => None,
@@ -110,9 +130,12 @@ pub(crate) struct Extent {
     pub far: f64,
 }
 
-/// Occluders binned by their box on the light's screen.
+/// Occluders binned by their box on the light's screen; those without one (a corner
+/// at depth zero or less in a central view) are candidates of every receiver.
 pub(crate) struct Grid {
-    extents: Vec<Extent>,
+    extents: Vec<Option<Extent>>,
+    /// The occluders without an extent.
+    everywhere: Vec<u32>,
     lo: [f64; 2],
     cell: [f64; 2],
     n: usize,
@@ -123,12 +146,13 @@ pub(crate) struct Grid {
 }
 
 impl Grid {
-    /// Bins `extents` (one per occluder; all `Some`, or the view is [`LightView::All`]).
-    pub fn new(extents: Vec<Extent>) -> Grid {
+    /// Bins `extents` (one per occluder; all `None` when the view is
+    /// [`LightView::All`]).
+    pub fn new(extents: Vec<Option<Extent>>) -> Grid {
         let mut lo = [f64::INFINITY; 2];
         let mut hi = [f64::NEG_INFINITY; 2];
         let (mut dlo, mut dhi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for e in &extents {
+        for e in extents.iter().flatten() {
             for i in 0..2 {
                 lo[i] = lo[i].min(e.lo[i]);
                 hi[i] = hi[i].max(e.hi[i]);
@@ -146,6 +170,9 @@ impl Grid {
         let margin = 1e-9 * span(lo[0], hi[0]).max(span(lo[1], hi[1])) + 1e-300;
         let dmargin = 1e-9 * span(dlo, dhi) + 1e-300;
         let n = ((extents.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
+        let everywhere = (0..extents.len() as u32)
+            .filter(|&i| extents[i as usize].is_none())
+            .collect();
         let size = |i: usize| {
             let s = (hi[i] - lo[i]) / n as f64;
             if s.is_finite() && s > 0.0 {
@@ -157,6 +184,7 @@ impl Grid {
         let cell = [size(0), size(1)];
         let mut grid = Grid {
             extents,
+            everywhere,
             lo,
             cell,
             n,
@@ -165,6 +193,7 @@ impl Grid {
             dmargin,
         };
         for (i, e) in grid.extents.iter().enumerate() {
+            let Some(e) = e else { continue };
             let (x0, x1, y0, y1) = grid.range(e);
             for y in y0..=y1 {
                 for x in x0..=x1 {
@@ -195,14 +224,14 @@ impl Grid {
     }
 
     /// Occluder `i`'s extent.
-    pub fn extent(&self, i: u32) -> Extent {
+    pub fn extent(&self, i: u32) -> Option<Extent> {
         self.extents[i as usize]
     }
 
-    /// Whether an occluder of extent `o` may shadow a part of extent `r` (boxes meet and
+    /// Whether an occluder of extent `o` may hide a part of extent `r` (boxes meet and
     /// the occluder reaches nearer to the light than the part's farthest point, within
     /// the margins).
-    pub fn may_shadow(&self, o: Extent, r: &Extent) -> bool {
+    pub fn may_hide(&self, o: Extent, r: &Extent) -> bool {
         let m = self.margin;
         o.lo[0] <= r.hi[0] + m
             && r.lo[0] <= o.hi[0] + m
@@ -225,7 +254,7 @@ impl Grid {
                         continue;
                     }
                     seen[i as usize] = true;
-                    if self.may_shadow(self.extents[i as usize], r) {
+                    if self.extents[i as usize].is_some_and(|e| self.may_hide(e, r)) {
                         out.push(i);
                     }
                 }
@@ -242,6 +271,7 @@ impl Grid {
                 }
             }
         }
+        out.extend(&self.everywhere);
         out.sort_unstable();
     }
 }

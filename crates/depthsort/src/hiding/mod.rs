@@ -1,0 +1,356 @@
+//! Exact hiding in object space: each ordered piece split along the boundaries of what
+//! opaque faces hide from a source, the shadows each shadow-casting light throws on it
+//! and, for the visible map, what the eye cannot see of it; each part knows what it is
+//! hidden from.
+//!
+//! A point of a receiving piece is hidden from a source when the source does not lie
+//! strictly on the side of the piece's plane the eye sees (the seen side faces away
+//! from it), or when the segment from the point to the source crosses an occluder (the
+//! point lies inside that occluder's volume, see [`volume`]). A light's occluders are
+//! the scene's opaque faces as given ([`lights`]); the eye's are the opaque polygons the
+//! painter draws ([`sight`]). Their corners are input points, so every plane of every
+//! volume is defined by input points and the source, and every cut is exact (implicit
+//! vertices, no epsilon, no snap, no bias). The cuts of one piece are kept as a tree:
+//! where every part of a cut piece ends up hidden from the same sources, the piece is
+//! joined again exactly (it is its parent), so a face is split only along the
+//! boundaries of what hides it.
+//!
+//! The parts of a piece tile it and are painted in its place in the order, so the order
+//! stays valid; parts hidden from the eye are dropped. Which occluders can touch a
+//! receiver is found in a float view from the source ([`broad`]), a prefilter with
+//! margins.
+
+mod broad;
+mod lights;
+mod sight;
+mod volume;
+
+use glam::DVec3;
+use limn_kernel::{Kernel, Side};
+use limn_scene::{LightSet, Scene};
+use rayon::prelude::*;
+
+use crate::options::OrderError;
+use crate::pieces::Ctx;
+use broad::{Extent, Grid, LightView};
+use volume::{clip, covers, Clip, Source, Volume};
+
+pub(crate) use sight::Sight;
+
+/// What a source is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Who {
+    /// The light of this index in the scene, casting shadows.
+    Light(usize),
+    /// The eye: what it cannot see is dropped.
+    Eye,
+}
+
+/// What a part is hidden from: the eye (then it is not drawn) and the lights it is in
+/// the shadow of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct Hidden {
+    /// The eye cannot see it.
+    pub from_eye: bool,
+    /// The lights it is in the shadow of.
+    pub lights: LightSet,
+}
+
+impl Hidden {
+    fn contains(self, who: Who) -> bool {
+        match who {
+            Who::Light(i) => self.lights.contains(i),
+            Who::Eye => self.from_eye,
+        }
+    }
+
+    fn insert(&mut self, who: Who) {
+        match who {
+            Who::Light(i) => self.lights.insert(i),
+            Who::Eye => self.from_eye = true,
+        }
+    }
+
+    fn with(mut self, who: Who) -> Hidden {
+        self.insert(who);
+        self
+    }
+}
+
+/// One source with its occluders' volumes and their broad phase.
+struct Caster<K: Kernel> {
+    who: Who,
+    source: Source<K::Point>,
+    view: LightView,
+    volumes: Vec<Volume<K::Plane>>,
+    grid: Grid,
+}
+
+impl<K: Kernel> Caster<K> {
+    /// A caster of `volumes`, each with its extent seen in `view` (binned).
+    fn new(
+        who: Who,
+        source: Source<K::Point>,
+        view: LightView,
+        built: Vec<(Volume<K::Plane>, Option<Extent>)>,
+    ) -> Caster<K> {
+        let grid = Grid::new(built.iter().map(|(_, e)| *e).collect());
+        Caster {
+            who,
+            source,
+            view,
+            volumes: built.into_iter().map(|(v, _)| v).collect(),
+            grid,
+        }
+    }
+}
+
+/// The parts of one receiving piece: polygons that tile it, with what each one is
+/// hidden from.
+pub(crate) type Parts<P> = Vec<(P, Hidden)>;
+
+/// How a receiver's cuts are kept until they are joined again.
+enum Node<P> {
+    /// A part, what it is hidden from, and its extent seen from the source being cast
+    /// (`None`: not known, or no view).
+    Leaf(P, Hidden, Option<Extent>),
+    /// A polygon cut into parts that tile it, and its extent seen from the source being
+    /// cast (a visit skips the parts when no volume can reach that extent).
+    Cut(P, Vec<Node<P>>, Option<Extent>),
+    /// Nothing: a node's place while it is rebuilt (never left in a tree).
+    Taken,
+}
+
+/// Splits every piece of `order` along what hides it: from the eye when `sight` is
+/// given (every piece), and the shadows of the lights that ask for them (faces of
+/// `illum 0` materials keep their colour and are not split by shadows; parts the eye
+/// cannot see are not split further). Returns one list of parts per piece, in order.
+pub(crate) fn hidden_parts<K: Kernel>(
+    ctx: &Ctx<'_, K>,
+    scene: &Scene,
+    order: &[u32],
+    sight: Option<&Sight>,
+) -> Result<Vec<Parts<K::Polygon>>, OrderError> {
+    let mut casters = match sight {
+        Some(s) => vec![s.caster(ctx, scene)?],
+        None => Vec::new(),
+    };
+    casters.extend(lights::casters(ctx.k, scene)?);
+    let lit: Vec<bool> = scene
+        .faces
+        .iter()
+        .map(|f| scene.materials[f.material as usize].illum >= 1)
+        .collect();
+    order
+        .par_iter()
+        .map_init(
+            || (Vec::new(), Vec::new(), Vec::new()),
+            |(seen, cand, corners), &id| {
+                let piece = &ctx.pieces[id as usize];
+                let seen_side = if piece.eye_front {
+                    Side::Front
+                } else {
+                    Side::Back
+                };
+                let mut node = Node::Leaf(piece.poly.clone(), Hidden::default(), None);
+                for c in &casters {
+                    if matches!(&node, Node::Leaf(_, s, _) if s.from_eye) {
+                        break; // the eye sees none of it: no shadow to split
+                    }
+                    if let Who::Light(_) = c.who {
+                        if !lit[piece.face as usize] {
+                            continue;
+                        }
+                        if c.source.side(ctx.k, &piece.plane) != seen_side {
+                            node.visit(&|_| false, &mut |_, s, _| {
+                                if !s.from_eye {
+                                    s.insert(c.who);
+                                }
+                                None
+                            });
+                            continue;
+                        }
+                    }
+                    cast(
+                        ctx,
+                        c,
+                        piece.face,
+                        &piece.poly,
+                        &mut node,
+                        (seen, cand, corners),
+                    );
+                }
+                let mut parts = Vec::new();
+                node.into_parts(&mut parts);
+                Ok(parts)
+            },
+        )
+        .collect()
+}
+
+/// Splits the parts of a receiver (`node`, a piece `whole` of face `face`) along the
+/// volumes of caster `c`; parts already hidden from the eye are left as they are.
+fn cast<K: Kernel>(
+    ctx: &Ctx<'_, K>,
+    c: &Caster<K>,
+    face: u32,
+    whole: &K::Polygon,
+    node: &mut Node<K::Polygon>,
+    (seen, cand, corners): (&mut Vec<bool>, &mut Vec<u32>, &mut Vec<DVec3>),
+) {
+    let extent = |p: &K::Polygon, corners: &mut Vec<DVec3>| {
+        corners.clear();
+        ctx.k.vertices_world(p, corners);
+        c.view.extent(corners)
+    };
+    // Every leaf's extent from this source (cuts made for an earlier source have none
+    // from this one).
+    node.forget_cut_extents();
+    node.visit(&|_| false, &mut |p, _, e| {
+        *e = extent(p, corners);
+        None
+    });
+    let all = extent(whole, corners);
+    match all {
+        Some(e) => c.grid.candidates(&e, seen, cand),
+        None => {
+            cand.clear();
+            cand.extend(0..c.volumes.len() as u32);
+        }
+    }
+    // Seen from the eye, nearest first: what the nearest occluders hide needs no cut by
+    // the occluders behind them (ties and occluders without extent in index order). A
+    // light's occluders stay in index order: sorted, the demo's shadow parts took 68 %
+    // more bytes.
+    if c.who == Who::Eye {
+        let near = |q: u32| c.grid.extent(q).map_or(f64::NEG_INFINITY, |e| e.near);
+        cand.sort_by(|&a, &b| near(a).total_cmp(&near(b)).then(a.cmp(&b)));
+    }
+    // The painter's coplanar rule, seen from the eye: the later face wins.
+    let coplanar_hidden = |vol: &Volume<K::Plane>| c.who == Who::Eye && face < vol.face;
+    // A receiver not yet cut that one occluder hides whole is hidden without a cut (most
+    // of what the eye cannot see, in a scene of many layers; one cut by an occluder that
+    // hides only a part of it would leave parts to clip by every later candidate).
+    if let Node::Leaf(p, s, _) = node {
+        if !s.contains(c.who) && !s.from_eye {
+            let vols = cand.iter().map(|&q| &c.volumes[q as usize]);
+            if vols
+                .clone()
+                .any(|v| covers(ctx.k, p, v, coplanar_hidden(v)))
+            {
+                s.insert(c.who);
+                return;
+            }
+        }
+    }
+    for &q in cand.iter() {
+        let vol = &c.volumes[q as usize];
+        let coplanar_hidden = coplanar_hidden(vol);
+        let g = &c.grid;
+        let ve = g.extent(q);
+        let skip = |e: &Extent| ve.is_some_and(|ve| !g.may_hide(ve, e));
+        node.visit(&skip, &mut |p, s, e| {
+            if s.contains(c.who) || s.from_eye {
+                return None;
+            }
+            if let (Some(ve), Some(e)) = (ve, e.as_ref()) {
+                if !g.may_hide(ve, e) {
+                    return None;
+                }
+            }
+            match clip(ctx.k, p, vol, coplanar_hidden) {
+                Clip::Outside => None,
+                Clip::Inside => {
+                    s.insert(c.who);
+                    None
+                }
+                Clip::Split { inside, outside } => {
+                    let mut kids: Vec<Node<K::Polygon>> = outside
+                        .into_iter()
+                        .map(|o| {
+                            let e = extent(&o, corners);
+                            Node::Leaf(o, *s, e)
+                        })
+                        .collect();
+                    kids.push(Node::Leaf(inside, s.with(c.who), None));
+                    Some(kids)
+                }
+            }
+        });
+    }
+    node.join();
+}
+
+impl<P> Node<P> {
+    /// Calls `f` on every leaf (its polygon, what hides it and its extent, which `f` may
+    /// change);
+    /// a leaf for which `f` returns parts becomes a cut into them.
+    /// Cuts whose extent `skip` rejects are not entered.
+    fn visit(
+        &mut self,
+        skip: &impl Fn(&Extent) -> bool,
+        f: &mut impl FnMut(&P, &mut Hidden, &mut Option<Extent>) -> Option<Vec<Node<P>>>,
+    ) {
+        match self {
+            Node::Cut(_, _, Some(e)) if skip(e) => {}
+            Node::Cut(_, kids, _) => {
+                kids.iter_mut().for_each(|k| k.visit(skip, f));
+                // Parts that now agree are joined at once, so the tree stays as small as
+                // the shadows' boundaries make it.
+                self.join_here();
+            }
+            Node::Taken => {}
+            Node::Leaf(p, s, e) => {
+                if let Some(kids) = f(p, s, e) {
+                    if let Node::Leaf(p, _, e) = std::mem::replace(self, Node::Taken) {
+                        *self = Node::Cut(p, kids, e);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Drops the extents of every cut (they were seen from another light).
+    fn forget_cut_extents(&mut self) {
+        if let Node::Cut(_, kids, e) = self {
+            *e = None;
+            kids.iter_mut().for_each(Node::forget_cut_extents);
+        }
+    }
+
+    /// Joins cut polygons whose parts all ended up hidden from the same sources again.
+    fn join(&mut self) {
+        if let Node::Cut(_, kids, _) = self {
+            kids.iter_mut().for_each(Node::join);
+        }
+        self.join_here();
+    }
+
+    /// Joins this cut when its parts are leaves hidden from the same sources.
+    fn join_here(&mut self) {
+        let Node::Cut(_, kids, _) = self else {
+            return;
+        };
+        let first = match &kids[0] {
+            Node::Leaf(_, s, _) => *s,
+            _ => return,
+        };
+        if kids
+            .iter()
+            .all(|k| matches!(k, Node::Leaf(_, t, _) if *t == first))
+        {
+            if let Node::Cut(p, ..) = std::mem::replace(self, Node::Taken) {
+                *self = Node::Leaf(p, first, None);
+            }
+        }
+    }
+
+    /// The leaves, in order.
+    fn into_parts(self, out: &mut Vec<(P, Hidden)>) {
+        match self {
+            Node::Leaf(p, s, _) => out.push((p, s)),
+            Node::Cut(_, kids, _) => kids.into_iter().for_each(|k| k.into_parts(out)),
+            Node::Taken => {}
+        }
+    }
+}
