@@ -70,6 +70,10 @@ pub enum PlaneDef {
 #[derive(Debug)]
 pub(crate) struct PlaneData {
     def: PlaneDef,
+    /// An input point besides the definition's that is known to lie exactly on the plane
+    /// (the fourth corner of a planar quad, checked exactly when the face was converted):
+    /// the combinatorial shortcut answers for it as for the definition's points.
+    also_on: Option<[f64; 3]>,
     /// Midpoints of `[a, b, c, d]`.
     approx: [f64; 4],
     /// Bound on `|a − ã|`, `|b − b̃|`, `|c − c̃|`.
@@ -237,11 +241,11 @@ impl PlaneDef {
     }
 
     /// The points among the definition (they all lie on the plane).
-    fn points(&self) -> ([[f64; 3]; 3], usize) {
+    fn points(&self) -> ([[f64; 3]; 4], usize) {
         match *self {
-            PlaneDef::Through(pts) => (pts, 3),
-            PlaneDef::Edge { p, q, .. } | PlaneDef::Along { p, q, .. } => ([p, q, q], 2),
-            PlaneDef::PointNormal { p, .. } => ([p, p, p], 1),
+            PlaneDef::Through([p, q, r]) => ([p, q, r, r], 3),
+            PlaneDef::Edge { p, q, .. } | PlaneDef::Along { p, q, .. } => ([p, q, q, q], 2),
+            PlaneDef::PointNormal { p, .. } => ([p, p, p, p], 1),
         }
     }
 
@@ -284,6 +288,7 @@ impl Plane {
         Plane {
             data: Arc::new(PlaneData {
                 def,
+                also_on: None,
                 approx: [mid_n[0], mid_n[1], mid_n[2], mid_d],
                 err_n,
                 err_d,
@@ -346,6 +351,53 @@ impl Plane {
             k: k as u8,
             flip,
         })
+    }
+
+    /// The same plane, known also to pass through the input point `x`, which the caller
+    /// has proven to lie on it exactly (a planar face's corner outside the definition):
+    /// the shortcut then answers `On` for `x` without arithmetic.
+    pub(crate) fn also_through(&self, x: [f64; 3]) -> Plane {
+        debug_assert!(self.data.also_on.is_none());
+        debug_assert_eq!(self.side_exact(x), Side::On);
+        Plane {
+            data: Arc::new(PlaneData {
+                def: self.data.def,
+                also_on: Some(x),
+                approx: self.data.approx,
+                err_n: self.data.err_n,
+                err_d: self.data.err_d,
+            }),
+            neg: self.neg,
+        }
+    }
+
+    /// The points the plane is known to pass through: the definition's and
+    /// [`Plane::also_through`]'s.
+    fn known_points(&self) -> ([[f64; 3]; 4], usize) {
+        let (mut pts, mut n) = self.data.def.points();
+        if let Some(x) = self.data.also_on {
+            pts[n] = x;
+            n += 1;
+        }
+        (pts, n)
+    }
+
+    /// The approximate coefficients and error bounds of the edge plane
+    /// `Plane::edge(p, q, k, flip)` would have, without making it.
+    pub(crate) fn edge_coefficients(
+        p: [f64; 3],
+        q: [f64; 3],
+        k: usize,
+        flip: bool,
+    ) -> ([f64; 4], (f64, f64)) {
+        let def = PlaneDef::Edge {
+            p,
+            q,
+            k: k as u8,
+            flip,
+        };
+        let (n, d, err_n, err_d) = def.approximate();
+        ([n[0], n[1], n[2], d], (err_n, err_d))
     }
 
     /// The definition of the plane before [`Plane::is_flipped`] is applied.
@@ -444,19 +496,20 @@ impl Plane {
         Arc::ptr_eq(&self.data, &other.data)
     }
 
-    /// Whether `x` is one of the points defining the plane (so exactly on it).
+    /// Whether `x` is one of the points defining the plane, or the point it is known to
+    /// pass through besides ([`Plane::also_through`]): exactly on it.
     #[inline]
     pub(crate) fn defined_by(&self, x: &[f64; 3]) -> bool {
-        self.data.def.defined_by(x)
+        self.data.def.defined_by(x) || self.data.also_on.as_ref() == Some(x)
     }
 
     /// Two distinct points that define both planes, when there are: the line through
     /// them is the planes' intersection (if the planes differ).
     pub(crate) fn common_line(&self, other: &Plane) -> Option<([f64; 3], [f64; 3])> {
-        let (a, na) = self.data.def.points();
+        let (a, na) = self.known_points();
         let mut first: Option<[f64; 3]> = None;
         for p in &a[..na] {
-            if other.data.def.defined_by(p) {
+            if other.defined_by(p) {
                 match first {
                     None => first = Some(*p),
                     Some(f) if f != *p => return Some((f, *p)),
@@ -482,7 +535,7 @@ impl Plane {
         }
         [p, q]
             .into_iter()
-            .find(|x| other.data.def.defined_by(x))
+            .find(|x| other.defined_by(x))
             .map(|x| (x, d))
     }
 
