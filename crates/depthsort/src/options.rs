@@ -89,7 +89,8 @@ impl Arith {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum CullMode {
     /// Cull the back faces of every object that is a closed surface with only opaque
-    /// materials (the default).
+    /// materials, and of every closed opaque shell (faces connected through shared
+    /// edges) of the other objects (the default).
     #[default]
     Auto,
     /// Cull every back face.
