@@ -400,6 +400,24 @@ impl Plane {
         ([n[0], n[1], n[2], d], (err_n, err_d))
     }
 
+    /// Whether this plane, defined through three points, is `other` as a set of points:
+    /// its three points (not on one line, since its normal is not zero) lie exactly on
+    /// `other` (the shortcut first, then the filter, then exact evaluation; a point off
+    /// `other` is usually told by the filter at once). Coplanar faces of different
+    /// definitions (a face and its reversed twin, faces of two parts in contact) meet
+    /// here: a vertex made on one of them lies on the other. `false` for planes of other
+    /// definitions.
+    pub(crate) fn is_within(&self, other: &Plane) -> bool {
+        let PlaneDef::Through(pts) = self.data.def else {
+            return false;
+        };
+        if self.same_definition(other) {
+            return true;
+        }
+        pts.iter()
+            .all(|p| other.defined_by(p) || other.side_of(*p) == Side::On)
+    }
+
     /// The definition of the plane before [`Plane::is_flipped`] is applied.
     pub fn definition(&self) -> PlaneDef {
         self.data.def
@@ -804,6 +822,29 @@ mod tests {
                 assert!(within(d, ed, &de), "{def:?} offset");
             }
         }
+    }
+
+    #[test]
+    fn a_plane_within_another_is_the_same_set_of_points() {
+        let off = 1e7;
+        let p = [off, off, off];
+        let q = [off + 1.5, off, off + 0.25];
+        let r = [off, off + 2.0, off - 0.75];
+        let a = Plane::through(p, q, r).unwrap();
+        // The reversed twin, and a plane through other points of the same plane.
+        let twin = Plane::through(p, r, q).unwrap();
+        assert!(twin.is_within(&a) && a.is_within(&twin));
+        let s = [off + 1.5, off + 2.0, off - 0.5];
+        assert_eq!(a.side_of(s), Side::On);
+        let other = Plane::through(q, s, r).unwrap();
+        assert!(other.is_within(&a) && a.is_within(&other.flipped()));
+        // One point two ulps off: not the same plane.
+        let t = [s[0], s[1], s[2] + 2f64.powi(-28)];
+        let off_plane = Plane::through(q, t, r).unwrap();
+        assert!(!off_plane.is_within(&a) && !a.is_within(&off_plane));
+        // Only planes through three points answer.
+        let edge = Plane::edge(p, q, 2, false);
+        assert!(!edge.is_within(&edge));
     }
 
     #[test]

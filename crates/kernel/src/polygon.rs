@@ -230,6 +230,13 @@ impl ExactPolygon {
             return s;
         }
         *fallbacks += 1;
+        if self.corners[i].err != 0.0 {
+            if let Some((a, b)) = self.stored_edges_at(i) {
+                if [&self.support, a, b].into_iter().any(|x| h.is_within(x)) {
+                    return Side::On;
+                }
+            }
+        }
         self.side_exact(i, h)
     }
 
