@@ -11,8 +11,7 @@ pub(crate) const SCORE_SAMPLE: usize = 512;
 
 /// Picks a splitter among `candidates` random members of `set`: the one whose plane
 /// crosses the fewest other members (scored on a deterministic sample of at most
-/// [`SCORE_SAMPLE`] members, with the kernel's cheap classification: a member it cannot
-/// classify without exact evaluation counts as not crossed).
+/// [`SCORE_SAMPLE`] members).
 pub(crate) fn choose_splitter<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
     set: &[u32],
@@ -35,10 +34,7 @@ pub(crate) fn choose_splitter<K: Kernel>(
         let c = set[(ctx.next_random() % n as u64) as usize];
         let mut score = 0usize;
         for &q in &sample {
-            // A score only: a piece whose side needs exact evaluation (it touches the
-            // candidate's plane, or lies in it: contact faces, coplanar parts) is
-            // counted as not split, which is what such pieces mostly are.
-            if q != c && ctx.rel_if_cheap(q, c) == Some(Rel::Span) {
+            if q != c && ctx.rel(q, c) == Rel::Span {
                 score += 1;
                 if score >= best_score {
                     break;
