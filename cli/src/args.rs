@@ -196,7 +196,7 @@ pub struct ViewArgs {
     /// baseline) [default: exact, or the scene file's].
     #[arg(long, value_parser = arith_parser())]
     pub arith: Option<Arith>,
-    /// Back-face culling: auto (closed opaque objects), on, off [default: auto, or the
+    /// Back-face culling: auto (closed opaque objects and parts), on, off [default: auto, or the
     /// scene file's].
     #[arg(long, value_parser = cull_parser())]
     pub cull: Option<CullMode>,

@@ -2,7 +2,7 @@
 //! wrong. Each comes with a camera.
 
 use glam::DVec3;
-use limn_scene::{Camera, Material, Scene};
+use limn_scene::{shapes, Camera, Material, Scene};
 
 /// A named scene with its camera.
 #[derive(Debug, Clone)]
@@ -102,55 +102,7 @@ pub fn interpenetrating_triangles() -> Case {
 /// other, each strip a zig-zag of flat quads with its kinks at the crossings.
 pub fn woven_grid() -> Case {
     let (mut s, m, o) = scene_with_palette();
-    let n = 3usize;
-    let (w, amp) = (0.35, 0.15);
-    let centre = |i: usize| i as f64 - (n as f64 - 1.0) / 2.0;
-    // Heights of a strip at its crossings, extended half a step beyond both ends.
-    let profile = |i: usize, sign: f64| -> Vec<(f64, f64)> {
-        let mut pts = Vec::new();
-        let z = |j: usize| sign * amp * if (i + j).is_multiple_of(2) { 1.0 } else { -1.0 };
-        pts.push((centre(0) - 0.5, 0.0));
-        for j in 0..n {
-            pts.push((centre(j), z(j)));
-        }
-        pts.push((centre(n - 1) + 0.5, 0.0));
-        pts
-    };
-    for i in 0..n {
-        let c = centre(i);
-        let ph = profile(i, 1.0);
-        for seg in ph.windows(2) {
-            let ((x0, z0), (x1, z1)) = (seg[0], seg[1]);
-            s.add_polygon(
-                &[
-                    v(x0, c - w / 2.0, z0),
-                    v(x1, c - w / 2.0, z1),
-                    v(x1, c + w / 2.0, z1),
-                    v(x0, c + w / 2.0, z0),
-                ],
-                m[0],
-                o,
-            )
-            .expect("valid");
-        }
-        // Vertical strip i at x = c: at crossing (row j, column i) it has the opposite
-        // height of horizontal strip j there.
-        let pv = profile(i, -1.0);
-        for seg in pv.windows(2) {
-            let ((y0, z0), (y1, z1)) = (seg[0], seg[1]);
-            s.add_polygon(
-                &[
-                    v(c - w / 2.0, y0, z0),
-                    v(c + w / 2.0, y0, z0),
-                    v(c + w / 2.0, y1, z1),
-                    v(c - w / 2.0, y1, z1),
-                ],
-                m[1],
-                o,
-            )
-            .expect("valid");
-        }
-    }
+    shapes::woven_strips(&mut s, 3, 0.0, [m[0], m[1]], o).expect("valid");
     Case {
         name: "woven_grid",
         scene: s,

@@ -4,8 +4,8 @@
 //! The painter's face ids come from [`rasterize_ids`] over the ordered fragments (the last
 //! painted wins at every pixel centre); the reference renders with the camera the
 //! ordering used and its near and far planes, culling the back faces of exactly the
-//! objects whose back faces the ordering culled ([`Ordered::culled_objects`]: with
-//! `--cull auto`, the closed opaque ones), each back face by its own exact test; the band of ambiguous pixel centres
+//! faces whose back faces the ordering culled ([`Ordered::culled_faces`]: with
+//! `--cull auto`, those of the closed opaque objects and parts), each back face by its own exact test; the band of ambiguous pixel centres
 //! surrounds every scene edge and every fragment edge (fragments also trace where faces
 //! pierce each other and where the near plane cuts them). The scene's lines are compared
 //! too ([`Painted::compare_lines`]): the painter's visible pieces against the z-buffer's
@@ -147,6 +147,7 @@ pub fn paint(scene: &Scene, camera: &Camera, opts: &OrderOptions) -> Result<Pain
     let ropts = RenderOptions {
         cull_back_faces: opts.cull == CullMode::On,
         cull_objects: Some(ordered.culled_objects.as_slice().into()),
+        cull_faces: Some(ordered.culled_faces.as_slice().into()),
         near_far: Some((ordered.near, ordered.far)),
         ..RenderOptions::default()
     };

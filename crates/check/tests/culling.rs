@@ -1,4 +1,4 @@
-//! The reference culls the back faces of exactly the objects the painter culled.
+//! The reference culls the back faces of exactly the objects and faces the painter culled.
 
 use glam::DVec3;
 use limn_check::paint;
@@ -46,5 +46,28 @@ fn with_cull_auto_the_reference_culls_what_the_painter_culled() {
             let shown = r.ids.contains(&2);
             assert_eq!(shown, cull != CullMode::On, "{cull:?} {method:?}");
         }
+    }
+}
+
+/// The fold and the open triangle in one object: the object is open, its closed part
+/// (the fold) is still culled, and the reference culls the same faces.
+#[test]
+fn with_cull_auto_the_reference_culls_the_closed_parts_the_painter_culled() {
+    let mut scene = folded();
+    for f in &mut scene.faces {
+        f.object = 0;
+    }
+    let camera = Camera::new(DVec3::new(1.5, 0.5, 4.0), DVec3::new(1.5, 0.5, 0.0), 96, 64);
+    let p = paint(&scene, &camera, &OrderOptions::default()).unwrap();
+    assert_eq!(p.ordered.culled_objects, vec![false, false]);
+    assert_eq!(p.ordered.culled_faces, vec![true, true, false]);
+    for method in [Method::RayCast, Method::ZBuffer, Method::Warnock] {
+        let r = p.reference(&scene, method, DepthFormat::F64).unwrap();
+        let c = p.compare(&r);
+        assert_eq!(c.mismatches_outside_band, 0, "{method:?}: {c:?}");
+        // The fold's face turned away is culled on both sides; the open triangle, facing
+        // away too, is drawn.
+        assert!(!r.ids.contains(&1), "{method:?}");
+        assert!(r.ids.contains(&2), "{method:?}");
     }
 }

@@ -26,6 +26,14 @@ fn sphere(rings: u32, segments: u32) -> Scene {
     s
 }
 
+fn woven(n: usize, offset: f64) -> Scene {
+    let mut s = Scene::default();
+    let m = s.add_material(Material::diffuse("m", [0.7, 0.7, 0.7]));
+    let o = s.add_object("o");
+    shapes::woven_strips(&mut s, n, offset, [m, m], o).expect("valid strips");
+    s
+}
+
 fn torus() -> Scene {
     let mut s = Scene::default();
     let m = s.add_material(Material::diffuse("torus", [0.7, 0.7, 0.7]));
@@ -130,6 +138,12 @@ fn main() {
             surfaces(100),
             vec![SortMode::Adaptive, SortMode::Bsp, SortMode::Simple],
         ),
+        // The same woven strips at the origin and far from it: what exactness costs
+        // there (the ratio exact/float) should not depend on the offset.
+        ("woven 60² at 0", woven(60, 0.0), vec![SortMode::Adaptive]),
+        ("woven 60² at 1e3", woven(60, 1e3), vec![SortMode::Adaptive]),
+        ("woven 60² at 1e7", woven(60, 1e7), vec![SortMode::Adaptive]),
+        ("woven 60² at 1e9", woven(60, 1e9), vec![SortMode::Adaptive]),
     ];
     if !quick {
         scenes.push((

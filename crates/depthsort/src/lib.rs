@@ -116,6 +116,11 @@ pub struct Ordered {
     /// [`CullMode::On`], none with [`CullMode::Off`], the closed opaque ones with
     /// [`CullMode::Auto`]), so that a reference can cull the same.
     pub culled_objects: Vec<bool>,
+    /// Per input face: whether it was culled when seen from the back (every face with
+    /// [`CullMode::On`], none with [`CullMode::Off`], with [`CullMode::Auto`] the faces
+    /// of closed opaque shells: the closed opaque objects' and those of the closed
+    /// opaque parts of other objects), so that a reference can cull the same.
+    pub culled_faces: Vec<bool>,
 }
 
 /// Orders `scene` as seen by `camera` with the kernel and mode of `opts`.
@@ -174,6 +179,7 @@ fn empty(scene: &Scene, camera: &Camera) -> Ordered {
         far,
         whole_faces: vec![false; scene.faces.len()],
         culled_objects: vec![false; scene.objects.len()],
+        culled_faces: vec![false; scene.faces.len()],
     }
 }
 
@@ -202,6 +208,7 @@ fn ordered<K: Kernel>(
         items,
         whole: mut whole_faces,
         culled_objects,
+        culled_faces,
     } = prepare::prepare(&mut ctx, scene, opts.cull, near)?;
     let t1 = Instant::now();
     let order = sort(&mut ctx, items, opts);
@@ -256,6 +263,7 @@ fn ordered<K: Kernel>(
         far,
         whole_faces,
         culled_objects,
+        culled_faces,
     };
     Ok((ordered, polys))
 }

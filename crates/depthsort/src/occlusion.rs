@@ -245,26 +245,36 @@ impl<K: Kernel> Ctx<'_, K> {
     /// The projected halves of `poly` on the eye's side and on the far side of `by`'s
     /// plane.
     fn halves(&self, poly: &K::Polygon, by: &Piece<K>) -> (Option<Ring>, Option<Ring>) {
-        let (front, back) = self.k.split(poly, &by.plane);
-        let project = |h: Option<K::Polygon>| {
-            h.map(|h| {
-                let n = self.k.vertex_count(&h);
-                let fast: Option<Vec<glam::DVec3>> =
-                    (0..n).map(|i| self.k.vertex_world_approx(&h, i)).collect();
-                let w = fast.unwrap_or_else(|| {
-                    let mut w = Vec::new();
-                    self.k.vertices_world(&h, &mut w);
-                    w
-                });
+        let project = |w: &[glam::DVec3]| -> Option<Ring> {
+            (!w.is_empty()).then(|| {
                 w.iter()
                     .map(|&v| {
                         let pr = self.camera.project_with(&self.vp, v);
                         [pr.x, pr.y]
                     })
-                    .collect::<Vec<_>>()
+                    .collect()
             })
         };
-        let (front, back) = (project(front), project(back));
+        let (mut wf, mut wb) = (Vec::new(), Vec::new());
+        let (front, back) = if self.k.split_world(poly, &by.plane, &mut wf, &mut wb) {
+            (project(&wf), project(&wb))
+        } else {
+            let (front, back) = self.k.split(poly, &by.plane);
+            let world = |h: Option<K::Polygon>| {
+                h.and_then(|h| {
+                    let n = self.k.vertex_count(&h);
+                    let fast: Option<Vec<glam::DVec3>> =
+                        (0..n).map(|i| self.k.vertex_world_approx(&h, i)).collect();
+                    let w = fast.unwrap_or_else(|| {
+                        let mut w = Vec::new();
+                        self.k.vertices_world(&h, &mut w);
+                        w
+                    });
+                    project(&w)
+                })
+            };
+            (world(front), world(back))
+        };
         if by.eye_front {
             (front, back)
         } else {

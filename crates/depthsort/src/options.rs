@@ -89,8 +89,9 @@ impl Arith {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum CullMode {
     /// Cull the back faces of every object that is a closed surface with only opaque
-    /// materials, and of every single-sided object ([`limn_scene::Object::single_sided`])
-    /// (the default).
+    /// materials, of every closed opaque shell (faces connected through shared edges) of
+    /// the other objects, and of every single-sided object
+    /// ([`limn_scene::Object::single_sided`]) (the default).
     #[default]
     Auto,
     /// Cull every back face.

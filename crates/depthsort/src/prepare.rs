@@ -17,50 +17,142 @@ use crate::pieces::{Ctx, Piece, NONE};
 use crate::view::{view_planes, ViewPlanes};
 use rayon::prelude::*;
 
-/// For each object: is it a closed surface whose materials are all opaque? Every edge
-/// (between vertex positions) must be used exactly once in each direction within the
-/// object. The edges are grouped by their lower end ([`ByVertex`]); within a group, sorted
-/// by (upper end, object, direction), every run of one edge of one object must then be
-/// exactly its two directions.
-pub(crate) fn closed_opaque_objects(scene: &Scene, canon: &[u32]) -> Vec<bool> {
+/// Which back faces [`CullMode::Auto`] culls: per object, whether it is a closed surface
+/// whose materials are all opaque; per face, whether its shell is (the faces of one
+/// object connected through shared edges), so that an object made of many parts (an
+/// assembly in one file) has the back faces of its closed parts culled even when some
+/// other part is open.
+///
+/// An edge (between vertex positions) is closed when it is used exactly once in each
+/// direction within its object. The edges are grouped by their lower end
+/// ([`ByVertex`]); within a group, sorted by (upper end, object, direction, face), every
+/// run of one edge of one object is then either a closed edge, which joins its two faces
+/// into one shell, or open, which opens the shells of all its faces. A shell is closed
+/// when none of its edges is open and its faces are all opaque; every face of a closed
+/// object is in a closed shell. Back faces of a closed opaque surface are hidden by its
+/// front faces wherever the eye is outside it, as for a closed object.
+pub(crate) struct ClosedSurfaces {
+    /// Per object: closed and opaque.
+    pub(crate) objects: Vec<bool>,
+    /// Per face: in a closed opaque shell.
+    pub(crate) faces: Vec<bool>,
+}
+
+/// An open edge's face in the output of [`closed_surfaces`]' edge check.
+const OPEN: u32 = u32::MAX;
+
+/// See [`ClosedSurfaces`].
+pub(crate) fn closed_surfaces(scene: &Scene, canon: &[u32]) -> ClosedSurfaces {
     let n = scene.objects.len();
+    let opaque_face = |f: &limn_scene::Face| scene.materials[f.material as usize].is_opaque();
     let mut ok = vec![true; n];
     let mut has_faces = vec![false; n];
     for f in &scene.faces {
         let o = f.object as usize;
         has_faces[o] = true;
-        if !scene.materials[f.material as usize].is_opaque() {
+        if !opaque_face(f) {
             ok[o] = false;
         }
     }
-    // Every edge at its lower end: (upper end, object, direction).
+    // Every edge at its lower end: (upper end, object, direction, face).
     let mut edges = ByVertex::new(scene.vertices.len(), |put| {
-        for f in &scene.faces {
+        for (fi, f) in scene.faces.iter().enumerate() {
             let m = f.vertices.len();
             for i in 0..m {
                 let a = canon[f.vertices[i] as usize];
                 let b = canon[f.vertices[(i + 1) % m] as usize];
                 if a != b {
-                    put(a.min(b), (a.max(b), f.object, a > b));
+                    put(a.min(b), (a.max(b), f.object, a > b, fi as u32));
                 }
             }
         }
     });
-    let open = edges.flat_map_groups(|group, open: &mut Vec<u32>| {
+    // Closed edges as the pairs of faces they join; open ones as (face, OPEN) for each
+    // of their faces.
+    let links = edges.flat_map_groups(|group, out: &mut Vec<(u32, u32)>| {
         group.sort_unstable();
         for run in group.chunk_by(|x, y| (x.0, x.1) == (y.0, y.1)) {
-            if !matches!(run, [x, y] if x.2 != y.2) {
-                open.push(run[0].1);
+            match run {
+                [x, y] if x.2 != y.2 => out.push((x.3, y.3)),
+                _ => out.extend(run.iter().map(|e| (e.3, OPEN))),
             }
         }
     });
-    for o in open {
-        ok[o as usize] = false;
+    for &(f, g) in &links {
+        if g == OPEN {
+            ok[scene.faces[f as usize].object as usize] = false;
+        }
     }
     for o in 0..n {
         ok[o] &= has_faces[o];
     }
-    ok
+    let mut faces: Vec<bool> = scene.faces.iter().map(|f| ok[f.object as usize]).collect();
+    // Shells only within the objects that are not closed as a whole (and have any
+    // closed edge): a closed object's faces are all in closed shells already.
+    if ok.iter().all(|&c| c) || links.iter().all(|&(_, g)| g == OPEN) {
+        return ClosedSurfaces { objects: ok, faces };
+    }
+    let mut shells = Shells::new(scene.faces.len());
+    for &(f, g) in &links {
+        if g != OPEN && !ok[scene.faces[f as usize].object as usize] {
+            shells.join(f, g);
+        }
+    }
+    let mut open_shell = vec![false; scene.faces.len()];
+    for &(f, g) in &links {
+        if g == OPEN {
+            let r = shells.root(f);
+            open_shell[r as usize] = true;
+        }
+    }
+    for (fi, f) in scene.faces.iter().enumerate() {
+        if !opaque_face(f) {
+            let r = shells.root(fi as u32);
+            open_shell[r as usize] = true;
+        }
+    }
+    for (fi, f) in scene.faces.iter().enumerate() {
+        if !ok[f.object as usize] {
+            faces[fi] = !open_shell[shells.root(fi as u32) as usize];
+        }
+    }
+    ClosedSurfaces { objects: ok, faces }
+}
+
+/// Faces joined into shells (union–find with path halving and union by size).
+struct Shells {
+    parent: Vec<u32>,
+    size: Vec<u32>,
+}
+
+impl Shells {
+    fn new(n: usize) -> Shells {
+        Shells {
+            parent: (0..n as u32).collect(),
+            size: vec![1; n],
+        }
+    }
+
+    fn root(&mut self, mut x: u32) -> u32 {
+        while self.parent[x as usize] != x {
+            let up = self.parent[self.parent[x as usize] as usize];
+            self.parent[x as usize] = up;
+            x = up;
+        }
+        x
+    }
+
+    fn join(&mut self, a: u32, b: u32) {
+        let (mut a, mut b) = (self.root(a), self.root(b));
+        if a == b {
+            return;
+        }
+        if self.size[a as usize] < self.size[b as usize] {
+            std::mem::swap(&mut a, &mut b);
+        }
+        self.parent[b as usize] = a;
+        self.size[a as usize] += self.size[b as usize];
+    }
 }
 
 /// What [`prepare`] returns.
@@ -72,6 +164,8 @@ pub(crate) struct PreparedFaces {
     pub(crate) whole: Vec<bool>,
     /// Per object, whether its back faces are culled.
     pub(crate) culled_objects: Vec<bool>,
+    /// Per face, whether it is culled when its back is seen.
+    pub(crate) culled_faces: Vec<bool>,
 }
 
 /// Converts, culls and clips every face.
@@ -83,16 +177,29 @@ pub(crate) fn prepare<K: Kernel>(
 ) -> Result<PreparedFaces, OrderError> {
     let mut whole = vec![false; scene.faces.len()];
     let canon = canonical_vertices(scene);
-    let closed = match cull {
+    let ClosedSurfaces {
+        objects: closed,
+        faces: cull_face,
+    } = match cull {
         CullMode::Auto => {
-            let mut cull = closed_opaque_objects(scene, &canon);
-            for (c, o) in cull.iter_mut().zip(&scene.objects) {
-                *c |= o.single_sided;
+            // Single-sided objects are culled whole, closed or not.
+            let mut c = closed_surfaces(scene, &canon);
+            for (f, face) in c.faces.iter_mut().zip(&scene.faces) {
+                *f |= scene.objects[face.object as usize].single_sided;
             }
-            cull
+            for (o, object) in c.objects.iter_mut().zip(&scene.objects) {
+                *o |= object.single_sided;
+            }
+            c
         }
-        CullMode::On => vec![true; scene.objects.len()],
-        CullMode::Off => vec![false; scene.objects.len()],
+        CullMode::On => ClosedSurfaces {
+            objects: vec![true; scene.objects.len()],
+            faces: vec![true; scene.faces.len()],
+        },
+        CullMode::Off => ClosedSurfaces {
+            objects: vec![false; scene.objects.len()],
+            faces: vec![false; scene.faces.len()],
+        },
     };
     let hidden = hidden_by_later_copies(scene, &canon, &closed);
     ctx.faces_met = faces_met_at_corners(scene, &canon).into();
@@ -115,7 +222,7 @@ pub(crate) fn prepare<K: Kernel>(
                 if hidden[fi] {
                     return Ok(None);
                 }
-                let cull_back = closed[scene.faces[fi].object as usize];
+                let cull_back = cull_face[fi];
                 prepare_face(&reader, scene, fi, cull_back, &planes, scratch).map(Some)
             })
             .collect()
@@ -147,6 +254,7 @@ pub(crate) fn prepare<K: Kernel>(
         items,
         whole,
         culled_objects: closed,
+        culled_faces: cull_face,
     })
 }
 
@@ -353,7 +461,7 @@ mod tests {
     }
 
     fn closed(s: &Scene) -> bool {
-        closed_opaque_objects(s, &canonical_vertices(s))[0]
+        closed_surfaces(s, &canonical_vertices(s)).objects[0]
     }
 
     #[test]
@@ -374,7 +482,58 @@ mod tests {
         let mut separate = s.clone();
         let o = separate.add_object("other");
         separate.faces[5].object = o;
-        let both = closed_opaque_objects(&separate, &canonical_vertices(&separate));
+        let both = closed_surfaces(&separate, &canonical_vertices(&separate)).objects;
         assert_eq!(both, vec![false, false], "a face in another object");
+    }
+
+    /// An object of two parts, a closed cube and an open one: the closed part's faces
+    /// are culled, the open part's are not, and the object is not closed as a whole;
+    /// turning one face of the first part over opens that part too.
+    #[test]
+    fn a_closed_part_of_an_open_object_is_culled() {
+        let mut s = cube(1.0);
+        let m = 0;
+        let o = 0;
+        let shift = DVec3::new(3.0, 0.0, 0.0);
+        shapes::cuboid(
+            &mut s,
+            shift - DVec3::ONE,
+            shift + DVec3::ONE,
+            DMat3::IDENTITY,
+            m,
+            o,
+        )
+        .unwrap();
+        s.faces.pop();
+        let c = closed_surfaces(&s, &canonical_vertices(&s));
+        assert_eq!(c.objects, vec![false]);
+        let first = 6;
+        assert_eq!(c.faces.len(), first + 5);
+        assert!(c.faces[..first].iter().all(|&f| f), "{:?}", c.faces);
+        assert!(c.faces[first..].iter().all(|&f| !f), "{:?}", c.faces);
+        let mut turned = s.clone();
+        turned.faces[0].vertices.reverse();
+        let t = closed_surfaces(&turned, &canonical_vertices(&turned));
+        assert!(t.faces.iter().all(|&f| !f), "{:?}", t.faces);
+        // A translucent face opens only its own part.
+        let mut two = s.clone();
+        let g = two.add_material({
+            let mut mat = Material::diffuse("g", [0.5, 0.5, 0.5]);
+            mat.opacity = 0.5;
+            mat
+        });
+        shapes::cuboid(
+            &mut two,
+            -shift - DVec3::ONE,
+            -shift + DVec3::ONE,
+            DMat3::IDENTITY,
+            m,
+            o,
+        )
+        .unwrap();
+        two.faces[first + 5].material = g;
+        let w = closed_surfaces(&two, &canonical_vertices(&two));
+        assert!(w.faces[..first].iter().all(|&f| f), "{:?}", w.faces);
+        assert!(w.faces[first..].iter().all(|&f| !f), "{:?}", w.faces);
     }
 }

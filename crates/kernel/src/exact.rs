@@ -18,6 +18,10 @@ use crate::traits::Kernel;
 /// intersection is rounded instead.
 const WORLD_REL: f64 = 1e-12;
 
+/// Largest relative error bound of the positions [`Kernel::vertex_world_approx`] and
+/// [`Kernel::split_world`] give.
+const WORLD_APPROX_REL: f64 = 1e-9;
+
 /// The exact plane-based kernel.
 ///
 /// Every sign it returns equals the sign computed with exact rational arithmetic on the
@@ -180,6 +184,19 @@ impl Kernel for ExactKernel {
         r
     }
 
+    fn split_world(
+        &self,
+        poly: &ExactPolygon,
+        plane: &Plane,
+        front: &mut Vec<DVec3>,
+        back: &mut Vec<DVec3>,
+    ) -> bool {
+        let mut fb = 0;
+        let r = poly.split_world(plane, self.filter, &mut fb, WORLD_APPROX_REL, front, back);
+        self.count(fb);
+        r
+    }
+
     fn vertex_count(&self, poly: &ExactPolygon) -> usize {
         poly.len()
     }
@@ -231,7 +248,7 @@ impl Kernel for ExactKernel {
     fn vertex_world_approx(&self, poly: &ExactPolygon, i: usize) -> Option<DVec3> {
         let (c, err) = poly.vertex_approx(i);
         let scale = c[0].abs().max(c[1].abs()).max(c[2].abs());
-        (err <= 1e-9 * scale).then(|| DVec3::from_array(c))
+        (err <= WORLD_APPROX_REL * scale).then(|| DVec3::from_array(c))
     }
 
     fn vertex_world_bounded(&self, poly: &ExactPolygon, i: usize) -> Option<(DVec3, f64)> {

@@ -294,5 +294,11 @@ fn try_convex(g: &[P3], support: &Plane) -> Option<ExactPolygon> {
         return None;
     }
     let original = vec![true; pts.len()];
-    Some(convex_polygon(&pts, support.clone(), &original))
+    // A corner outside the support's definition (the fourth of a quad) is known to lie on
+    // it exactly: the shortcut answers for it from now on.
+    let support = match pts.iter().find(|p| !support.defined_by(p)) {
+        Some(&x) => support.also_through(x),
+        None => support.clone(),
+    };
+    Some(convex_polygon(&pts, support, &original))
 }

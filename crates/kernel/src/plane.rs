@@ -70,6 +70,10 @@ pub enum PlaneDef {
 #[derive(Debug)]
 pub(crate) struct PlaneData {
     def: PlaneDef,
+    /// An input point besides the definition's that is known to lie exactly on the plane
+    /// (the fourth corner of a planar quad, checked exactly when the face was converted):
+    /// the combinatorial shortcut answers for it as for the definition's points.
+    also_on: Option<[f64; 3]>,
     /// Midpoints of `[a, b, c, d]`.
     approx: [f64; 4],
     /// Bound on `|a − ã|`, `|b − b̃|`, `|c − c̃|`.
@@ -237,11 +241,11 @@ impl PlaneDef {
     }
 
     /// The points among the definition (they all lie on the plane).
-    fn points(&self) -> ([[f64; 3]; 3], usize) {
+    fn points(&self) -> ([[f64; 3]; 4], usize) {
         match *self {
-            PlaneDef::Through(pts) => (pts, 3),
-            PlaneDef::Edge { p, q, .. } | PlaneDef::Along { p, q, .. } => ([p, q, q], 2),
-            PlaneDef::PointNormal { p, .. } => ([p, p, p], 1),
+            PlaneDef::Through([p, q, r]) => ([p, q, r, r], 3),
+            PlaneDef::Edge { p, q, .. } | PlaneDef::Along { p, q, .. } => ([p, q, q, q], 2),
+            PlaneDef::PointNormal { p, .. } => ([p, p, p, p], 1),
         }
     }
 
@@ -284,6 +288,7 @@ impl Plane {
         Plane {
             data: Arc::new(PlaneData {
                 def,
+                also_on: None,
                 approx: [mid_n[0], mid_n[1], mid_n[2], mid_d],
                 err_n,
                 err_d,
@@ -346,6 +351,71 @@ impl Plane {
             k: k as u8,
             flip,
         })
+    }
+
+    /// The same plane, known also to pass through the input point `x`, which the caller
+    /// has proven to lie on it exactly (a planar face's corner outside the definition):
+    /// the shortcut then answers `On` for `x` without arithmetic.
+    pub(crate) fn also_through(&self, x: [f64; 3]) -> Plane {
+        debug_assert!(self.data.also_on.is_none());
+        debug_assert_eq!(self.side_exact(x), Side::On);
+        Plane {
+            data: Arc::new(PlaneData {
+                def: self.data.def,
+                also_on: Some(x),
+                approx: self.data.approx,
+                err_n: self.data.err_n,
+                err_d: self.data.err_d,
+            }),
+            neg: self.neg,
+        }
+    }
+
+    /// The points the plane is known to pass through: the definition's and
+    /// [`Plane::also_through`]'s.
+    fn known_points(&self) -> ([[f64; 3]; 4], usize) {
+        let (mut pts, mut n) = self.data.def.points();
+        if let Some(x) = self.data.also_on {
+            pts[n] = x;
+            n += 1;
+        }
+        (pts, n)
+    }
+
+    /// The approximate coefficients and error bounds of the edge plane
+    /// `Plane::edge(p, q, k, flip)` would have, without making it.
+    pub(crate) fn edge_coefficients(
+        p: [f64; 3],
+        q: [f64; 3],
+        k: usize,
+        flip: bool,
+    ) -> ([f64; 4], (f64, f64)) {
+        let def = PlaneDef::Edge {
+            p,
+            q,
+            k: k as u8,
+            flip,
+        };
+        let (n, d, err_n, err_d) = def.approximate();
+        ([n[0], n[1], n[2], d], (err_n, err_d))
+    }
+
+    /// Whether this plane, defined through three points, is `other` as a set of points:
+    /// its three points (not on one line, since its normal is not zero) lie exactly on
+    /// `other` (the shortcut first, then the filter, then exact evaluation; a point off
+    /// `other` is usually told by the filter at once). Coplanar faces of different
+    /// definitions (a face and its reversed twin, faces of two parts in contact) meet
+    /// here: a vertex made on one of them lies on the other. `false` for planes of other
+    /// definitions.
+    pub(crate) fn is_within(&self, other: &Plane) -> bool {
+        let PlaneDef::Through(pts) = self.data.def else {
+            return false;
+        };
+        if self.same_definition(other) {
+            return true;
+        }
+        pts.iter()
+            .all(|p| other.defined_by(p) || other.side_of(*p) == Side::On)
     }
 
     /// The definition of the plane before [`Plane::is_flipped`] is applied.
@@ -444,19 +514,20 @@ impl Plane {
         Arc::ptr_eq(&self.data, &other.data)
     }
 
-    /// Whether `x` is one of the points defining the plane (so exactly on it).
+    /// Whether `x` is one of the points defining the plane, or the point it is known to
+    /// pass through besides ([`Plane::also_through`]): exactly on it.
     #[inline]
     pub(crate) fn defined_by(&self, x: &[f64; 3]) -> bool {
-        self.data.def.defined_by(x)
+        self.data.def.defined_by(x) || self.data.also_on.as_ref() == Some(x)
     }
 
     /// Two distinct points that define both planes, when there are: the line through
     /// them is the planes' intersection (if the planes differ).
     pub(crate) fn common_line(&self, other: &Plane) -> Option<([f64; 3], [f64; 3])> {
-        let (a, na) = self.data.def.points();
+        let (a, na) = self.known_points();
         let mut first: Option<[f64; 3]> = None;
         for p in &a[..na] {
-            if other.data.def.defined_by(p) {
+            if other.defined_by(p) {
                 match first {
                     None => first = Some(*p),
                     Some(f) if f != *p => return Some((f, *p)),
@@ -482,7 +553,7 @@ impl Plane {
         }
         [p, q]
             .into_iter()
-            .find(|x| other.data.def.defined_by(x))
+            .find(|x| other.defined_by(x))
             .map(|x| (x, d))
     }
 
@@ -751,6 +822,29 @@ mod tests {
                 assert!(within(d, ed, &de), "{def:?} offset");
             }
         }
+    }
+
+    #[test]
+    fn a_plane_within_another_is_the_same_set_of_points() {
+        let off = 1e7;
+        let p = [off, off, off];
+        let q = [off + 1.5, off, off + 0.25];
+        let r = [off, off + 2.0, off - 0.75];
+        let a = Plane::through(p, q, r).unwrap();
+        // The reversed twin, and a plane through other points of the same plane.
+        let twin = Plane::through(p, r, q).unwrap();
+        assert!(twin.is_within(&a) && a.is_within(&twin));
+        let s = [off + 1.5, off + 2.0, off - 0.5];
+        assert_eq!(a.side_of(s), Side::On);
+        let other = Plane::through(q, s, r).unwrap();
+        assert!(other.is_within(&a) && a.is_within(&other.flipped()));
+        // One point two ulps off: not the same plane.
+        let t = [s[0], s[1], s[2] + 2f64.powi(-28)];
+        let off_plane = Plane::through(q, t, r).unwrap();
+        assert!(!off_plane.is_within(&a) && !a.is_within(&off_plane));
+        // Only planes through three points answer.
+        let edge = Plane::edge(p, q, 2, false);
+        assert!(!edge.is_within(&edge));
     }
 
     #[test]

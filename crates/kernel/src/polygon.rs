@@ -230,6 +230,13 @@ impl ExactPolygon {
             return s;
         }
         *fallbacks += 1;
+        if self.corners[i].err != 0.0 {
+            if let Some((a, b)) = self.stored_edges_at(i) {
+                if [&self.support, a, b].into_iter().any(|x| h.is_within(x)) {
+                    return Side::On;
+                }
+            }
+        }
         self.side_exact(i, h)
     }
 
@@ -501,6 +508,91 @@ impl ExactPolygon {
             Some(fp.finish(self.support.clone())),
             Some(bp.finish(self.support.clone())),
         )
+    }
+}
+
+impl ExactPolygon {
+    /// The corners of the two parts [`ExactPolygon::split`] makes, as positions within
+    /// `rel` times their largest coordinate of the true corners, appended to `front` and
+    /// `back` (see [`crate::Kernel::split_world`]): the same exact sides, the crossing
+    /// points approximated from the planes' coefficients (an input polygon's edge plane
+    /// only as coefficients, never made), no polygon built. `false`, with `front` and
+    /// `back` as they were, when some corner's bound is larger.
+    pub(crate) fn split_world(
+        &self,
+        h: &Plane,
+        filter: bool,
+        fallbacks: &mut u64,
+        rel: f64,
+        front: &mut Vec<glam::DVec3>,
+        back: &mut Vec<glam::DVec3>,
+    ) -> bool {
+        let close = |(pos, err): ([f64; 3], f64)| {
+            let scale = pos[0].abs().max(pos[1].abs()).max(pos[2].abs());
+            (err <= rel * scale).then(|| glam::DVec3::from_array(pos))
+        };
+        let corner = |c: &Corner| close((c.pos, c.err as f64));
+        let hf = h.filter();
+        let sides = self.sides(h, &hf, filter, fallbacks);
+        let has_front = sides.contains(&Side::Front);
+        let has_back = sides.contains(&Side::Back);
+        let (f0, b0) = (front.len(), back.len());
+        let undo = |front: &mut Vec<glam::DVec3>, back: &mut Vec<glam::DVec3>| {
+            front.truncate(f0);
+            back.truncate(b0);
+            false
+        };
+        if !(has_front && has_back) {
+            let to_front = has_front || (!has_back && self.support.same_facing(h));
+            let out = if to_front { &mut *front } else { &mut *back };
+            for c in &self.corners {
+                match corner(c) {
+                    Some(p) => out.push(p),
+                    None => return undo(front, back),
+                }
+            }
+            return true;
+        }
+        let n = self.corners.len();
+        let axis = self
+            .edges
+            .is_empty()
+            .then(|| input_edge_axis(&self.support));
+        let (sn, sd) = (self.support.approx(), self.support.error_bounds());
+        let (hn, hd) = (h.approx(), h.error_bounds());
+        for i in 0..n {
+            let c = &self.corners[i];
+            let j = if i + 1 == n { 0 } else { i + 1 };
+            let (si, sj) = (sides[i], sides[j]);
+            let Some(p) = corner(c) else {
+                return undo(front, back);
+            };
+            if si != Side::Back {
+                front.push(p);
+            }
+            if si != Side::Front {
+                back.push(p);
+            }
+            if matches!(
+                (si, sj),
+                (Side::Front, Side::Back) | (Side::Back, Side::Front)
+            ) {
+                let (en, ed) = match axis {
+                    Some((k, flip)) => {
+                        Plane::edge_coefficients(c.pos, self.corners[j].pos, k, flip)
+                    }
+                    None => (self.edges[i].approx(), self.edges[i].error_bounds()),
+                };
+                let Some(p) =
+                    predicates::approximate_from((sn, sd), (en, ed), (hn, hd)).and_then(close)
+                else {
+                    return undo(front, back);
+                };
+                front.push(p);
+                back.push(p);
+            }
+        }
+        true
     }
 }
 

@@ -100,9 +100,7 @@ fn cross_mr(a: [Mr; 3], b: [Mr; 3]) -> [Mr; 3] {
 /// nor underflows on tiny ones. The scaling is exact except where a result is
 /// subnormal, which `η` covers.
 #[inline(always)]
-fn plane_mr(p: &Plane) -> ([Mr; 3], Mr) {
-    let [a, b, c, d] = p.approx();
-    let (en, ed) = p.error_bounds();
+fn plane_mr(([a, b, c, d], (en, ed)): Coefficients) -> ([Mr; 3], Mr) {
     let m = a.abs().max(b.abs()).max(c.abs());
     let exp = ((m.to_bits() >> 52) & 0x7ff) as i64 - 1023;
     let scale = if exp >= -1022 {
@@ -143,6 +141,20 @@ fn plane_mr(p: &Plane) -> ([Mr; 3], Mr) {
 /// `u·|x̃| + η`. `t` is raised to at least `2⁻¹⁰⁰⁰` so that its underflow cannot hide
 /// error at huge coordinates.
 pub(crate) fn approximate(p1: &Plane, p2: &Plane, p3: &Plane) -> Option<([f64; 3], f64)> {
+    let c = |p: &Plane| (p.approx(), p.error_bounds());
+    approximate_from(c(p1), c(p2), c(p3))
+}
+
+/// A plane's approximate coefficients `[a, b, c, d]` and their error bounds `(e_n, e_d)`
+/// ([`Plane::approx`], [`Plane::error_bounds`]).
+pub(crate) type Coefficients = ([f64; 4], (f64, f64));
+
+/// [`approximate`] from the planes' approximate coefficients and bounds.
+pub(crate) fn approximate_from(
+    p1: Coefficients,
+    p2: Coefficients,
+    p3: Coefficients,
+) -> Option<([f64; 3], f64)> {
     let (n1, h1) = plane_mr(p1);
     let (n2, h2) = plane_mr(p2);
     let (n3, h3) = plane_mr(p3);

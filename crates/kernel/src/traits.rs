@@ -91,6 +91,24 @@ pub trait Kernel: Sync {
         plane: &Self::Plane,
     ) -> (Option<Self::Polygon>, Option<Self::Polygon>);
 
+    /// The corners of the two parts [`Kernel::split`] makes of `poly` by `plane`, as world
+    /// positions each within a relative 1e-9 of the true corner (as
+    /// [`Kernel::vertex_world_approx`]), appended to `front` and `back` (a part that is
+    /// empty adds nothing); for float prefilters only, never for decisions. `false`, with
+    /// both left as they were, when the kernel has no such positions at hand (the
+    /// caller then splits). The exact kernel finds the parts' corners without making the
+    /// parts.
+    fn split_world(
+        &self,
+        poly: &Self::Polygon,
+        plane: &Self::Plane,
+        front: &mut Vec<DVec3>,
+        back: &mut Vec<DVec3>,
+    ) -> bool {
+        let _ = (poly, plane, front, back);
+        false
+    }
+
     /// Number of vertices of `poly`.
     fn vertex_count(&self, poly: &Self::Polygon) -> usize;
 

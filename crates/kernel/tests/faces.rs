@@ -6,7 +6,7 @@ mod common;
 use common::*;
 use glam::DVec3;
 use limn_kernel::check_polygon;
-use limn_kernel::{ExactPolygon, FloatKernel, Kernel, KernelError};
+use limn_kernel::{ExactKernel, ExactPolygon, FloatKernel, Kernel, KernelError, PolygonSide, Side};
 use num_rational::BigRational;
 use num_traits::Zero;
 
@@ -318,4 +318,42 @@ fn fuzz_double_winding_reduced() {
     check_all(&polys);
     // Not a simple outline: it is dropped, never returned as one convex polygon.
     assert!(polys.len() != 1);
+}
+
+/// Every corner of a planar quad lies on its support plane, the one outside the plane's
+/// definition too: classifying a neighbour that shares that corner (and the edge) against
+/// it needs no exact evaluation, far from the origin as near it.
+#[test]
+fn a_quads_fourth_corner_is_known_on_its_plane() {
+    for off in [0.0, 1e7, 1e9] {
+        let k = ExactKernel::new();
+        let p = |x: f64, y: f64, z: f64| DVec3::new(x + off, y + off, z + off);
+        let a = k
+            .face_polygons(&[
+                p(0.0, 0.0, 0.0),
+                p(1.0, 0.0, 0.0),
+                p(1.0, 1.0, 0.0),
+                p(0.0, 1.0, 0.0),
+            ])
+            .unwrap();
+        assert_eq!(a.len(), 1);
+        let plane = k.support(&a[0]);
+        // Shares the edge from corner 2 to corner 3 of `a`, rising out of its plane.
+        let b = k
+            .face_polygons(&[
+                p(0.0, 1.0, 0.0),
+                p(1.0, 1.0, 0.0),
+                p(1.0, 2.0, 1.0),
+                p(0.0, 2.0, 1.0),
+            ])
+            .unwrap();
+        for poly in &b {
+            assert_eq!(k.classify(poly, &plane), PolygonSide::Front, "offset {off}");
+        }
+        assert_eq!(k.fallbacks(), 0, "offset {off}");
+        for q in [p(0.0, 1.0, 0.0), p(1.0, 1.0, 0.0)] {
+            assert_eq!(k.side_of_point(&plane, &q), Side::On);
+        }
+        assert_eq!(k.fallbacks(), 0, "offset {off}");
+    }
 }

@@ -97,6 +97,26 @@ fn checked_split(
     let (f, b) = k.split(poly, h);
     check_split(poly, h, f.as_ref(), b.as_ref())
         .unwrap_or_else(|e| panic!("{e}: {poly:?} by {h:?}"));
+    // The parts' corners without the parts: the same corners, each within the promised
+    // relative 1e-9 of the rounded exact one.
+    let (mut wf, mut wb) = (Vec::new(), Vec::new());
+    if k.split_world(poly, h, &mut wf, &mut wb) {
+        for (piece, world) in [(&f, &wf), (&b, &wb)] {
+            let n = piece.as_ref().map_or(0, |p| p.len());
+            assert_eq!(world.len(), n, "corner count: {poly:?} by {h:?}");
+            let Some(p) = piece else { continue };
+            for (i, w) in world.iter().enumerate() {
+                let r = k.vertex_rounded(p, i);
+                let scale = r.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                for j in 0..3 {
+                    assert!(
+                        (w[j] - r[j]).abs() <= 2e-9 * scale,
+                        "corner {i}: {w:?} against {r:?}: {poly:?} by {h:?}"
+                    );
+                }
+            }
+        }
+    }
     // The reference: every vertex of each piece on the right side, some strictly.
     for (piece, want) in [(&f, Side::Front), (&b, Side::Back)] {
         let Some(p) = piece else { continue };

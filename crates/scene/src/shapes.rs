@@ -1,5 +1,5 @@
 //! Generated meshes for demos, tests and benchmarks: closed, consistently oriented
-//! (counter-clockwise seen from outside).
+//! (counter-clockwise seen from outside), except the random soup and the woven strips.
 
 use glam::DVec3;
 use std::collections::HashMap;
@@ -139,6 +139,63 @@ pub fn uv_sphere(
         }
     }
     Ok(n)
+}
+
+/// Appends `n` horizontal strips (material `materials[0]`) and `n` vertical ones
+/// (`materials[1]`) woven over and under each other: strips one unit apart and 0.35
+/// wide, each a zig-zag of flat quads with kinks 0.15 up or down at the crossings,
+/// every corner moved by `offset` along each axis. An open mesh with exact degeneracies
+/// (coplanar quads of parallel strips, kink lines shared by neighbouring quads) whose
+/// order needs splitting: far from the origin when `offset` is large. Returns the faces
+/// added (`2·n·(n + 1)`).
+pub fn woven_strips(
+    scene: &mut Scene,
+    n: usize,
+    offset: f64,
+    materials: [u32; 2],
+    object: u32,
+) -> Result<usize, SceneError> {
+    let (w, amp) = (0.35, 0.15);
+    let centre = |i: usize| i as f64 - (n as f64 - 1.0) / 2.0;
+    let at = |x: f64, y: f64, z: f64| DVec3::new(x + offset, y + offset, z + offset);
+    // Heights of a strip at its crossings, extended half a step beyond both ends.
+    let profile = |i: usize, sign: f64| -> Vec<(f64, f64)> {
+        let mut pts = Vec::with_capacity(n + 2);
+        let z = |j: usize| sign * amp * if (i + j).is_multiple_of(2) { 1.0 } else { -1.0 };
+        pts.push((centre(0) - 0.5, 0.0));
+        pts.extend((0..n).map(|j| (centre(j), z(j))));
+        pts.push((centre(n - 1) + 0.5, 0.0));
+        pts
+    };
+    let mut added = 0;
+    for i in 0..n {
+        let c = centre(i);
+        for seg in profile(i, 1.0).windows(2) {
+            let ((x0, z0), (x1, z1)) = (seg[0], seg[1]);
+            let quad = [
+                at(x0, c - w / 2.0, z0),
+                at(x1, c - w / 2.0, z1),
+                at(x1, c + w / 2.0, z1),
+                at(x0, c + w / 2.0, z0),
+            ];
+            scene.add_polygon(&quad, materials[0], object)?;
+            added += 1;
+        }
+        // Vertical strip i at x = c: at crossing (row j, column i) it has the opposite
+        // height of horizontal strip j there.
+        for seg in profile(i, -1.0).windows(2) {
+            let ((y0, z0), (y1, z1)) = (seg[0], seg[1]);
+            let quad = [
+                at(c - w / 2.0, y0, z0),
+                at(c + w / 2.0, y0, z0),
+                at(c + w / 2.0, y1, z1),
+                at(c - w / 2.0, y1, z1),
+            ];
+            scene.add_polygon(&quad, materials[1], object)?;
+            added += 1;
+        }
+    }
+    Ok(added)
 }
 
 /// Appends a closed axis-aligned box (six quads) from `lo` to `hi`, optionally rotated

@@ -81,6 +81,12 @@ pub struct RenderOptions {
     /// (objects beyond its end are not culled). What a painter culled per object, so
     /// that a reference culls the same. Default `None`.
     pub cull_objects: Option<Arc<[bool]>>,
+    /// Per face (indexed like the scene's faces), whether it is dropped when its back is
+    /// seen; when given, it decides in place of [`RenderOptions::cull_objects`] and
+    /// [`RenderOptions::cull_back_faces`] (faces beyond its end are not culled). What a
+    /// painter culled per face (the closed parts of an object that is not closed as a
+    /// whole), so that a reference culls the same. Default `None`.
+    pub cull_faces: Option<Arc<[bool]>>,
     /// Near and far distances; when `None`, the camera's own, else chosen from the
     /// scene's bounds by `Camera::near_far`. Default `None`.
     pub near_far: Option<(f64, f64)>,
@@ -89,7 +95,8 @@ pub struct RenderOptions {
 }
 
 impl RenderOptions {
-    /// Whether the back faces of `object` are dropped.
+    /// Whether the back faces of `object` are dropped (by object: [`RenderOptions::cull_faces`]
+    /// is not consulted).
     pub fn culls(&self, object: u32) -> bool {
         match &self.cull_objects {
             Some(c) => c.get(object as usize).copied().unwrap_or(false),
@@ -104,6 +111,7 @@ impl Default for RenderOptions {
             depth: DepthFormat::F64,
             cull_back_faces: false,
             cull_objects: None,
+            cull_faces: None,
             near_far: None,
             background: [1.0; 3],
         }

@@ -175,12 +175,14 @@ pub(crate) enum EdgeKind {
     Clip,
 }
 
-/// Which back faces a method drops: those of every object, of none, or of the objects a
-/// [`crate::RenderOptions::cull_objects`] marks.
+/// Which back faces a method drops: those of every object, of none, of the objects a
+/// [`crate::RenderOptions::cull_objects`] marks, or the faces a
+/// [`crate::RenderOptions::cull_faces`] marks.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Culling<'a> {
     all: bool,
     objects: Option<&'a [bool]>,
+    faces: Option<&'a [bool]>,
 }
 
 impl<'a> Culling<'a> {
@@ -188,6 +190,7 @@ impl<'a> Culling<'a> {
     pub(crate) const NONE: Culling<'static> = Culling {
         all: false,
         objects: None,
+        faces: None,
     };
 
     /// What `opts` asks for.
@@ -195,17 +198,19 @@ impl<'a> Culling<'a> {
         Culling {
             all: opts.cull_back_faces,
             objects: opts.cull_objects.as_deref(),
+            faces: opts.cull_faces.as_deref(),
         }
     }
 
     /// Whether face `f` is dropped: its object's back faces are culled and it is one.
     pub(crate) fn drops(&self, scene: &Scene, f: usize, eye: Viewpoint) -> bool {
-        let culls = match self.objects {
-            Some(c) => c
+        let culls = match (self.faces, self.objects) {
+            (Some(c), _) => c.get(f).copied().unwrap_or(false),
+            (None, Some(c)) => c
                 .get(scene.faces[f].object as usize)
                 .copied()
                 .unwrap_or(false),
-            None => self.all,
+            (None, None) => self.all,
         };
         culls && is_back_face(scene, f, eye)
     }
