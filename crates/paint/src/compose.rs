@@ -396,7 +396,12 @@ mod tests {
         for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
             let scene = spheres(shading);
             let camera = Camera::framing(&scene, 320, 240).unwrap();
-            let ordered = order(&scene, &camera, &OrderOptions::default()).unwrap();
+            // Back faces kept: pieces enough for several parallel chunks.
+            let opts = OrderOptions {
+                cull: limn_depthsort::CullMode::Off,
+                ..OrderOptions::default()
+            };
+            let ordered = order(&scene, &camera, &opts).unwrap();
             assert!(ordered.fragments.len() > 4 * FRAGMENTS_PER_TASK);
             let on = |threads: usize| {
                 rayon::ThreadPoolBuilder::new()
