@@ -90,7 +90,30 @@ def collection_polygons(coll: Any) -> Tuple[List[np.ndarray], np.ndarray, np.nda
     ec = rep(np.asarray(coll._edgecolor3d, dtype=float).reshape(-1, 4))
     lw = np.asarray(coll.get_linewidths(), dtype=float).reshape(-1)
     lw = np.zeros(n) if len(lw) == 0 else (np.repeat(lw, n) if len(lw) != n else lw)
+    if n > 1:
+        # Nearest first, the reverse of mplot3d's painting order: where limn's exact order
+        # leaves a choice (polygons that do not overlap, such as the cells of a plane),
+        # it paints the last given first, so edge strokes overlap their neighbours as
+        # matplotlib's do.
+        order = _painting_order(coll, faces)[::-1]
+        polys = [polys[i] for i in order]
+        fc, ec, lw = fc[order], ec[order], lw[order]
     return polys, fc, ec, lw
+
+
+def _painting_order(coll: Any, faces: np.ndarray) -> np.ndarray:
+    """The order in which mplot3d paints the collection's polygons: far to near by its
+    sort depth (``zsort``) of the projected corners, as ``do_3d_projection`` sorts them."""
+    from mpl_toolkits.mplot3d import proj3d
+
+    with np.errstate(invalid="ignore", divide="ignore"):
+        pzs = proj3d._scale_proj_transform_vectors(faces, coll.axes)[..., 2]
+    invalid = np.asarray(coll._invalid_vertices)
+    if invalid.ndim == 2 and invalid.any():
+        pzs = np.ma.MaskedArray(pzs, mask=invalid)
+    face_z = coll._zsortfunc(pzs, axis=-1)
+    face_z = np.ma.getdata(face_z)
+    return np.argsort(face_z, axis=-1)[::-1]
 
 
 def _lines(artist: Any) -> List[np.ndarray]:

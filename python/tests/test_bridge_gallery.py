@@ -190,3 +190,24 @@ def test_a_quad_seen_as_a_bow_tie_is_filled_as_matplotlib_fills_it(tmp_path):
     # the quad's own two triangles would overlap or leave half of it out).
     assert differ.sum() < 0.1 * int((~bg(theirs)).sum()), int(differ.sum())
     plt.close(fig)
+
+
+def test_abutting_cells_overlap_their_strokes_in_matplotlibs_order(tmp_path):
+    # Two coplanar cells with thick strokes in their face colours (plot_surface's
+    # default, as imshow3d in the gallery draws): nothing orders them, and the stroke of
+    # the one mplot3d paints last covers the shared edge. Listed either way round.
+    for cells in ((BLUE, RED), (RED, BLUE)):
+        fig, ax = axes()
+        squares = [
+            [(-0.6, -0.3, 0), (0, -0.3, 0), (0, 0.3, 0), (-0.6, 0.3, 0)],
+            [(0, -0.3, 0), (0.6, -0.3, 0), (0.6, 0.3, 0), (0, 0.3, 0)],
+        ]
+        colours = [c + (1.0,) for c in cells]
+        ax.add_collection3d(
+            Poly3DCollection(squares, facecolors=colours, edgecolors=colours, linewidths=8)
+        )
+        mine, theirs = both(fig, tmp_path)
+        for p in [(-0.03, 0.0, 0.0), (0.03, 0.0, 0.0), (-0.03, 0.2, 0.0), (0.03, -0.2, 0.0)]:
+            c, want = colour_at(fig, ax, mine, p), colour_at(fig, ax, theirs, p)
+            assert near(c, want, 0.1), (cells, p, c, want)
+        plt.close(fig)
