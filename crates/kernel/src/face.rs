@@ -18,11 +18,16 @@
 //!    when there is none. Diagonals are non-original and every triangle gets its own
 //!    exact supporting plane; only triangles of exactly zero area are dropped, so a face
 //!    with area always draws something.
+//! 6. An exactly planar face that is not convex has its triangles merged across
+//!    diagonals into convex pieces ([`crate::convex_pieces`]): a contour region or a
+//!    letter becomes a few polygons rather than one triangle per corner. The
+//!    image-space references keep the triangles: the surface is the same.
 
 use std::cmp::Ordering;
 
 use glam::DVec3;
 
+use crate::convex_pieces::convex_pieces;
 use crate::face_split::split_face;
 use crate::plane::{check_finite, plane_axes, robust_safe, Plane};
 use crate::polygon::{Builder, Corner, ExactPolygon};
@@ -163,6 +168,10 @@ enum Shape {
     /// The triangles of [`split_face`] (those of exactly zero area, which have no plane,
     /// are left out by the callers).
     Triangles(Vec<Tri>),
+    /// An exactly planar face that is not convex: the triangles of [`split_face`], which
+    /// the conversion merges into convex pieces ([`convex_pieces`]); `k` is an axis along
+    /// which the face has area.
+    Planar { tris: Vec<Tri>, k: usize },
 }
 
 fn shape(g: &[P3]) -> Shape {
@@ -197,10 +206,16 @@ fn shape(g: &[P3]) -> Shape {
     order.sort_by(|&a, &b| score(b).total_cmp(&score(a)));
     for &best in order.iter().take(3) {
         if let Ok(support) = Plane::through(p0, g[best + 1], g[best + 2]) {
+            if g.iter().any(|&p| support.side_of(p) != crate::Side::On) {
+                break;
+            }
             if let Some(poly) = try_convex(g, &support) {
                 return Shape::Convex(poly);
             }
-            break;
+            return Shape::Planar {
+                tris: split_face(g, newell, orient_k),
+                k: support.dominant_exact_axis(),
+            };
         }
     }
     Shape::Triangles(split_face(g, newell, orient_k))
@@ -225,6 +240,25 @@ pub(crate) fn face_polygons(corners: &[DVec3]) -> Result<Vec<ExactPolygon>, Kern
                 let [a, b, c] = t.idx.map(|i| o.pts[i]);
                 if let Ok(support) = Plane::through(a, b, c) {
                     out.push(convex_polygon(&[a, b, c], support, &t.original));
+                }
+            }
+            out
+        }
+        Shape::Planar { tris, k } => {
+            let pts = &o.pts;
+            let turn = |a: usize, b: usize, c: usize| orient_k(pts[a], pts[b], pts[c], k);
+            let pieces = convex_pieces(&tris, turn);
+            let mut out = Vec::with_capacity(pieces.len());
+            for piece in pieces {
+                let corners: Vec<P3> = piece.idx.iter().map(|&i| pts[i]).collect();
+                // Strictly convex: its first three corners span the face's plane, and the
+                // other corners lie on it exactly (the face is planar).
+                if let Ok(support) = Plane::through(corners[0], corners[1], corners[2]) {
+                    let support = match corners.get(3) {
+                        Some(&x) => support.also_through(x),
+                        None => support,
+                    };
+                    out.push(convex_polygon(&corners, support, &piece.original));
                 }
             }
             out
@@ -267,7 +301,7 @@ pub fn face_triangles(corners: &[DVec3]) -> Result<Vec<FaceTriangle>, KernelErro
                 })
                 .collect()
         }
-        Shape::Triangles(tris) => tris
+        Shape::Triangles(tris) | Shape::Planar { tris, .. } => tris
             .into_iter()
             .filter(|t| {
                 let [a, b, c] = t.idx.map(|i| o.pts[i]);
@@ -281,11 +315,9 @@ pub fn face_triangles(corners: &[DVec3]) -> Result<Vec<FaceTriangle>, KernelErro
     })
 }
 
-/// The single-polygon path: exact planarity check, collinear removal, convexity check.
+/// The single-polygon path for a face whose corners all lie on `support`: collinear
+/// removal, convexity check.
 fn try_convex(g: &[P3], support: &Plane) -> Option<ExactPolygon> {
-    if g.iter().any(|&p| support.side_of(p) != crate::Side::On) {
-        return None;
-    }
     let k = support.dominant_exact_axis();
     let mut pts = g.to_vec();
     drop_collinear(&mut pts, k);

@@ -3,6 +3,7 @@
 
 use glam::DVec3;
 
+use crate::convex_pieces::convex_pieces;
 use crate::error::KernelError;
 use crate::face_split::split_face;
 use crate::orientation::Orientation;
@@ -191,6 +192,21 @@ impl Kernel for FloatKernel {
         }
         let g: Vec<[f64; 3]> = pts.iter().map(|p| p.to_array()).collect();
         let mut out = Vec::new();
+        if let Some(unit) = normal.try_normalize() {
+            let w = unit.dot(pts[0]);
+            if pts.iter().all(|&p| (unit.dot(p) - w).abs() <= self.eps) {
+                // Planar within epsilon: its triangles merged into convex pieces, as the
+                // exact kernel merges an exactly planar face's.
+                let k = normal.abs().max_position();
+                let tris = split_face(&g, normal.to_array(), orient_float);
+                let turn = |a: usize, b: usize, c: usize| orient_float(g[a], g[b], g[c], k);
+                for piece in convex_pieces(&tris, turn) {
+                    let corners: Vec<DVec3> = piece.idx.iter().map(|&i| pts[i]).collect();
+                    out.extend(self.polygon(&corners, &piece.original, normal));
+                }
+                return Ok(out);
+            }
+        }
         for t in split_face(&g, normal.to_array(), orient_float) {
             let tp = t.idx.map(|i| pts[i]);
             let n = (tp[1] - tp[0]).cross(tp[2] - tp[0]);

@@ -47,6 +47,7 @@
 mod affine;
 #[cfg(any(test, feature = "check-invariants"))]
 mod check;
+mod convex_pieces;
 mod dyadic;
 mod error;
 mod exact;
