@@ -86,7 +86,10 @@ pub fn seam_flaps_indexed(
         .par_chunks(FRAGMENTS_PER_TASK)
         .enumerate()
         .map(|(c, block)| {
-            let (mut flaps, mut joined) = (Vec::new(), Vec::new());
+            // Room for two flaps per fragment (a smooth mesh's triangles have about one
+            // and a half): growing by doubling wrote each block's flaps again into
+            // fresh pages, and room never written is address space only.
+            let (mut flaps, mut joined) = (Vec::with_capacity(2 * block.len()), Vec::new());
             for (k, f) in block.iter().enumerate() {
                 let i = c * FRAGMENTS_PER_TASK + k;
                 let start = flaps.len();
