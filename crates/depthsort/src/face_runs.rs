@@ -157,9 +157,6 @@ mod tests {
     use crate::components::tests::csr;
     use crate::components::Components;
 
-    /// The bottom of a face's stack in [`FaceRuns::below`].
-    const NONE: u32 = u32::MAX;
-
     /// The nodes in the order found (members of a component in Tarjan's order).
     fn nodes(n: usize, edges: &[(u32, u32)], faces: &[u32]) -> Vec<u32> {
         let (s, a) = csr(n, edges);

@@ -350,7 +350,7 @@ fn flaps_after(
                 flap: true,
                 // A textured flap goes on with the fragment's texture, under the same
                 // map.
-                texture: f.texture,
+                texture: f.texture.clone(),
                 face: f.face,
                 object: f.object,
                 // Made for the flaps that are not joined (see `seam_flaps_indexed`).
@@ -883,7 +883,7 @@ mod tests {
                     let mut p = PaintFragment::new(flap, fill);
                     p.vertex_colors = colors;
                     p.flap = true;
-                    p.texture = f.texture;
+                    p.texture = f.texture.clone();
                     p.face = f.face;
                     p.object = f.object;
                     p.original_edges = vec![false; p.points.len()];
