@@ -185,13 +185,15 @@ pub fn picture(case: &Case) -> Picture {
             face: u32::from(f.face),
             object: u32::from(f.object),
             original_edges: f.edges.iter().take(17).copied().collect(),
-            texture: f.texture.map(|(k, m)| limn_paint::TextureMap {
-                texture: u32::from(k % (TEXTURES + 1)),
-                screen_to_st: [
-                    [m[0].value(), m[1].value(), m[2].value()],
-                    [m[3].value(), m[4].value(), m[5].value()],
-                    [m[6].value(), m[7].value(), m[8].value()],
-                ],
+            texture: f.texture.map(|(k, m)| {
+                Box::new(limn_paint::TextureMap {
+                    texture: u32::from(k % (TEXTURES + 1)),
+                    screen_to_st: [
+                        [m[0].value(), m[1].value(), m[2].value()],
+                        [m[3].value(), m[4].value(), m[5].value()],
+                        [m[6].value(), m[7].value(), m[8].value()],
+                    ],
+                })
             }),
             flap: false,
         })

@@ -374,7 +374,7 @@ fn checker_corners_land_at_their_projected_points_at_a_grazing_angle() {
     let mut pieces = 0;
     let mut checked = 0;
     for f in &pic.fragments {
-        let map = f.texture.expect("textured");
+        let map = *f.texture.as_deref().expect("textured");
         let affine = affine_pieces(&f.points, &map, MAX_PERSPECTIVE_ERROR);
         pieces += affine.len();
         for j in 0..=n {
@@ -414,7 +414,7 @@ fn checker_corners_land_at_their_projected_points_at_a_grazing_angle() {
     assert!(checked >= 40, "{checked}");
     // One affine map for the whole quad would be far off.
     let f = &pic.fragments[0];
-    let whole = affine_pieces(&f.points, &f.texture.unwrap(), 1e9);
+    let whole = affine_pieces(&f.points, f.texture.as_deref().unwrap(), 1e9);
     let [a, b, c, d, e, ff] = whole[0].st_to_page;
     let p = camera.project_with(&vp, DVec3::new(0.0, 0.0, 0.0));
     let (x, y) = (a * 0.5 + c * 0.5 + e, b * 0.5 + d * 0.5 + ff);

@@ -11,6 +11,9 @@
 
 use crate::components::Components;
 
+/// The bottom of a face's stack in [`FaceRuns::below`].
+const NONE: u32 = u32::MAX;
+
 /// Working space of [`FaceRuns::order`], kept from graph to graph.
 #[derive(Default)]
 pub(crate) struct FaceRuns {
@@ -21,8 +24,13 @@ pub(crate) struct FaceRuns {
     adj: Vec<u32>,
     /// Free components in Tarjan's topological order, smallest rank last taken first.
     free: std::collections::BinaryHeap<std::cmp::Reverse<u32>>,
-    /// Free single pieces by face.
-    by_face: rustc_hash::FxHashMap<u32, Vec<u32>>,
+    /// Free single pieces by face: the last one made free (a component rank), each
+    /// linked to the one made free before it through `below` (a stack per face, in one
+    /// vector rather than a vector per face: a million faces made a million of them).
+    by_face: rustc_hash::FxHashMap<u32, u32>,
+    /// Per component rank, the free single piece of its face made free before it
+    /// (`NONE` at the bottom of a face's stack).
+    below: Vec<u32>,
     taken: Vec<bool>,
     /// The order found: component ranks (indices into Tarjan's topological order).
     pub(crate) order: Vec<u32>,
@@ -87,6 +95,8 @@ impl FaceRuns {
         };
         self.free.clear();
         self.by_face.clear();
+        self.below.clear();
+        self.below.resize(m, NONE);
         self.taken.clear();
         self.taken.resize(m, false);
         self.order.clear();
@@ -94,15 +104,17 @@ impl FaceRuns {
             if self.indegree[k as usize] == 0 {
                 self.free.push(std::cmp::Reverse(k));
                 if let Some(f) = single_face(k) {
-                    self.by_face.entry(f).or_default().push(k);
+                    self.below[k as usize] = self.by_face.insert(f, k).unwrap_or(NONE);
                 }
             }
         }
         let mut last: Option<u32> = None;
         while self.order.len() < m {
             let mut free_of = |f: u32| {
-                let ks = self.by_face.get_mut(&f)?;
-                while let Some(k) = ks.pop() {
+                let top = self.by_face.get_mut(&f)?;
+                while *top != NONE {
+                    let k = *top;
+                    *top = self.below[k as usize];
                     if !self.taken[k as usize] {
                         return Some(k);
                     }
@@ -131,7 +143,7 @@ impl FaceRuns {
                 if self.indegree[b as usize] == 0 {
                     self.free.push(std::cmp::Reverse(b));
                     if let Some(f) = single_face(b) {
-                        self.by_face.entry(f).or_default().push(b);
+                        self.below[b as usize] = self.by_face.insert(f, b).unwrap_or(NONE);
                     }
                 }
             }

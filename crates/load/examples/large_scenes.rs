@@ -3,6 +3,11 @@
 //! * `sphere100k.obj`: a closed UV sphere of 99,856 triangles (159 rings × 316
 //!   segments), numbers in Rust's shortest round-trip form of f64;
 //! * `sphere1m.obj`: the same sphere at 1,001,112 triangles (708 × 708);
+//! * `spheres1m.obj` and `spheres1m.mtl`: 25 UV spheres of 41,472 triangles each (145
+//!   rings × 144 segments, radius 1, 2.5 apart) in a 5 × 5 grid, one material each,
+//!   a normal per vertex (smooth shading),
+//!   1,036,800 triangles in all: an input like the glTF sample
+//!   MetalRoughSpheresNoTextures (1,040,409 triangles in 25 spheres);
 //! * `soup10k.obj`, `soup10k-lib.obj` and `soup10k-mtl.obj`: the same 10,000 random
 //!   triangles (edges up to 0.08 in a 2 × 2 × 2 cube): without materials; with a library
 //!   of 10,000 materials (`soup10k-mtl.mtl`) and one `usemtl` before all faces; with the
@@ -40,14 +45,19 @@ enum Materials {
     SameName,
     /// The library, and a comment before each face, as long as `usemtl m<i>`.
     Comments,
+    /// `mtllib spheres1m.mtl`, `usemtl <name>` wherever the face's material changes,
+    /// and a normal per vertex (`vn`, from the sphere's centre: smooth shading).
+    Grid,
 }
 
 /// Writes the vertices and faces of `scene` as OBJ, with `mtllib soup10k-mtl.mtl` and
 /// `usemtl` statements as `materials` asks.
 fn write_obj(scene: &Scene, path: &Path, materials: Materials) -> std::io::Result<()> {
     let mut out = BufWriter::new(File::create(path)?);
-    if materials != Materials::None {
-        writeln!(out, "mtllib soup10k-mtl.mtl")?;
+    match materials {
+        Materials::None => {}
+        Materials::Grid => writeln!(out, "mtllib spheres1m.mtl")?,
+        _ => writeln!(out, "mtllib soup10k-mtl.mtl")?,
     }
     if materials == Materials::One {
         writeln!(out, "usemtl m0")?;
@@ -55,18 +65,32 @@ fn write_obj(scene: &Scene, path: &Path, materials: Materials) -> std::io::Resul
     for v in &scene.vertices {
         writeln!(out, "v {} {} {}", v.x, v.y, v.z)?;
     }
+    if materials == Materials::Grid {
+        for v in &scene.vertices {
+            let n = (*v - sphere_centre(*v)).normalize();
+            writeln!(out, "vn {} {} {}", n.x, n.y, n.z)?;
+        }
+    }
+    let mut current = None;
     for (i, f) in scene.faces.iter().enumerate() {
+        if materials == Materials::Grid && current != Some(f.material) {
+            current = Some(f.material);
+            writeln!(out, "usemtl {}", scene.materials[f.material as usize].name)?;
+        }
         let width = format!("usemtl m{i}").len();
         match materials {
             Materials::PerFace => writeln!(out, "usemtl m{i}")?,
             Materials::Scattered => writeln!(out, "usemtl m{}", i * 7919 % scene.faces.len())?,
             Materials::SameName => writeln!(out, "{:width$}", "usemtl m0")?,
             Materials::Comments => writeln!(out, "#{}", "x".repeat(width - 1))?,
-            Materials::None | Materials::One => {}
+            Materials::None | Materials::One | Materials::Grid => {}
         }
         write!(out, "f")?;
         for v in &f.vertices {
-            write!(out, " {}", v + 1)?;
+            match materials {
+                Materials::Grid => write!(out, " {}//{}", v + 1, v + 1)?,
+                _ => write!(out, " {}", v + 1)?,
+            }
         }
         writeln!(out)?;
     }
@@ -93,6 +117,37 @@ fn sphere(rings: u32, segments: u32) -> Scene {
     s
 }
 
+/// The centre of the sphere of [`sphere_grid`] that the point `v` is on.
+fn sphere_centre(v: DVec3) -> DVec3 {
+    DVec3::new((v.x / 2.5).round() * 2.5, (v.y / 2.5).round() * 2.5, 0.0)
+}
+
+/// 25 spheres of `rings` × `segments` in a 5 × 5 grid in the plane z = 0, each with its
+/// own material `s<i>` (written to `mtl` as a library).
+fn sphere_grid(rings: u32, segments: u32, mtl: &Path) -> Result<Scene, Box<dyn std::error::Error>> {
+    let mut s = Scene::default();
+    let mut lib = BufWriter::new(File::create(mtl)?);
+    for i in 0..25u32 {
+        let (col, row) = (i % 5, i / 5);
+        let mut m = Material::default_grey();
+        m.name = format!("s{i}");
+        let m = s.add_material(m);
+        writeln!(lib, "newmtl s{i}")?;
+        let kd = [
+            0.2 + 0.15 * f64::from(col),
+            0.3,
+            0.2 + 0.15 * f64::from(row),
+        ];
+        writeln!(lib, "Kd {} {} {}", kd[0], kd[1], kd[2])?;
+        writeln!(lib, "Ks 0.5 0.5 0.5\nNs 40\nillum 2")?;
+        let o = s.add_object(&format!("sphere{i}"));
+        let centre = DVec3::new(2.5 * f64::from(col), 2.5 * f64::from(row), 0.0);
+        shapes::uv_sphere(&mut s, centre, 1.0, rings, segments, m, o)?;
+    }
+    lib.flush()?;
+    Ok(s)
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = std::env::args()
         .nth(1)
@@ -109,6 +164,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         &dir.join("sphere1m.obj"),
         Materials::None,
     )?;
+    let grid = sphere_grid(145, 144, &dir.join("spheres1m.mtl"))?;
+    write_obj(&grid, &dir.join("spheres1m.obj"), Materials::Grid)?;
     let mut soup = Scene::default();
     let m = soup.add_material(Material::default_grey());
     let o = soup.add_object("soup");

@@ -127,34 +127,54 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         // `repeats_of_covers`); with outlines they stay (their strokes are drawn over
         // the cover's).
         let repeat = repeats_of_covers(ordered, &cover);
-        let chunks: Vec<Vec<PaintFragment>> = ordered
-            .fragments
-            .par_chunks(FRAGMENTS_PER_TASK)
-            .zip(cover.par_chunks(FRAGMENTS_PER_TASK))
-            .zip(repeat.par_chunks(FRAGMENTS_PER_TASK))
-            .map(|((frags, covers), repeats)| {
-                let mut out = Vec::with_capacity(frags.len());
-                for ((f, cover), &repeat) in frags.iter().zip(covers).zip(repeats) {
-                    let fill = fill_of(f);
-                    if repeat
-                        && style.outline.is_none()
-                        && style.seamless
-                        && fill[3] >= 1.0
-                        && one_fill(scene, style, f.face)
-                    {
-                        continue;
-                    }
-                    compose(scene, style, &view, f, cover.as_ref(), fill, &mut out);
-                }
-                out
-            })
-            .collect();
         // Room for the seam flaps that stay fragments of their own, so that they are put
         // in without moving the fragments to fresh memory (see `seam_flaps_indexed`).
-        let count: usize = chunks.iter().map(Vec::len).sum();
+        let count = ordered.fragments.len();
         let mut fragments = Vec::with_capacity(count + count / FLAP_ROOM + 16);
-        for chunk in chunks {
-            fragments.extend(chunk);
+        // A group of chunks at a time, each group's chunks moved into the picture before
+        // the next is composed: the chunks of all the fragments held beside the picture
+        // were a second copy of it in fresh pages.
+        let group = FRAGMENTS_PER_TASK * CHUNKS_PER_GROUP;
+        let mut done = 0;
+        for ((frags, covers), repeats) in ordered
+            .fragments
+            .chunks(group)
+            .zip(cover.chunks(group))
+            .zip(repeat.chunks(group))
+        {
+            let chunks: Vec<Vec<PaintFragment>> = frags
+                .par_chunks(FRAGMENTS_PER_TASK)
+                .zip(covers.par_chunks(FRAGMENTS_PER_TASK))
+                .zip(repeats.par_chunks(FRAGMENTS_PER_TASK))
+                .map(|((frags, covers), repeats)| {
+                    let mut out = Vec::with_capacity(frags.len());
+                    for ((f, cover), &repeat) in frags.iter().zip(covers).zip(repeats) {
+                        let fill = fill_of(f);
+                        if repeat
+                            && style.outline.is_none()
+                            && style.seamless
+                            && fill[3] >= 1.0
+                            && one_fill(scene, style, f.face)
+                        {
+                            continue;
+                        }
+                        compose(scene, style, &view, f, cover.as_ref(), fill, &mut out);
+                    }
+                    out
+                })
+                .collect();
+            // Where fragments compose to several (Phong pieces), room for as many more
+            // as the fragments so far made, rather than doubling.
+            done += frags.len();
+            let made = fragments.len() + chunks.iter().map(Vec::len).sum::<usize>();
+            let projected = made.saturating_mul(count) / done.max(1);
+            let wanted = projected.max(made) + projected / FLAP_ROOM + 16;
+            if wanted > fragments.capacity() {
+                fragments.reserve_exact(wanted - fragments.len());
+            }
+            for chunk in chunks {
+                fragments.extend(chunk);
+            }
         }
         fragments
     };
@@ -179,6 +199,9 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
 /// One place kept free per this many fragments for separate seam flaps (the 300² height
 /// fields have one per 1,500).
 const FLAP_ROOM: usize = 64;
+
+/// Parallel tasks composed before their fragments are moved into the picture.
+const CHUNKS_PER_GROUP: usize = 64;
 
 /// Fragments composed by one parallel task at least.
 const FRAGMENTS_PER_TASK: usize = 1024;

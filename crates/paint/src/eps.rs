@@ -228,11 +228,14 @@ impl Writer {
         // Under the pieces, the whole run (fragments and seam flaps) under one affine
         // map, the first fan triangle's: the edges between pieces then show nearly the
         // same texels. In clips of at most MAX_POINTS_PER_FILL points.
-        let whole = run.iter().find_map(|f| f.src.texture).and_then(|map| {
-            affine_pieces(&run[0].points, &map, f64::INFINITY)
-                .into_iter()
-                .next()
-        });
+        let whole = run
+            .iter()
+            .find_map(|f| f.src.texture.as_deref().copied())
+            .and_then(|map| {
+                affine_pieces(&run[0].points, &map, f64::INFINITY)
+                    .into_iter()
+                    .next()
+            });
         if let Some(whole) = &whole {
             let mut start = 0;
             while start < polys.len() {

@@ -22,8 +22,10 @@ pub struct PaintFragment {
     pub original_edges: Vec<bool>,
     /// A texture drawn over the fragment: each point's colour is [`PaintFragment::fill`]
     /// (RGB) times the texture's colour there; opacity stays `fill[3]`. Textured
-    /// fragments have no vertex colours.
-    pub texture: Option<TextureMap>,
+    /// fragments have no vertex colours. Boxed: most fragments have none, and the map
+    /// inline made every fragment 80 bytes larger (a million-face picture's fragments
+    /// and flaps, held two or three times while flaps are put in, 190 MB more).
+    pub texture: Option<Box<TextureMap>>,
     /// Whether this is a seam flap of the fragment of the same face painted before it
     /// (see [`crate::seam_flaps`]): it lies inside a fragment painted later, so it
     /// changes no pixel once that one is painted and only fills the anti-aliased pixels

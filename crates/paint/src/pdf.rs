@@ -207,7 +207,7 @@ impl Content {
         // Under the pieces, the whole run (fragments and seam flaps: one clip) under one
         // affine map, the first fan triangle's: the anti-aliased edges between pieces
         // then show nearly the same texels.
-        let source = run.iter().find_map(|f| f.src.texture);
+        let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
         let whole = source.as_ref().and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
                 .into_iter()

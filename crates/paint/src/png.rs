@@ -94,7 +94,7 @@ impl PngPainter {
                 p[1] *= scale;
             }
             if let Some(t) = &mut f.texture {
-                *t = t.scaled(scale);
+                **t = t.scaled(scale);
             }
         }
         if let Some(o) = &mut big.outline {

@@ -86,7 +86,10 @@ pub fn seam_flaps_indexed(
         .par_chunks(FRAGMENTS_PER_TASK)
         .enumerate()
         .map(|(c, block)| {
-            let (mut flaps, mut joined) = (Vec::new(), Vec::new());
+            // Room for two flaps per fragment (a smooth mesh's triangles have about one
+            // and a half): growing by doubling wrote each block's flaps again into
+            // fresh pages, and room never written is address space only.
+            let (mut flaps, mut joined) = (Vec::with_capacity(2 * block.len()), Vec::new());
             for (k, f) in block.iter().enumerate() {
                 let i = c * FRAGMENTS_PER_TASK + k;
                 let start = flaps.len();
@@ -127,15 +130,14 @@ pub fn seam_flaps_indexed(
     // Flaps of their own are put in after their fragments. A smooth fragment's flaps
     // wait until the consecutive smooth fragments of its face are out (Phong pieces): a
     // flap between them would split the painters' run of the face. Every later face is
-    // painted after that run, so each flap still comes first.
+    // painted after that run, so each flap still comes first. The blocks' flaps stay in
+    // their blocks (one vector of all of them was a copy of every flap in fresh memory).
     let n = fragments.len();
-    let mut flaps: Vec<Flap> = Vec::with_capacity(separate);
-    for (mut f, _) in parts {
-        flaps.append(&mut f);
-    }
-    // The flaps come in order of their fragments: a run's end is found once.
+    // The flaps come in order of their fragments: a run's end is found once. The places
+    // stay in order: a run's later fragments are smooth fragments of the run, whose
+    // flaps go after the run's end too.
     let mut run_end = None;
-    for flap in &mut flaps {
+    for flap in parts.iter_mut().flat_map(|p| p.0.iter_mut()) {
         let i = flap.0;
         if fragments[i].vertex_colors.is_none() {
             continue;
@@ -157,32 +159,32 @@ pub fn seam_flaps_indexed(
         run_end = Some(end);
         flap.0 = end;
     }
-    // In order of where they go (a smooth fragment's flaps after those of the run's
-    // earlier fragments).
-    flaps.sort_by_key(|f| f.0);
-    flaps_in_place(fragments, flaps)
+    let flaps = parts.into_iter().flat_map(|p| p.0);
+    flaps_in_place(fragments, flaps, separate)
 }
 
-/// The flaps (each with the index of the fragment it goes after, in order) put into
-/// `fragments`: from the back, each fragment is swapped once into its final place. The
-/// composed picture leaves room for them (see `compose.rs`), so that the fragments stay
-/// where they are: a new vector of a large picture's fragments cost more in fresh pages
-/// than the moves (118–156 ms of a cold run on the 300² height fields). Also returns
-/// where each fragment went.
+/// The `count` flaps (each with the index of the fragment it goes after, in order of
+/// those indices) put into `fragments`: from the back, each fragment is swapped once into
+/// its final place. The composed picture leaves room for them (see `compose.rs`), so
+/// that the fragments stay where they are: a new vector of a large picture's fragments
+/// cost more in fresh pages than the moves (118–156 ms of a cold run on the 300² height
+/// fields). Also returns where each fragment went.
 fn flaps_in_place(
     mut fragments: Vec<PaintFragment>,
-    flaps: Vec<Flap>,
+    flaps: impl DoubleEndedIterator<Item = Flap>,
+    count: usize,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let n = fragments.len();
     let mut at: Vec<usize> = (0..n).collect();
     // Exactly the room needed when there is none (growing by doubling would hold twice
     // the fragments' memory).
-    fragments.reserve_exact(flaps.len());
-    fragments.resize_with(n + flaps.len(), PaintFragment::default);
+    fragments.reserve_exact(count);
+    fragments.resize_with(n + count, PaintFragment::default);
     // Places `write..` are final, `read..write` hold empty fragments, `..read` the
     // fragments not moved yet.
-    let (mut read, mut write) = (n, n + flaps.len());
-    for (after, flap) in flaps.into_iter().rev() {
+    let (mut read, mut write) = (n, n + count);
+    for (after, flap) in flaps.rev() {
+        debug_assert!(after < read, "flaps in order of their places");
         while read > after + 1 {
             read -= 1;
             write -= 1;
@@ -348,7 +350,7 @@ fn flaps_after(
                 flap: true,
                 // A textured flap goes on with the fragment's texture, under the same
                 // map.
-                texture: f.texture,
+                texture: f.texture.clone(),
                 face: f.face,
                 object: f.object,
                 // Made for the flaps that are not joined (see `seam_flaps_indexed`).
@@ -881,7 +883,7 @@ mod tests {
                     let mut p = PaintFragment::new(flap, fill);
                     p.vertex_colors = colors;
                     p.flap = true;
-                    p.texture = f.texture;
+                    p.texture = f.texture.clone();
                     p.face = f.face;
                     p.object = f.object;
                     p.original_edges = vec![false; p.points.len()];

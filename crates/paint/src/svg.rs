@@ -113,7 +113,7 @@ fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool, Option<u32>) {
         if smooth { [0; 3] } else { rgb_u8(f.flat_rgb()) },
         alpha_milli(f.alpha()),
         smooth,
-        f.src.texture.map(|t| t.texture),
+        f.src.texture.as_ref().map(|t| t.texture),
     )
 }
 

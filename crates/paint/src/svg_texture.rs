@@ -129,7 +129,7 @@ impl SvgTextures {
             .zip(reversals(run))
             .map(|(f, reverse)| f.oriented(reverse).collect())
             .collect();
-        let source = run.iter().find_map(|f| f.src.texture);
+        let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
         let whole = source.as_ref().and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
                 .into_iter()

@@ -64,7 +64,7 @@ impl FanPaint {
     /// `f` painted this way.
     fn paint(self, mut f: PaintFragment) -> PaintFragment {
         match self {
-            FanPaint::Map(m) => f.texture = Some(m),
+            FanPaint::Map(m) => f.texture = Some(Box::new(m)),
             FanPaint::Flat(c) => {
                 f.texture = None;
                 for (v, c) in f.fill.iter_mut().zip(c) {
