@@ -60,9 +60,11 @@ use std::io::Write;
 use rayon::prelude::*;
 
 use super::layers::Layers;
+use super::merge;
 use super::marks::{paint_mark, MarkSink};
 use super::number::{
-    alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
+    alpha_milli, push_hex_color, push_milli, push_num, push_scaled, push_uint, push_xml_attr,
+    rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::{
@@ -196,6 +198,7 @@ impl Painter for SvgPainter {
         // threads. Anything else first sends the batch out.
         let batch: RefCell<Vec<FlatRun<'p>>> = RefCell::new(Vec::new());
         let outline = checked.outline;
+        let merge = picture.merge_pieces;
         let send = |sink: &mut Sink<'_>, stats: &mut PaintStats| -> Result<(), PaintError> {
             let mut batch = batch.borrow_mut();
             let written: Vec<(Vec<u8>, Vec<usize>, usize)> = batch
@@ -203,7 +206,7 @@ impl Painter for SvgPainter {
                 .map(|chunk| {
                     let (mut b, mut ends, mut strokes) = (Vec::new(), Vec::new(), 0);
                     for r in chunk {
-                        strokes += r.write(&mut b, outline, seams > 0.0, d);
+                        strokes += r.write(&mut b, outline, seams > 0.0, merge, d);
                         ends.push(b.len());
                     }
                     (b, ends, strokes)
@@ -344,9 +347,18 @@ struct FlatRun<'a> {
 }
 
 impl FlatRun<'_> {
-    /// Writes the run's fill and outline; returns the number of strokes (0 or 1).
-    fn write(&self, b: &mut Vec<u8>, outline: Option<Outline>, seams: bool, d: u8) -> usize {
-        write_fill(b, &self.frags, self.rgb, self.alpha, seams, d);
+    /// Writes the run's fill (the union of its fragments when `merge`) and outline;
+    /// returns the number of strokes (0 or 1).
+    fn write(
+        &self,
+        b: &mut Vec<u8>,
+        outline: Option<Outline>,
+        seams: bool,
+        merge: bool,
+        d: u8,
+    ) -> usize {
+        let merged = merge.then(|| merge::union(&self.frags, d, |p| p)).flatten();
+        write_fill(b, &self.frags, merged, self.rgb, self.alpha, seams, d);
         match outline.filter(|_| self.frags.iter().any(Frag::has_outline)) {
             Some(o) => {
                 write_outline(b, &self.frags, o, seams, d);
@@ -357,20 +369,45 @@ impl FlatRun<'_> {
     }
 }
 
-/// Writes the fill of a run as one path (each fragment a subpath, turned the way the
-/// first one turns), stroked in its own colour when seams close it.
-fn write_fill(b: &mut Vec<u8>, run: &[Frag<'_>], rgb: [u8; 3], alpha: u16, seams: bool, d: u8) {
+/// Writes the fill of a run as one path: its union's rings when `merged`, else each
+/// fragment a subpath, turned the way the first one turns; stroked in its own colour
+/// when seams close it.
+fn write_fill(
+    b: &mut Vec<u8>,
+    run: &[Frag<'_>],
+    merged: Option<merge::Shapes>,
+    rgb: [u8; 3],
+    alpha: u16,
+    seams: bool,
+    d: u8,
+) {
     b.extend_from_slice(b"<path d=\"");
-    for (f, reverse) in run.iter().zip(reversals(run)) {
-        for (k, p) in f.oriented(reverse).enumerate() {
-            b.push(match k {
-                0 => b'M',
-                1 => b'L',
-                _ => b' ',
-            });
-            push_point(b, p, d);
+    let command = |k: usize| match k {
+        0 => b'M',
+        1 => b'L',
+        _ => b' ',
+    };
+    match merged {
+        Some(shapes) => {
+            for ring in shapes.iter().flatten() {
+                for (k, p) in ring.iter().enumerate() {
+                    b.push(command(k));
+                    push_scaled(b, p.x.into(), d);
+                    b.push(b' ');
+                    push_scaled(b, p.y.into(), d);
+                }
+                b.push(b'Z');
+            }
         }
-        b.push(b'Z');
+        None => {
+            for (f, reverse) in run.iter().zip(reversals(run)) {
+                for (k, p) in f.oriented(reverse).enumerate() {
+                    b.push(command(k));
+                    push_point(b, p, d);
+                }
+                b.push(b'Z');
+            }
+        }
     }
     b.extend_from_slice(b"\" fill=\"");
     push_hex_color(b, rgb);
