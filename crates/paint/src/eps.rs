@@ -149,13 +149,18 @@ impl Writer {
     }
 
     fn flat_run(&mut self, b: &mut Vec<u8>, run: &[Frag<'_>], q: [u32; 3]) {
-        self.set_color(b, q);
-        let mut points = 0;
         let height = self.height;
         let merged = self
             .merge
             .then(|| merge::union(run, self.d, |p| [p[0], height - p[1]]))
-            .flatten();
+            .flatten()
+            .filter(|shapes| !(shapes.is_empty() && self.seams));
+        if merged.as_ref().is_some_and(Vec::is_empty) {
+            // Fills no point.
+            return;
+        }
+        self.set_color(b, q);
+        let mut points = 0;
         if let Some(shapes) = merged {
             // A shape's outer ring and holes go in one fill.
             for shape in &shapes {

@@ -32,9 +32,10 @@ const MAX_GRID: i64 = (1 << 30) - 1;
 
 /// The union of `run`'s polygons on the grid of `decimals` decimals, each corner first
 /// mapped to page coordinates by `page` (as the writer maps it before writing it).
-/// `None` when there is nothing to merge (one fragment), when a coordinate is beyond the
-/// integer engine's range, or when the union is empty (every polygon degenerate once
-/// rounded): the writer then writes the run's subpaths as they are.
+/// `None` when there is nothing to merge (one fragment) or when a coordinate is beyond
+/// the integer engine's range: the writer then writes the run's subpaths as they are.
+/// The union is empty when every polygon is degenerate once rounded (it fills no point):
+/// a writer leaves such a run out, unless it strokes its fills.
 pub(crate) fn union(
     run: &[Frag<'_>],
     decimals: u8,
@@ -61,8 +62,32 @@ pub(crate) fn union(
         }
         contours.push(ring);
     }
-    let shapes = contours.simplify(FillRule::NonZero, IntOverlayOptions::default());
-    (!shapes.is_empty()).then_some(shapes)
+    Some(contours.simplify(FillRule::NonZero, IntOverlayOptions::default()))
+}
+
+/// Whether polygon `points`, mapped to the page by `page` and rounded to the grid of
+/// `decimals` decimals as a writer writes it, fills no point: all its rounded corners
+/// lie on one line (exact integer cross products). `false` when a coordinate cannot be
+/// rounded so (the polygon is then written as it is).
+pub(crate) fn fills_nothing(
+    points: &[[f64; 2]],
+    decimals: u8,
+    page: impl Fn([f64; 2]) -> [f64; 2],
+) -> bool {
+    let mut grid = Vec::with_capacity(points.len());
+    for &p in points {
+        let q = page(p);
+        match (round_scaled(q[0], decimals), round_scaled(q[1], decimals)) {
+            (Some(x), Some(y)) => grid.push([i128::from(x), i128::from(y)]),
+            _ => return false,
+        }
+    }
+    let a = grid[0];
+    let Some(b) = grid.iter().copied().find(|&q| q != a) else {
+        return true;
+    };
+    grid.iter()
+        .all(|q| (b[0] - a[0]) * (q[1] - a[1]) == (b[1] - a[1]) * (q[0] - a[0]))
 }
 
 /// The number of corners of a shape (its outer ring and holes).
@@ -159,6 +184,22 @@ mod tests {
         assert_eq!(outer.abs(), 2 * 1000 * 1000);
         assert_eq!(hole.abs(), 2 * 400 * 400);
         assert!(outer * hole < 0, "the hole turns the other way");
+    }
+
+    #[test]
+    fn slivers_that_round_to_a_line_fill_nothing() {
+        let id = |q: [f64; 2]| q;
+        assert!(fills_nothing(&[[1.0, 1.0], [2.0, 2.0], [3.001, 3.0]], 2, id));
+        assert!(fills_nothing(&[[1.0, 1.0], [1.001, 1.0], [1.0, 1.004]], 2, id));
+        assert!(!fills_nothing(&[[1.0, 1.0], [2.0, 2.0], [3.01, 3.0]], 2, id));
+        // A bow tie has no signed area but fills two triangles.
+        let bow = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        assert!(!fills_nothing(&bow, 2, id));
+        let s = shapes_of(vec![
+            vec![[1.0, 1.0], [2.0, 2.0], [3.001, 3.0]],
+            vec![[5.0, 1.0], [5.0, 2.0], [5.0, 3.0]],
+        ]);
+        assert_eq!(s, Some(Vec::new()));
     }
 
     #[test]

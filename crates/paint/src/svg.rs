@@ -201,26 +201,31 @@ impl Painter for SvgPainter {
         let merge = picture.merge_pieces;
         let send = |sink: &mut Sink<'_>, stats: &mut PaintStats| -> Result<(), PaintError> {
             let mut batch = batch.borrow_mut();
-            let written: Vec<(Vec<u8>, Vec<usize>, usize)> = batch
+            let written: Vec<(Vec<u8>, Vec<usize>, usize, usize)> = batch
                 .par_chunks(RUNS_PER_TASK)
                 .map(|chunk| {
-                    let (mut b, mut ends, mut strokes) = (Vec::new(), Vec::new(), 0);
+                    let (mut b, mut ends, mut paths, mut strokes) =
+                        (Vec::new(), Vec::new(), 0, 0);
                     for r in chunk {
-                        strokes += r.write(&mut b, outline, seams > 0.0, merge, d);
+                        let (p, s) = r.write(&mut b, outline, seams > 0.0, merge, d);
+                        paths += p;
+                        strokes += s;
                         ends.push(b.len());
                     }
-                    (b, ends, strokes)
+                    (b, ends, paths, strokes)
                 })
                 .collect();
-            for (chunk, (b, ends, strokes)) in batch.chunks(RUNS_PER_TASK).zip(written) {
+            for (chunk, (b, ends, paths, strokes)) in batch.chunks(RUNS_PER_TASK).zip(written) {
                 let mut start = 0;
                 for (r, end) in chunk.iter().zip(ends) {
-                    enter(&mut sink.buf, r.frags[0].src.object);
-                    sink.buf.extend_from_slice(&b[start..end]);
+                    if end > start {
+                        enter(&mut sink.buf, r.frags[0].src.object);
+                        sink.buf.extend_from_slice(&b[start..end]);
+                    }
                     start = end;
                     sink.maybe_flush()?;
                 }
-                stats.paths += chunk.len();
+                stats.paths += paths;
                 stats.strokes += strokes;
             }
             batch.clear();
@@ -238,7 +243,7 @@ impl Painter for SvgPainter {
                 let mut g = gradients.get();
                 for frags in &layers {
                     stats.paths +=
-                        svg_smooth_run::write(&mut sink.buf, frags, alpha, tolerance, d, &mut g);
+                        svg_smooth_run::write(&mut sink.buf, frags, alpha, tolerance, d, &mut g, merge);
                 }
                 gradients.set(g);
                 sink.maybe_flush()?;
@@ -283,7 +288,7 @@ impl Painter for SvgPainter {
                     .run(b, run, k, alpha, means[k as usize], d);
             } else {
                 let mut g = gradients.get();
-                stats.paths += svg_smooth_run::write(b, run, alpha, tolerance, d, &mut g);
+                stats.paths += svg_smooth_run::write(b, run, alpha, tolerance, d, &mut g, merge);
                 gradients.set(g);
             }
             let outlined = checked
@@ -347,8 +352,9 @@ struct FlatRun<'a> {
 }
 
 impl FlatRun<'_> {
-    /// Writes the run's fill (the union of its fragments when `merge`) and outline;
-    /// returns the number of strokes (0 or 1).
+    /// Writes the run's fill (the union of its fragments when `merge`; nothing when
+    /// that fills no point and is not stroked) and outline; returns the number of fill
+    /// paths and of strokes (0 or 1 each).
     fn write(
         &self,
         b: &mut Vec<u8>,
@@ -356,15 +362,25 @@ impl FlatRun<'_> {
         seams: bool,
         merge: bool,
         d: u8,
-    ) -> usize {
-        let merged = merge.then(|| merge::union(&self.frags, d, |p| p)).flatten();
-        write_fill(b, &self.frags, merged, self.rgb, self.alpha, seams, d);
+    ) -> (usize, usize) {
+        let stroked = seams && self.alpha >= 1000;
+        let merged = merge
+            .then(|| merge::union(&self.frags, d, |p| p))
+            .flatten()
+            .filter(|shapes| !(shapes.is_empty() && stroked));
+        let paths = match merged {
+            Some(shapes) if shapes.is_empty() => 0,
+            merged => {
+                write_fill(b, &self.frags, merged, self.rgb, self.alpha, seams, d);
+                1
+            }
+        };
         match outline.filter(|_| self.frags.iter().any(Frag::has_outline)) {
             Some(o) => {
                 write_outline(b, &self.frags, o, seams, d);
-                1
+                (paths, 1)
             }
-            None => 0,
+            None => (paths, 0),
         }
     }
 }

@@ -264,8 +264,11 @@ impl Painter for TikzPainter {
             };
             let merged = merge_pieces
                 .then(|| merge::union(run, d, |p| p))
-                .flatten();
+                .flatten()
+                .filter(|shapes| !(shapes.is_empty() && stroked));
             match merged {
+                // Fills no point: no fill.
+                Some(shapes) if shapes.is_empty() => {}
                 Some(shapes) => {
                     // A shape's outer ring and holes go in one fill.
                     for shape in &shapes {
@@ -294,8 +297,10 @@ impl Painter for TikzPainter {
                     }
                 }
             }
-            b.extend_from_slice(b";\n");
-            st.stats.paths += 1;
+            if open {
+                b.extend_from_slice(b";\n");
+                st.stats.paths += 1;
+            }
             st.stats.approximated += run.iter().filter(|f| f.colors.is_some()).count();
 
             if let Some((orgb, oalpha, owidth)) = outline {
