@@ -372,7 +372,10 @@ fn a_faces_visible_pieces_are_written_as_one_outline_with_its_hole() {
     // The hole turns the other way, inside the front square (87.5..112.5) less the flaps.
     let (outer, hole) = (area2(&rings[0]), area2(&rings[1]));
     assert!(outer * hole < 0.0, "{merged:?}");
-    assert!(hole.abs() < 2.0 * 25.0 * 25.0 && hole.abs() > 2.0 * 20.0 * 20.0, "{hole}");
+    assert!(
+        hole.abs() < 2.0 * 25.0 * 25.0 && hole.abs() > 2.0 * 20.0 * 20.0,
+        "{hole}"
+    );
     pic.merge_pieces = false;
     let separate = subpaths(&pic);
     assert!(separate.len() > 2, "{separate:?}");

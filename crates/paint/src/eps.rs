@@ -50,9 +50,9 @@ use std::cell::RefCell;
 use std::io::Write;
 
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
+use super::merge;
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
 use super::pdf::push_ps_string;
-use super::merge;
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{eps_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};

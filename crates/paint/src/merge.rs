@@ -189,9 +189,21 @@ mod tests {
     #[test]
     fn slivers_that_round_to_a_line_fill_nothing() {
         let id = |q: [f64; 2]| q;
-        assert!(fills_nothing(&[[1.0, 1.0], [2.0, 2.0], [3.001, 3.0]], 2, id));
-        assert!(fills_nothing(&[[1.0, 1.0], [1.001, 1.0], [1.0, 1.004]], 2, id));
-        assert!(!fills_nothing(&[[1.0, 1.0], [2.0, 2.0], [3.01, 3.0]], 2, id));
+        assert!(fills_nothing(
+            &[[1.0, 1.0], [2.0, 2.0], [3.001, 3.0]],
+            2,
+            id
+        ));
+        assert!(fills_nothing(
+            &[[1.0, 1.0], [1.001, 1.0], [1.0, 1.004]],
+            2,
+            id
+        ));
+        assert!(!fills_nothing(
+            &[[1.0, 1.0], [2.0, 2.0], [3.01, 3.0]],
+            2,
+            id
+        ));
         // A bow tie has no signed area but fills two triangles.
         let bow = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
         assert!(!fills_nothing(&bow, 2, id));

@@ -48,8 +48,8 @@ use pdf_writer::{Name, Pdf, Rect, Ref};
 
 use super::layers::Layers;
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
-use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::merge;
+use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{pdf_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};

@@ -60,8 +60,8 @@ use std::io::Write;
 use rayon::prelude::*;
 
 use super::layers::Layers;
-use super::merge;
 use super::marks::{paint_mark, MarkSink};
+use super::merge;
 use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_scaled, push_uint, push_xml_attr,
     rgb_u8, Sink,
@@ -204,8 +204,7 @@ impl Painter for SvgPainter {
             let written: Vec<(Vec<u8>, Vec<usize>, usize, usize)> = batch
                 .par_chunks(RUNS_PER_TASK)
                 .map(|chunk| {
-                    let (mut b, mut ends, mut paths, mut strokes) =
-                        (Vec::new(), Vec::new(), 0, 0);
+                    let (mut b, mut ends, mut paths, mut strokes) = (Vec::new(), Vec::new(), 0, 0);
                     for r in chunk {
                         let (p, s) = r.write(&mut b, outline, seams > 0.0, merge, d);
                         paths += p;
@@ -242,8 +241,15 @@ impl Painter for SvgPainter {
                 enter(&mut sink.buf, object);
                 let mut g = gradients.get();
                 for frags in &layers {
-                    stats.paths +=
-                        svg_smooth_run::write(&mut sink.buf, frags, alpha, tolerance, d, &mut g, merge);
+                    stats.paths += svg_smooth_run::write(
+                        &mut sink.buf,
+                        frags,
+                        alpha,
+                        tolerance,
+                        d,
+                        &mut g,
+                        merge,
+                    );
                 }
                 gradients.set(g);
                 sink.maybe_flush()?;

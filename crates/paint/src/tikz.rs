@@ -48,8 +48,8 @@ use std::collections::HashMap;
 use std::io::Write;
 
 use super::marks::{paint_mark, MarkSink};
-use super::number::{alpha_milli, push_milli, push_num, push_scaled, push_uint, rgb_u8, Sink};
 use super::merge;
+use super::number::{alpha_milli, push_milli, push_num, push_scaled, push_uint, rgb_u8, Sink};
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::{Label, Mark, PaintError, PaintStats, Painter, Picture};
 
