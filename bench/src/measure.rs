@@ -78,5 +78,6 @@ pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style)
         seams: 0.0,
         marks: Vec::new(),
         textures: Vec::new(),
+        merge_pieces: ordered.visible,
     }
 }

@@ -6,8 +6,10 @@
 # LIMN is the limn binary (target/release/limn), RUNS the runs per output (the median
 # time is reported), FILE the scenes. Prints one Markdown table row per scene:
 # faces, then for painter's output and the visible map the median total time (ms, from
-# --stats), the SVG's bytes and paths, and the ratios visible / painter's.
+# --stats), the SVG's bytes and paths, and the ratios visible / painter's. FLAGS, when
+# set, is passed to every render (e.g. FLAGS="--eye 1,2,3 --fov 45").
 set -eu
+flags=${FLAGS:-}
 limn=$1
 runs=$2
 shift 2
@@ -26,7 +28,7 @@ for f in "$@"; do
         : > "$tmp/$mode.times"
         i=0
         while [ "$i" -lt "$runs" ]; do
-            "$limn" render "$f" -o "$tmp/$mode.svg" $flag --stats "$tmp/$mode.json" -q
+            "$limn" render "$f" -o "$tmp/$mode.svg" $flag $flags --stats "$tmp/$mode.json" -q
             key "$tmp/$mode.json" total >> "$tmp/$mode.times"
             i=$((i + 1))
         done

@@ -295,3 +295,88 @@ fn every_format_and_style_draws_the_visible_map() {
         (v.fragments_hidden, v.bytes_out)
     );
 }
+
+/// A face the visible map cuts into several pieces around a hole (what a smaller face in
+/// front of it hides) is written as one outline with a hole: an outer ring and one hole,
+/// no edge between its pieces (the pieces, written one subpath each, meet at
+/// T-junctions). Seam flaps are on (the default): the hole is what the flaps leave of the
+/// front face, and the front face is painted after it. A parallel view puts every corner
+/// on the written grid (25 px per unit), so that the T-junctions stay exact once
+/// rounded.
+#[test]
+fn a_faces_visible_pieces_are_written_as_one_outline_with_its_hole() {
+    use limn_paint::{picture, Painter, Style, SvgPainter};
+    let mut s = Scene::default();
+    let back = s.add_material(Material::unlit("back", [0.2, 0.2, 0.8]));
+    let front = s.add_material(Material::unlit("front", [0.8, 0.2, 0.2]));
+    let o = s.add_object("layers");
+    let quad = |h: f64, z: f64| {
+        [
+            DVec3::new(-h, -h, z),
+            DVec3::new(h, -h, z),
+            DVec3::new(h, h, z),
+            DVec3::new(-h, h, z),
+        ]
+    };
+    s.add_polygon(&quad(2.0, 0.0), back, o).unwrap();
+    s.add_polygon(&quad(0.5, 1.0), front, o).unwrap();
+    let cam = parallel(
+        &Camera::new(DVec3::new(0.0, 0.0, 6.0), DVec3::ZERO, 200, 200),
+        8.0,
+    );
+    let ordered = order(&s, &cam, &opts(SortMode::Adaptive, CullMode::Auto, true)).unwrap();
+    let pieces = ordered.fragments.iter().filter(|f| f.face == 0).count();
+    assert!(pieces >= 3, "the back face in {pieces} pieces");
+    let mut pic = picture(&s, &ordered, &Style::default());
+    assert!(pic.merge_pieces);
+    // The subpaths of the back face's path (its fill is the first path).
+    let subpaths = |pic: &limn_paint::Picture| -> Vec<String> {
+        let mut out = Vec::new();
+        SvgPainter::default().paint(pic, &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let path = text
+            .lines()
+            .find(|l| l.starts_with("<path d="))
+            .expect("a path")
+            .to_string();
+        let d = path.split('"').nth(1).unwrap().to_string();
+        d.split('M')
+            .filter(|p| !p.is_empty())
+            .map(str::to_string)
+            .collect()
+    };
+    let merged = subpaths(&pic);
+    assert_eq!(merged.len(), 2, "an outer ring and a hole: {merged:?}");
+    let rings: Vec<Vec<f64>> = merged
+        .iter()
+        .map(|ring| {
+            ring.replace(['L', 'Z'], " ")
+                .split_whitespace()
+                .map(|v| v.parse().unwrap())
+                .collect()
+        })
+        .collect();
+    let area2 = |r: &[f64]| -> f64 {
+        let n = r.len() / 2;
+        (0..n)
+            .map(|i| {
+                let j = (i + 1) % n;
+                r[2 * i] * r[2 * j + 1] - r[2 * j] * r[2 * i + 1]
+            })
+            .sum()
+    };
+    // The outer ring is the back face's square (50..150), its four corners only: the
+    // pieces' corners on its edges are gone.
+    assert_eq!(rings[0].len(), 8, "{:?}", merged[0]);
+    assert_eq!(area2(&rings[0]).abs(), 2.0 * 100.0 * 100.0);
+    // The hole turns the other way, inside the front square (87.5..112.5) less the flaps.
+    let (outer, hole) = (area2(&rings[0]), area2(&rings[1]));
+    assert!(outer * hole < 0.0, "{merged:?}");
+    assert!(
+        hole.abs() < 2.0 * 25.0 * 25.0 && hole.abs() > 2.0 * 20.0 * 20.0,
+        "{hole}"
+    );
+    pic.merge_pieces = false;
+    let separate = subpaths(&pic);
+    assert!(separate.len() > 2, "{separate:?}");
+}

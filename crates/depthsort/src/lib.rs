@@ -121,6 +121,9 @@ pub struct Ordered {
     /// of closed opaque shells: the closed opaque objects' and those of the closed
     /// opaque parts of other objects), so that a reference can cull the same.
     pub culled_faces: Vec<bool>,
+    /// Whether the fragments are the visible map ([`OrderOptions::visible`]): hidden parts
+    /// left out, so that the opaque fragments of different faces never overlap.
+    pub visible: bool,
 }
 
 /// Orders `scene` as seen by `camera` with the kernel and mode of `opts`.
@@ -180,6 +183,7 @@ fn empty(scene: &Scene, camera: &Camera) -> Ordered {
         whole_faces: vec![false; scene.faces.len()],
         culled_objects: vec![false; scene.objects.len()],
         culled_faces: vec![false; scene.faces.len()],
+        visible: false,
     }
 }
 
@@ -264,6 +268,7 @@ fn ordered<K: Kernel>(
         whole_faces,
         culled_objects,
         culled_faces,
+        visible: opts.visible,
     };
     Ok((ordered, polys))
 }

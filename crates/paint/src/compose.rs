@@ -193,6 +193,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         seams: 0.0,
         marks: Vec::new(),
         textures: textures.list,
+        merge_pieces: ordered.visible,
     }
 }
 

@@ -50,6 +50,7 @@ use std::cell::RefCell;
 use std::io::Write;
 
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
+use super::merge;
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint, Sink};
 use super::pdf::push_ps_string;
 use super::runs::{check, reversals, walk_with_marks, Frag};
@@ -114,6 +115,9 @@ struct Writer {
     rgb: Option<[u32; 3]>,
     /// Flat fills are also stroked in their own colour (`Picture::seams`).
     seams: bool,
+    /// Whether a flat run is written as the union of its fragments
+    /// ([`crate::Picture::merge_pieces`]).
+    merge: bool,
 }
 
 /// `a · c + (1 − a) · backdrop`.
@@ -145,8 +149,32 @@ impl Writer {
     }
 
     fn flat_run(&mut self, b: &mut Vec<u8>, run: &[Frag<'_>], q: [u32; 3]) {
+        let height = self.height;
+        let merged = self
+            .merge
+            .then(|| merge::union(run, self.d, |p| [p[0], height - p[1]]))
+            .flatten()
+            .filter(|shapes| !(shapes.is_empty() && self.seams));
+        if merged.as_ref().is_some_and(Vec::is_empty) {
+            // Fills no point.
+            return;
+        }
         self.set_color(b, q);
         let mut points = 0;
+        if let Some(shapes) = merged {
+            // A shape's outer ring and holes go in one fill.
+            for shape in &shapes {
+                let n = merge::corners(shape);
+                if points > 0 && points + n > MAX_POINTS_PER_FILL {
+                    b.extend_from_slice(b"f\n");
+                    points = 0;
+                }
+                merge::push_moveto_lineto(b, shape, self.d);
+                points += n;
+            }
+            b.extend_from_slice(if self.seams { b"F\n" } else { b"f\n" });
+            return;
+        }
         for (f, reverse) in run.iter().zip(reversals(run)) {
             if points > 0 && points + f.points.len() > MAX_POINTS_PER_FILL {
                 b.extend_from_slice(b"f\n");
@@ -311,6 +339,7 @@ impl Painter for EpsPainter {
             backdrop,
             rgb: None,
             seams: picture.seams.is_finite() && picture.seams > 0.0,
+            merge: picture.merge_pieces,
         };
         let gouraud = picture.fragments.iter().any(|f| f.vertex_colors.is_some());
 

@@ -86,6 +86,7 @@ mod format;
 mod hidden_line;
 mod layers;
 mod marks;
+mod merge;
 mod model;
 mod number;
 mod painter;

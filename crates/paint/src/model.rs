@@ -127,6 +127,14 @@ pub struct Picture {
     /// The textures of textured fragments ([`TextureMap::texture`] indexes this), each
     /// once: writers embed each image once however many fragments use it.
     pub textures: Vec<Arc<Texture>>,
+    /// Whether the vector writers (SVG, PDF, EPS, TikZ) write each path of a face's flat
+    /// fragments (and their seam flaps) as one outline, the union of the fragments with
+    /// holes where needed, instead of one subpath per fragment (see `merge.rs`): the
+    /// edges between a face's pieces are then not in the file. The union is taken of the
+    /// polygons as written (corners rounded to the writer's decimals), so the filled
+    /// area stays that of the subpaths. Set for a visible map
+    /// ([`limn_depthsort::Ordered::visible`]). Default `false`.
+    pub merge_pieces: bool,
 }
 
 impl Picture {

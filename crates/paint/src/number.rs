@@ -67,6 +67,14 @@ pub(crate) fn push_num(buf: &mut Vec<u8>, v: f64, decimals: u8) {
     push_scaled(buf, round_i64(scaled), decimals);
 }
 
+/// `v · 10^decimals` rounded as [`push_num`] rounds it (half away from zero), the number
+/// [`push_scaled`] then writes as [`push_num`] writes `v`; `None` where [`push_num`]
+/// takes its slow path (NaN, or beyond 2^53 once scaled).
+pub(crate) fn round_scaled(v: f64, decimals: u8) -> Option<i64> {
+    let scaled = v * POW10[usize::from(decimals.min(MAX_DECIMALS))] as f64;
+    (!scaled.is_nan() && scaled.abs() < EXACT_INT).then(|| round_i64(scaled))
+}
+
 /// "00" to "99".
 const PAIRS: &[u8; 200] = b"00010203040506070809\
                             10111213141516171819\

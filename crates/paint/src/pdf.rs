@@ -48,6 +48,7 @@ use pdf_writer::{Name, Pdf, Rect, Ref};
 
 use super::layers::Layers;
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
+use super::merge;
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over};
@@ -117,6 +118,9 @@ struct Content {
     rgb: Option<[u32; 3]>,
     /// Seam stroke width (0 = none).
     seams: f64,
+    /// Whether a flat run is written as the union of its fragments
+    /// ([`Picture::merge_pieces`]).
+    merge: bool,
     /// Current stroke colour and line width, and the outline's, to restore.
     stroke: Option<([u32; 3], u64)>,
     outline_stroke: Option<([u32; 3], u64)>,
@@ -158,17 +162,37 @@ impl Content {
     }
 
     fn flat_run(&mut self, run: &[Frag<'_>], rgb: [u32; 3]) {
+        let height = self.height;
+        let stroked = self.seams > 0.0 && self.alpha >= 1000;
+        let merged = self
+            .merge
+            .then(|| merge::union(run, self.d, |p| [p[0], height - p[1]]))
+            .flatten()
+            .filter(|shapes| !(shapes.is_empty() && stroked));
+        if merged.as_ref().is_some_and(Vec::is_empty) {
+            // Fills no point.
+            return;
+        }
         if self.rgb != Some(rgb) {
             self.color(rgb, b"rg\n");
             self.rgb = Some(rgb);
         }
-        for (f, reverse) in run.iter().zip(reversals(run)) {
-            for (k, p) in f.oriented(reverse).enumerate() {
-                self.point(p);
-                self.buf
-                    .extend_from_slice(if k == 0 { b" m " } else { b" l " });
+        match merged {
+            Some(shapes) => {
+                for shape in &shapes {
+                    merge::push_moveto_lineto(&mut self.buf, shape, self.d);
+                }
             }
-            self.buf.extend_from_slice(b"h\n");
+            None => {
+                for (f, reverse) in run.iter().zip(reversals(run)) {
+                    for (k, p) in f.oriented(reverse).enumerate() {
+                        self.point(p);
+                        self.buf
+                            .extend_from_slice(if k == 0 { b" m " } else { b" l " });
+                    }
+                    self.buf.extend_from_slice(b"h\n");
+                }
+            }
         }
         if self.seams > 0.0 && self.alpha >= 1000 {
             self.set_stroke(rgb, self.seams);
@@ -404,6 +428,7 @@ impl Painter for PdfPainter {
                 _ if picture.seams.is_finite() && picture.seams > 0.0 => picture.seams,
                 _ => 0.0,
             },
+            merge: picture.merge_pieces,
             stroke: None,
             outline_stroke: None,
             font: false,

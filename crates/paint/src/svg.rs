@@ -61,8 +61,10 @@ use rayon::prelude::*;
 
 use super::layers::Layers;
 use super::marks::{paint_mark, MarkSink};
+use super::merge;
 use super::number::{
-    alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
+    alpha_milli, push_hex_color, push_milli, push_num, push_scaled, push_uint, push_xml_attr,
+    rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::{
@@ -196,28 +198,33 @@ impl Painter for SvgPainter {
         // threads. Anything else first sends the batch out.
         let batch: RefCell<Vec<FlatRun<'p>>> = RefCell::new(Vec::new());
         let outline = checked.outline;
+        let merge = picture.merge_pieces;
         let send = |sink: &mut Sink<'_>, stats: &mut PaintStats| -> Result<(), PaintError> {
             let mut batch = batch.borrow_mut();
-            let written: Vec<(Vec<u8>, Vec<usize>, usize)> = batch
+            let written: Vec<(Vec<u8>, Vec<usize>, usize, usize)> = batch
                 .par_chunks(RUNS_PER_TASK)
                 .map(|chunk| {
-                    let (mut b, mut ends, mut strokes) = (Vec::new(), Vec::new(), 0);
+                    let (mut b, mut ends, mut paths, mut strokes) = (Vec::new(), Vec::new(), 0, 0);
                     for r in chunk {
-                        strokes += r.write(&mut b, outline, seams > 0.0, d);
+                        let (p, s) = r.write(&mut b, outline, seams > 0.0, merge, d);
+                        paths += p;
+                        strokes += s;
                         ends.push(b.len());
                     }
-                    (b, ends, strokes)
+                    (b, ends, paths, strokes)
                 })
                 .collect();
-            for (chunk, (b, ends, strokes)) in batch.chunks(RUNS_PER_TASK).zip(written) {
+            for (chunk, (b, ends, paths, strokes)) in batch.chunks(RUNS_PER_TASK).zip(written) {
                 let mut start = 0;
                 for (r, end) in chunk.iter().zip(ends) {
-                    enter(&mut sink.buf, r.frags[0].src.object);
-                    sink.buf.extend_from_slice(&b[start..end]);
+                    if end > start {
+                        enter(&mut sink.buf, r.frags[0].src.object);
+                        sink.buf.extend_from_slice(&b[start..end]);
+                    }
                     start = end;
                     sink.maybe_flush()?;
                 }
-                stats.paths += chunk.len();
+                stats.paths += paths;
                 stats.strokes += strokes;
             }
             batch.clear();
@@ -234,8 +241,15 @@ impl Painter for SvgPainter {
                 enter(&mut sink.buf, object);
                 let mut g = gradients.get();
                 for frags in &layers {
-                    stats.paths +=
-                        svg_smooth_run::write(&mut sink.buf, frags, alpha, tolerance, d, &mut g);
+                    stats.paths += svg_smooth_run::write(
+                        &mut sink.buf,
+                        frags,
+                        alpha,
+                        tolerance,
+                        d,
+                        &mut g,
+                        merge,
+                    );
                 }
                 gradients.set(g);
                 sink.maybe_flush()?;
@@ -280,7 +294,7 @@ impl Painter for SvgPainter {
                     .run(b, run, k, alpha, means[k as usize], d);
             } else {
                 let mut g = gradients.get();
-                stats.paths += svg_smooth_run::write(b, run, alpha, tolerance, d, &mut g);
+                stats.paths += svg_smooth_run::write(b, run, alpha, tolerance, d, &mut g, merge);
                 gradients.set(g);
             }
             let outlined = checked
@@ -344,33 +358,78 @@ struct FlatRun<'a> {
 }
 
 impl FlatRun<'_> {
-    /// Writes the run's fill and outline; returns the number of strokes (0 or 1).
-    fn write(&self, b: &mut Vec<u8>, outline: Option<Outline>, seams: bool, d: u8) -> usize {
-        write_fill(b, &self.frags, self.rgb, self.alpha, seams, d);
+    /// Writes the run's fill (the union of its fragments when `merge`; nothing when
+    /// that fills no point and is not stroked) and outline; returns the number of fill
+    /// paths and of strokes (0 or 1 each).
+    fn write(
+        &self,
+        b: &mut Vec<u8>,
+        outline: Option<Outline>,
+        seams: bool,
+        merge: bool,
+        d: u8,
+    ) -> (usize, usize) {
+        let stroked = seams && self.alpha >= 1000;
+        let merged = merge
+            .then(|| merge::union(&self.frags, d, |p| p))
+            .flatten()
+            .filter(|shapes| !(shapes.is_empty() && stroked));
+        let paths = match merged {
+            Some(shapes) if shapes.is_empty() => 0,
+            merged => {
+                write_fill(b, &self.frags, merged, self.rgb, self.alpha, seams, d);
+                1
+            }
+        };
         match outline.filter(|_| self.frags.iter().any(Frag::has_outline)) {
             Some(o) => {
                 write_outline(b, &self.frags, o, seams, d);
-                1
+                (paths, 1)
             }
-            None => 0,
+            None => (paths, 0),
         }
     }
 }
 
-/// Writes the fill of a run as one path (each fragment a subpath, turned the way the
-/// first one turns), stroked in its own colour when seams close it.
-fn write_fill(b: &mut Vec<u8>, run: &[Frag<'_>], rgb: [u8; 3], alpha: u16, seams: bool, d: u8) {
+/// Writes the fill of a run as one path: its union's rings when `merged`, else each
+/// fragment a subpath, turned the way the first one turns; stroked in its own colour
+/// when seams close it.
+fn write_fill(
+    b: &mut Vec<u8>,
+    run: &[Frag<'_>],
+    merged: Option<merge::Shapes>,
+    rgb: [u8; 3],
+    alpha: u16,
+    seams: bool,
+    d: u8,
+) {
     b.extend_from_slice(b"<path d=\"");
-    for (f, reverse) in run.iter().zip(reversals(run)) {
-        for (k, p) in f.oriented(reverse).enumerate() {
-            b.push(match k {
-                0 => b'M',
-                1 => b'L',
-                _ => b' ',
-            });
-            push_point(b, p, d);
+    let command = |k: usize| match k {
+        0 => b'M',
+        1 => b'L',
+        _ => b' ',
+    };
+    match merged {
+        Some(shapes) => {
+            for ring in shapes.iter().flatten() {
+                for (k, p) in ring.iter().enumerate() {
+                    b.push(command(k));
+                    push_scaled(b, p.x.into(), d);
+                    b.push(b' ');
+                    push_scaled(b, p.y.into(), d);
+                }
+                b.push(b'Z');
+            }
         }
-        b.push(b'Z');
+        None => {
+            for (f, reverse) in run.iter().zip(reversals(run)) {
+                for (k, p) in f.oriented(reverse).enumerate() {
+                    b.push(command(k));
+                    push_point(b, p, d);
+                }
+                b.push(b'Z');
+            }
+        }
     }
     b.extend_from_slice(b"\" fill=\"");
     push_hex_color(b, rgb);

@@ -28,7 +28,8 @@
 
 use std::collections::BTreeMap;
 
-use crate::number::{push_hex_color, push_milli, push_num, push_uint, rgb_u8};
+use crate::merge;
+use crate::number::{push_hex_color, push_milli, push_num, push_scaled, push_uint, rgb_u8};
 use crate::runs::Frag;
 use crate::seams::{edge_key, flap, EdgeKey};
 use crate::svg_smooth::{self, Piece};
@@ -41,6 +42,11 @@ const PIECE_FLAP_PX: f64 = 1.0;
 /// `alpha` in thousandths; the fragments' interiors disjoint) with pieces within
 /// `tolerance`, coordinates with `d` decimals and gradients numbered from
 /// `*gradients`. Returns the number of paths.
+///
+/// With `merge` ([`crate::Picture::merge_pieces`]), a run whose fragments one paint
+/// (flat or one gradient) shows within the tolerance is written as one path, the union
+/// of its fragments and flaps (see `merge.rs`), in that paint: one outline, no seams
+/// between its pieces, nothing to close.
 pub(crate) fn write(
     b: &mut Vec<u8>,
     run: &[Frag<'_>],
@@ -48,7 +54,20 @@ pub(crate) fn write(
     tolerance: f64,
     d: u8,
     gradients: &mut u64,
+    merge: bool,
 ) -> usize {
+    // With `merge`, fragments and flaps that fill no point once written are left out.
+    let kept: Vec<Frag<'_>>;
+    let run = if merge {
+        kept = run
+            .iter()
+            .filter(|f| !merge::fills_nothing(&f.points, d, |p| p))
+            .cloned()
+            .collect();
+        &kept[..]
+    } else {
+        run
+    };
     let (mut body, mut flaps): (Vec<&Frag<'_>>, Vec<&Frag<'_>>) =
         run.iter().partition(|f| !f.src.flap);
     if body.is_empty() {
@@ -61,6 +80,31 @@ pub(crate) fn write(
         .collect();
     if body.is_empty() {
         return 0;
+    }
+    if merge && run.len() > 1 {
+        let merged = common_paint(&body, tolerance)
+            .and_then(|paint| Some((paint, merge::union(run, d, |p| p)?)));
+        if let Some((paint, shapes)) = merged {
+            if shapes.is_empty() {
+                return 0;
+            }
+            write_flat_or_gradient(b, &paint, alpha, d, gradients, |b| {
+                for ring in shapes.iter().flatten() {
+                    for (k, p) in ring.iter().enumerate() {
+                        b.push(match k {
+                            0 => b'M',
+                            1 => b'L',
+                            _ => b' ',
+                        });
+                        push_scaled(b, p.x.into(), d);
+                        b.push(b' ');
+                        push_scaled(b, p.y.into(), d);
+                    }
+                    b.push(b'Z');
+                }
+            });
+            return 1;
+        }
     }
     // Each fragment with its flaps: the run's seam flaps it holds an edge of, and its
     // own into the later fragments it shares an edge with.
@@ -112,6 +156,66 @@ pub(crate) fn write(
         b.extend_from_slice(b"</g>\n");
     }
     paths
+}
+
+/// The paint of the first fragment of `body`, when it is one piece (flat or one
+/// gradient) and shows every other fragment within the tolerance of its pieces: at every
+/// corner, and where its edges cross the ends of the gradient's ramp (between those the
+/// difference of the padded ramp and a fragment's linear colours is linear, so it is
+/// largest at those points).
+fn common_paint(body: &[(&Frag<'_>, &[[f64; 4]])], tolerance: f64) -> Option<Piece> {
+    let budget = 0.5 * tolerance;
+    let (first, colors) = body[0];
+    let own = svg_smooth::pieces(&first.points, colors, tolerance);
+    let [paint] = own[..] else {
+        return None;
+    };
+    if matches!(paint, Piece::Channels { .. }) {
+        return None;
+    }
+    // The paint's colour at a point, and where the point lies along the ramp (unclamped).
+    let at = |q: [f64; 2]| -> ([f64; 3], f64) {
+        match paint {
+            Piece::Flat { rgb, .. } => (rgb, 0.5),
+            Piece::Gradient {
+                from, to, c0, c1, ..
+            } => {
+                let v = [to[0] - from[0], to[1] - from[1]];
+                let t = ((q[0] - from[0]) * v[0] + (q[1] - from[1]) * v[1])
+                    / (v[0] * v[0] + v[1] * v[1]);
+                let u = t.clamp(0.0, 1.0);
+                ([0, 1, 2].map(|k| c0[k] + u * (c1[k] - c0[k])), t)
+            }
+            Piece::Channels { .. } => unreachable!("not a common paint"),
+        }
+    };
+    let close = |q: [f64; 2], c: [f64; 3]| {
+        let (p, _) = at(q);
+        (0..3).all(|k| (p[k] - c[k].clamp(0.0, 1.0)).abs() <= budget)
+    };
+    for (f, cs) in &body[1..] {
+        let n = f.points.len();
+        for i in 0..n {
+            let (a, ca) = (f.points[i], cs[i]);
+            if !close(a, [ca[0], ca[1], ca[2]]) {
+                return None;
+            }
+            // Where edge a→b crosses an end of the ramp, its linear colour there.
+            let (b, cb) = (f.points[(i + 1) % n], cs[(i + 1) % n]);
+            let (ta, tb) = (at(a).1, at(b).1);
+            for end in [0.0, 1.0] {
+                if (ta - end) * (tb - end) < 0.0 {
+                    let s = (end - ta) / (tb - ta);
+                    let q = [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
+                    let c = [0, 1, 2].map(|k| ca[k] + s * (cb[k] - ca[k]));
+                    if !close(q, c) {
+                        return None;
+                    }
+                }
+            }
+        }
+    }
+    Some(paint)
 }
 
 /// The corners of a piece.
@@ -261,6 +365,23 @@ fn write_path(
         write_channels(b, &ramps, polygons, alpha, d, gradients);
         return;
     }
+    write_flat_or_gradient(b, paint, alpha, d, gradients, |b| {
+        for p in polygons {
+            push_polygon(b, p, d);
+        }
+    });
+}
+
+/// Writes one path filled with `paint` (flat or a gradient, written just before it),
+/// its subpaths appended by `subpaths`.
+fn write_flat_or_gradient(
+    b: &mut Vec<u8>,
+    paint: &Piece,
+    alpha: u16,
+    d: u8,
+    gradients: &mut u64,
+    subpaths: impl FnOnce(&mut Vec<u8>),
+) {
     if let Piece::Gradient {
         from, to, c0, c1, ..
     } = *paint
@@ -282,9 +403,7 @@ fn write_path(
         b.extend_from_slice(b"\"/></linearGradient>\n");
     }
     b.extend_from_slice(b"<path d=\"");
-    for p in polygons {
-        push_polygon(b, p, d);
-    }
+    subpaths(b);
     match *paint {
         Piece::Gradient { .. } => {
             b.extend_from_slice(b"\" fill=\"url(#s");
@@ -416,7 +535,7 @@ mod tests {
             |_| (),
             |run, _| {
                 let mut g = 0;
-                out.1 += write(&mut out.0, run, alpha, 1.0 / 255.0, 2, &mut g);
+                out.1 += write(&mut out.0, run, alpha, 1.0 / 255.0, 2, &mut g, false);
                 Ok(())
             },
         )

@@ -48,7 +48,8 @@ use std::collections::HashMap;
 use std::io::Write;
 
 use super::marks::{paint_mark, MarkSink};
-use super::number::{alpha_milli, push_milli, push_num, push_uint, rgb_u8, Sink};
+use super::merge;
+use super::number::{alpha_milli, push_milli, push_num, push_scaled, push_uint, rgb_u8, Sink};
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::{Label, Mark, PaintError, PaintStats, Painter, Picture};
 
@@ -222,6 +223,7 @@ impl Painter for TikzPainter {
             b.extend_from_slice(b";\n");
         }
 
+        let merge_pieces = picture.merge_pieces;
         let outline = checked.outline.map(|o| {
             (
                 rgb_u8([o.color[0], o.color[1], o.color[2]]),
@@ -244,8 +246,9 @@ impl Painter for TikzPainter {
             let stroked = seams > 0.0 && alpha >= 1000;
             let mut points = 0;
             let mut open = false;
-            for (f, reverse) in run.iter().zip(reversals(run)) {
-                if open && points + f.points.len() > MAX_POINTS_PER_FILL {
+            // Starts a new fill when `n` more corners would make the current one too long.
+            let mut start = |b: &mut Vec<u8>, n: usize| {
+                if open && points + n > MAX_POINTS_PER_FILL {
                     b.extend_from_slice(b";\n");
                     open = false;
                     points = 0;
@@ -257,16 +260,47 @@ impl Painter for TikzPainter {
                     b.push(b']');
                     open = true;
                 }
-                for p in f.oriented(reverse) {
-                    b.push(b' ');
-                    push_point(b, p, d);
-                    b.extend_from_slice(b" --");
+                points += n;
+            };
+            let merged = merge_pieces
+                .then(|| merge::union(run, d, |p| p))
+                .flatten()
+                .filter(|shapes| !(shapes.is_empty() && stroked));
+            match merged {
+                // Fills no point: no fill.
+                Some(shapes) if shapes.is_empty() => {}
+                Some(shapes) => {
+                    // A shape's outer ring and holes go in one fill.
+                    for shape in &shapes {
+                        start(b, merge::corners(shape));
+                        for ring in shape {
+                            for p in ring {
+                                b.extend_from_slice(b" (");
+                                push_scaled(b, p.x.into(), d);
+                                b.push(b',');
+                                push_scaled(b, p.y.into(), d);
+                                b.extend_from_slice(b") --");
+                            }
+                            b.extend_from_slice(b" cycle");
+                        }
+                    }
                 }
-                b.extend_from_slice(b" cycle");
-                points += f.points.len();
+                None => {
+                    for (f, reverse) in run.iter().zip(reversals(run)) {
+                        start(b, f.points.len());
+                        for p in f.oriented(reverse) {
+                            b.push(b' ');
+                            push_point(b, p, d);
+                            b.extend_from_slice(b" --");
+                        }
+                        b.extend_from_slice(b" cycle");
+                    }
+                }
             }
-            b.extend_from_slice(b";\n");
-            st.stats.paths += 1;
+            if open {
+                b.extend_from_slice(b";\n");
+                st.stats.paths += 1;
+            }
             st.stats.approximated += run.iter().filter(|f| f.colors.is_some()).count();
 
             if let Some((orgb, oalpha, owidth)) = outline {

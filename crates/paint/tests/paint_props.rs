@@ -62,8 +62,9 @@ fn picture() -> impl Strategy<Value = Picture> {
         prop::collection::vec(fragment(), 0..12),
         any::<bool>(),
         prop::option::of(0.0..3.0f64),
+        any::<bool>(),
     )
-        .prop_map(|(fragments, background, outline)| Picture {
+        .prop_map(|(fragments, background, outline, merge_pieces)| Picture {
             width: 64,
             height: 48,
             background: background.then_some([0.9, 0.9, 0.8, 1.0]),
@@ -76,6 +77,7 @@ fn picture() -> impl Strategy<Value = Picture> {
             seams: if background { 0.5 } else { 0.0 },
             marks: Vec::new(),
             textures: Vec::new(),
+            merge_pieces,
         })
 }
 

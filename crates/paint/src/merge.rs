@@ -1,0 +1,223 @@
+//! A face's pieces written as one outline ([`Picture::merge_pieces`]): the union of a
+//! run's polygons, with holes where needed, so that the edges between the pieces of one
+//! face (T-junctions included) are not in the file.
+//!
+//! The union is taken of the polygons *as written*: every corner is first rounded to the
+//! writer's grid (`decimals` decimals, half away from zero, as [`crate::number`] writes
+//! numbers), and the union of those integer polygons is computed by `i_overlay` with
+//! exact integer predicates under the non-zero rule, each polygon turned as the writers
+//! turn the subpaths of a run (see [`reversals`]). The outline written is thus the area
+//! the subpaths would fill, decided without any tolerance; the only rounding is that of
+//! the points where two rounded edges cross (a piece's rounded corner of a T-junction
+//! against its neighbour's rounded edge), to the same grid, less than half a unit of
+//! the last decimal from the exact crossing. Collinear corners are dropped.
+//!
+//! [`Picture::merge_pieces`]: crate::Picture::merge_pieces
+
+use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay::IntOverlayOptions;
+use i_overlay::core::simplify::Simplify;
+use i_overlay::i_float::int::point::IntPoint;
+
+use crate::number::{push_scaled, round_scaled};
+use crate::runs::{reversals, Frag};
+
+/// A run's outline: shapes, each its outer ring then its holes (turned the other way),
+/// corners in units of `10^-decimals` of the page's unit, in the writer's page
+/// coordinates.
+pub(crate) type Shapes = Vec<Vec<Vec<IntPoint<i32>>>>;
+
+/// The largest magnitude of a grid coordinate `i_overlay`'s 32-bit engine takes.
+const MAX_GRID: i64 = (1 << 30) - 1;
+
+/// The union of `run`'s polygons on the grid of `decimals` decimals, each corner first
+/// mapped to page coordinates by `page` (as the writer maps it before writing it).
+/// `None` when there is nothing to merge (one fragment) or when a coordinate is beyond
+/// the integer engine's range: the writer then writes the run's subpaths as they are.
+/// The union is empty when every polygon is degenerate once rounded (it fills no point):
+/// a writer leaves such a run out, unless it strokes its fills.
+pub(crate) fn union(
+    run: &[Frag<'_>],
+    decimals: u8,
+    page: impl Fn([f64; 2]) -> [f64; 2],
+) -> Option<Shapes> {
+    if run.len() < 2 {
+        return None;
+    }
+    let mut contours: Vec<Vec<IntPoint<i32>>> = Vec::with_capacity(run.len());
+    for (f, reverse) in run.iter().zip(reversals(run)) {
+        let mut ring = Vec::with_capacity(f.points.len());
+        for p in f.oriented(reverse) {
+            let q = page(p);
+            let x = round_scaled(q[0], decimals)?;
+            let y = round_scaled(q[1], decimals)?;
+            if x.abs() > MAX_GRID || y.abs() > MAX_GRID {
+                return None;
+            }
+            // In range: the casts are exact.
+            let point = IntPoint::new(x as i32, y as i32);
+            if ring.last() != Some(&point) {
+                ring.push(point);
+            }
+        }
+        contours.push(ring);
+    }
+    Some(contours.simplify(FillRule::NonZero, IntOverlayOptions::default()))
+}
+
+/// Whether polygon `points`, mapped to the page by `page` and rounded to the grid of
+/// `decimals` decimals as a writer writes it, fills no point: all its rounded corners
+/// lie on one line (exact integer cross products). `false` when a coordinate cannot be
+/// rounded so (the polygon is then written as it is).
+pub(crate) fn fills_nothing(
+    points: &[[f64; 2]],
+    decimals: u8,
+    page: impl Fn([f64; 2]) -> [f64; 2],
+) -> bool {
+    let mut grid = Vec::with_capacity(points.len());
+    for &p in points {
+        let q = page(p);
+        match (round_scaled(q[0], decimals), round_scaled(q[1], decimals)) {
+            (Some(x), Some(y)) => grid.push([i128::from(x), i128::from(y)]),
+            _ => return false,
+        }
+    }
+    let a = grid[0];
+    let Some(b) = grid.iter().copied().find(|&q| q != a) else {
+        return true;
+    };
+    grid.iter()
+        .all(|q| (b[0] - a[0]) * (q[1] - a[1]) == (b[1] - a[1]) * (q[0] - a[0]))
+}
+
+/// The number of corners of a shape (its outer ring and holes).
+pub(crate) fn corners(shape: &[Vec<IntPoint<i32>>]) -> usize {
+    shape.iter().map(Vec::len).sum()
+}
+
+/// Appends a shape's rings as PDF and PostScript path operators (`x y m`, `x y l`, `h`),
+/// one line per ring.
+pub(crate) fn push_moveto_lineto(b: &mut Vec<u8>, shape: &[Vec<IntPoint<i32>>], decimals: u8) {
+    for ring in shape {
+        for (k, p) in ring.iter().enumerate() {
+            push_scaled(b, p.x.into(), decimals);
+            b.push(b' ');
+            push_scaled(b, p.y.into(), decimals);
+            b.extend_from_slice(if k == 0 { b" m " } else { b" l " });
+        }
+        b.extend_from_slice(b"h\n");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::runs::{check, walk};
+    use crate::{PaintFragment, Picture};
+
+    /// The shapes of the one run of `frags` (one face, one colour) on a grid of 2
+    /// decimals.
+    fn shapes_of(frags: Vec<Vec<[f64; 2]>>) -> Option<Shapes> {
+        let mut p = Picture::new(100, 100);
+        for pts in frags {
+            p.fragments
+                .push(PaintFragment::new(pts, [1.0, 0.0, 0.0, 1.0]));
+        }
+        let guard = check(&p).unwrap().guard;
+        let mut out = None;
+        walk(
+            &p,
+            &guard,
+            |_| (),
+            |run, _| {
+                out = union(run, 2, |q| q);
+                Ok(())
+            },
+        )
+        .unwrap();
+        out
+    }
+
+    fn sq(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<[f64; 2]> {
+        vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
+    }
+
+    #[test]
+    fn a_t_junction_dissolves_into_one_ring() {
+        // The left half's right edge is split by the corner the two right quarters
+        // share: a T-junction. Either turn of the pieces.
+        let mut right_top = sq(5.0, 0.0, 10.0, 5.0);
+        right_top.reverse();
+        let s = shapes_of(vec![
+            sq(0.0, 0.0, 5.0, 10.0),
+            right_top,
+            sq(5.0, 5.0, 10.0, 10.0),
+        ])
+        .unwrap();
+        assert_eq!(s.len(), 1);
+        assert_eq!(s[0].len(), 1);
+        let mut corners: Vec<(i32, i32)> = s[0][0].iter().map(|p| (p.x, p.y)).collect();
+        corners.sort();
+        assert_eq!(corners, vec![(0, 0), (0, 1000), (1000, 0), (1000, 1000)]);
+    }
+
+    #[test]
+    fn a_ring_of_pieces_keeps_its_hole() {
+        let s = shapes_of(vec![
+            sq(0.0, 0.0, 10.0, 3.0),
+            sq(0.0, 3.0, 3.0, 7.0),
+            sq(7.0, 3.0, 10.0, 7.0),
+            sq(0.0, 7.0, 10.0, 10.0),
+        ])
+        .unwrap();
+        assert_eq!(s.len(), 1);
+        assert_eq!(s[0].len(), 2, "an outer ring and a hole");
+        let area2 = |ring: &[IntPoint<i32>]| -> i64 {
+            (0..ring.len())
+                .map(|i| {
+                    let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
+                    i64::from(a.x) * i64::from(b.y) - i64::from(b.x) * i64::from(a.y)
+                })
+                .sum()
+        };
+        let (outer, hole) = (area2(&s[0][0]), area2(&s[0][1]));
+        assert_eq!(outer.abs(), 2 * 1000 * 1000);
+        assert_eq!(hole.abs(), 2 * 400 * 400);
+        assert!(outer * hole < 0, "the hole turns the other way");
+    }
+
+    #[test]
+    fn slivers_that_round_to_a_line_fill_nothing() {
+        let id = |q: [f64; 2]| q;
+        assert!(fills_nothing(
+            &[[1.0, 1.0], [2.0, 2.0], [3.001, 3.0]],
+            2,
+            id
+        ));
+        assert!(fills_nothing(
+            &[[1.0, 1.0], [1.001, 1.0], [1.0, 1.004]],
+            2,
+            id
+        ));
+        assert!(!fills_nothing(
+            &[[1.0, 1.0], [2.0, 2.0], [3.01, 3.0]],
+            2,
+            id
+        ));
+        // A bow tie has no signed area but fills two triangles.
+        let bow = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
+        assert!(!fills_nothing(&bow, 2, id));
+        let s = shapes_of(vec![
+            vec![[1.0, 1.0], [2.0, 2.0], [3.001, 3.0]],
+            vec![[5.0, 1.0], [5.0, 2.0], [5.0, 3.0]],
+        ]);
+        assert_eq!(s, Some(Vec::new()));
+    }
+
+    #[test]
+    fn disjoint_pieces_stay_apart_and_one_piece_is_left_alone() {
+        let s = shapes_of(vec![sq(0.0, 0.0, 1.0, 1.0), sq(2.0, 0.0, 3.0, 1.0)]).unwrap();
+        assert_eq!(s.len(), 2);
+        assert!(shapes_of(vec![sq(0.0, 0.0, 1.0, 1.0)]).is_none());
+    }
+}
