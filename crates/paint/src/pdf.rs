@@ -31,7 +31,10 @@
 //!   map, so the anti-aliased edges between triangles show nearly the same texels. A fill other than white is then
 //!   painted over the fragment with the blend mode `Multiply` (`/Mul gs`): fill times
 //!   texture, exact for opaque fragments; a translucent one blends twice and is counted
-//!   as approximated.
+//!   as approximated. Smoothly lit textured fragments (vertex colours) instead wait,
+//!   consecutive opaque runs together, and their triangle mesh goes over their textures
+//!   in one transparency group drawn with `/Mul gs` (inside the group the fills cover
+//!   each other as untextured layers do, so each pixel is multiplied once).
 //! - Outlines: `w`, round caps and joins and the stroke colour are set once; each run's
 //!   original edges are one path stroked with `S` right after the run's fill.
 //! - Marks: each inside `q … Q`, so they leave the fragments' state alone. Line pieces are

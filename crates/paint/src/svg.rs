@@ -47,7 +47,9 @@
 //! `opacity` when translucent, and when the fill is not white with
 //! `filter="url(#mN)"`, a `<feColorMatrix>` scaling each channel by the fill's (one
 //! filter per fill colour, written before its first use): fill times texture at every
-//! pixel. A fragment drawn as two triangles or more is first drawn whole under one
+//! pixel. Smoothly lit textured fragments (vertex colours) have no filter: the smooth
+//! fills of consecutive opaque ones are written after their textures as one
+//! `<g style="mix-blend-mode:multiply">` (a translucent one's inside its own group). A fragment drawn as two triangles or more is first drawn whole under one
 //! affine map (its first fan triangle's), so the hairlines between its triangles show
 //! nearly the same texels.
 //!
