@@ -668,3 +668,38 @@ fn image_space_renderers_light_textures_as_the_png_painter() {
         assert!(worst <= 3, "{method:?}: worst difference {worst}");
     }
 }
+
+#[test]
+fn vertex_colours_multiply_the_texture() {
+    // An unlit quad of one grey with red, green, blue and white corners: near each
+    // corner the picture is that colour times the grey (ignored, every pixel would be
+    // the grey: the test can fail).
+    let mut scene = textured_floor(1, 1.0, false, grey());
+    scene.colors = vec![
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 1.0, 1.0],
+        [0.0, 0.0, 1.0],
+    ];
+    for f in &mut scene.faces {
+        f.colors = Some(f.vertices.clone());
+    }
+    let camera = Camera::new(DVec3::new(0.0, 3.0, 0.01), DVec3::ZERO, 200, 200);
+    let pic = ordered_picture(&scene, &camera);
+    assert!(pic.has_textures());
+    let png = png_pixels(&pic);
+    let vp = camera.view_projection(0.1, 100.0);
+    for (v, want) in scene.vertices.iter().zip(&scene.colors) {
+        // 4 % of the way from the corner towards the centre.
+        let p = camera.project_with(&vp, *v * 0.96);
+        let i = 4 * (p.y as usize * 200 + p.x as usize);
+        for k in 0..3 {
+            let expected = want[k] * 202.0;
+            let got = f64::from(png[i + k]);
+            assert!(
+                (got - expected).abs() < 30.0,
+                "corner {v}: channel {k} is {got}, expected about {expected}"
+            );
+        }
+    }
+}
