@@ -79,6 +79,10 @@ impl FanPaint {
     }
 }
 
+/// What receives each part of a textured fragment: the part, its world corners and the
+/// colour its lit colours are multiplied by.
+pub(crate) type Emit<'e> = dyn FnMut(PaintFragment, &[DVec3], [f64; 3]) + 'e;
+
 /// One textured face seen by one camera: a paint per fan triangle.
 pub(crate) struct FaceTexture {
     corners: Vec<DVec3>,
@@ -161,7 +165,7 @@ impl FaceTexture {
         template: PaintFragment,
         world: &[DVec3],
         view: &Projector<'_>,
-        emit: &mut dyn FnMut(PaintFragment, &[DVec3], [f64; 3]),
+        emit: &mut Emit<'_>,
     ) {
         if self.maps.len() == 1 || world.len() != template.points.len() {
             let paint = self.maps.first().copied().unwrap_or(FanPaint::Fill);
