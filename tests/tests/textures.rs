@@ -479,3 +479,227 @@ fn image_space_renderers_sample_as_the_png_painter() {
         assert!(worst <= 1, "{method:?}: worst difference {worst}");
     }
 }
+
+/// [`textured_floor`] (lit) with vertex normals bent outwards like a dome's and
+/// `shading`: the lighting varies smoothly across every triangle.
+fn smooth_floor(cells: u32, texture: Arc<Texture>, shading: limn_scene::Shading) -> Scene {
+    let mut s = textured_floor(cells, 2.0, true, texture);
+    s.normals = s
+        .vertices
+        .iter()
+        .map(|v| DVec3::new(0.9 * v.x, 1.0, 0.9 * v.z).normalize())
+        .collect();
+    for f in &mut s.faces {
+        f.normals = Some(f.vertices.clone());
+    }
+    s.shading = Some(shading);
+    s
+}
+
+/// 2 × 2 texels of nearly one grey: the picture shows the lighting nearly alone.
+fn grey() -> Arc<Texture> {
+    let mut rgba = Vec::new();
+    for v in [200, 204, 204, 200] {
+        rgba.extend_from_slice(&[v, v, v, 255]);
+    }
+    Arc::new(Texture::new("grey", 2, 2, rgba).unwrap())
+}
+
+/// The step in the PNG pixels across the quad's diagonal (from its first to its third
+/// corner) along its middle: the largest channel difference between a pixel 2 px away
+/// on one side and its value extrapolated linearly from the other side.
+fn step_across_diagonal(png: &[u8], w: u32, camera: &Camera) -> u8 {
+    let vp = camera.view_projection(0.1, 100.0);
+    let at = |x: f64, z: f64| {
+        let p = camera.project_with(&vp, DVec3::new(x, 0.0, z));
+        [p.x, p.y]
+    };
+    // Corners 0 and 2 of the cell: (-1, 0, 1) and (1, 0, -1).
+    let (a, b) = (at(-1.0, 1.0), at(1.0, -1.0));
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len = dx.hypot(dy);
+    let (nx, ny) = (-dy / len, dx / len);
+    let pixel = |x: f64, y: f64| {
+        let i = 4 * (y as usize * w as usize + x as usize);
+        &png[i..i + 3]
+    };
+    // The pixel 2 px on one side against its value extrapolated from the pixels 2 and
+    // 6 px on the other (the lighting's own gradient taken out).
+    let mut worst = 0.0f64;
+    for k in 8..=24 {
+        let t = f64::from(k) / 32.0;
+        let (x, y) = (a[0] + t * dx, a[1] + t * dy);
+        let p = pixel(x + 2.0 * nx, y + 2.0 * ny);
+        let far = pixel(x + 6.0 * nx, y + 6.0 * ny);
+        let q = pixel(x - 2.0 * nx, y - 2.0 * ny);
+        for c in 0..3 {
+            let expected = 2.0 * f64::from(p[c]) - f64::from(far[c]);
+            worst = worst.max((f64::from(q[c]) - expected).abs());
+        }
+    }
+    worst.round() as u8
+}
+
+#[test]
+fn a_smoothly_lit_textured_quad_shows_no_diagonal() {
+    // One quad (two triangles) of one grey texel, Gouraud and Phong: across the shared
+    // diagonal the lit colour runs on, so the PNG shows no step there; drawn flat, the
+    // two triangles are lit differently and the step shows (the test can fail).
+    let camera = Camera::new(DVec3::new(0.3, 2.2, 1.2), DVec3::ZERO, 240, 180);
+    for shading in [limn_scene::Shading::Gouraud, limn_scene::Shading::Phong] {
+        let scene = smooth_floor(1, grey(), shading);
+        let o = order(&scene, &camera, &OrderOptions::default()).unwrap();
+        let pic = picture(&scene, &o, &Style::default());
+        assert!(pic.has_textures());
+        assert!(pic.fragments.iter().all(|f| f.vertex_colors.is_some()));
+        let smooth = step_across_diagonal(&png_pixels(&pic), pic.width, &camera);
+        let flat_style = Style {
+            smooth: false,
+            ..Style::default()
+        };
+        let flat = picture(&scene, &o, &flat_style);
+        let step = step_across_diagonal(&png_pixels(&flat), pic.width, &camera);
+        eprintln!("{shading:?}: {smooth} levels across the diagonal, flat {step}");
+        assert!(smooth <= 5, "{shading:?}: a step of {smooth} levels");
+        assert!(step >= 8, "flat: a step of only {step} levels");
+    }
+}
+
+#[test]
+fn smoothly_lit_textures_in_svg_and_pdf_match_the_png_painter() {
+    // The lit colours multiplied over the texture: in SVG a group with
+    // `mix-blend-mode:multiply` (resvg), in PDF a transparency group with the blend
+    // mode Multiply (ghostscript), against the PNG painter's per-pixel product. Flat
+    // shading (the colours of the triangles' centroids) is far off: the test can fail.
+    let camera = Camera::new(DVec3::new(0.0, 0.0, 2.6), DVec3::ZERO, 240, 180);
+    let (wall, outline) = textured_wall(4, true, &camera);
+    let mut scene = smooth_floor(4, checker(8), limn_scene::Shading::Gouraud);
+    scene.vertices = wall.vertices;
+    // The normals bent about the wall's own axes.
+    scene.normals = scene
+        .vertices
+        .iter()
+        .map(|v| DVec3::new(0.9 * v.x, 0.9 * v.y, 1.0).normalize())
+        .collect();
+    let mut pic = ordered_picture(&scene, &camera);
+    pic.background = Some([1.0; 4]);
+    assert!(pic.fragments.iter().any(|f| f.vertex_colors.is_some()));
+    let png = png_pixels(&pic);
+    let (svg, rendered) = svg_pixels(&pic);
+    assert!(svg.contains("mix-blend-mode:multiply"));
+    assert!(!svg.contains("<feColorMatrix"));
+    // The share only: the smooth fills themselves (untextured as well) show a dark
+    // line one pixel wide along a few shared edges in resvg and librsvg.
+    let (worst, over, compared) = compare(&png, &rendered, pic.width, &outline, MOST);
+    eprintln!("svg, Gouraud: worst {worst}, {over} of {compared} pixels above {MOST} levels");
+    assert!(compared > 10_000 && (over as f64) <= FEW * compared as f64);
+    let mut flat_scene = scene.clone();
+    flat_scene.shading = Some(limn_scene::Shading::Flat);
+    let mut flat = ordered_picture(&flat_scene, &camera);
+    flat.background = Some([1.0; 4]);
+    let (_, over, compared) = compare(&png, &svg_pixels(&flat).1, pic.width, &outline, MOST);
+    eprintln!("svg, flat: {over} of {compared} pixels above {MOST} levels");
+    assert!(
+        over as f64 > 5.0 * FEW * compared as f64,
+        "{over} of {compared}"
+    );
+    let mut pdf = Vec::new();
+    PdfPainter::default().paint(&pic, &mut pdf).unwrap();
+    assert!(String::from_utf8_lossy(&pdf).contains("/Mul gs"));
+    if let Some(rendered) = ghostscript_pixels(&pdf, "pdf") {
+        assert_agree_within(&png, &rendered, pic.width, &outline, "pdf", FEW_GHOSTSCRIPT);
+    }
+}
+
+#[test]
+fn image_space_renderers_light_textures_as_the_png_painter() {
+    // Phong: the painter's triangles are within 1/255 of per-point lighting, which the
+    // references compute at each pixel's point, times the same bilinear sample.
+    use limn_zbuffer::{edge_band, render, Method, RenderOptions};
+    let camera = Camera::new(DVec3::new(0.5, 0.6, 2.4), DVec3::ZERO, 200, 150);
+    let outline = floor_outline(&camera);
+    let scene = smooth_floor(4, checker(8), limn_scene::Shading::Phong);
+    let pic = ordered_picture(&scene, &camera);
+    let (painted, _) = PngPainter::new(PngOptions {
+        anti_alias: false,
+        ..PngOptions::default()
+    })
+    .render(&pic)
+    .unwrap();
+    let painted = painted.data();
+    // The faces' edges (Phong's triangles inside them are not edges between faces).
+    let faces = picture(
+        &scene,
+        &order(&scene, &camera, &OrderOptions::default()).unwrap(),
+        &Style {
+            smooth: false,
+            ..Style::default()
+        },
+    );
+    let mut edges = Vec::new();
+    for f in &faces.fragments {
+        let n = f.points.len();
+        for i in 0..n {
+            edges.push((f.points[i], f.points[(i + 1) % n]));
+        }
+    }
+    let band = edge_band(&edges, 200, 150, 0.5);
+    for method in [Method::ZBuffer, Method::RayCast] {
+        let r = render(&scene, &camera, method, &RenderOptions::default()).unwrap();
+        let mut compared = 0;
+        let mut worst = 0u8;
+        for (i, px) in r.color.pixels.iter().enumerate() {
+            let (x, y) = ((i as u32 % 200) as f64 + 0.5, (i as u32 / 200) as f64 + 0.5);
+            if painted[4 * i + 3] != 255
+                || band.get(x as u32, y as u32)
+                || near_outline(x, y, &outline, 1.5)
+            {
+                continue;
+            }
+            let d = (0..3)
+                .map(|k| px[k].abs_diff(painted[4 * i + k]))
+                .max()
+                .unwrap();
+            worst = worst.max(d);
+            compared += 1;
+        }
+        assert!(compared > 3000, "{compared}");
+        eprintln!("{method:?}: worst {worst} over {compared} pixels");
+        assert!(worst <= 3, "{method:?}: worst difference {worst}");
+    }
+}
+
+#[test]
+fn vertex_colours_multiply_the_texture() {
+    // An unlit quad of one grey with red, green, blue and white corners: near each
+    // corner the picture is that colour times the grey (ignored, every pixel would be
+    // the grey: the test can fail).
+    let mut scene = textured_floor(1, 1.0, false, grey());
+    scene.colors = vec![
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 1.0, 1.0],
+        [0.0, 0.0, 1.0],
+    ];
+    for f in &mut scene.faces {
+        f.colors = Some(f.vertices.clone());
+    }
+    let camera = Camera::new(DVec3::new(0.0, 3.0, 0.01), DVec3::ZERO, 200, 200);
+    let pic = ordered_picture(&scene, &camera);
+    assert!(pic.has_textures());
+    let png = png_pixels(&pic);
+    let vp = camera.view_projection(0.1, 100.0);
+    for (v, want) in scene.vertices.iter().zip(&scene.colors) {
+        // 4 % of the way from the corner towards the centre.
+        let p = camera.project_with(&vp, *v * 0.96);
+        let i = 4 * (p.y as usize * 200 + p.x as usize);
+        for k in 0..3 {
+            let expected = want[k] * 202.0;
+            let got = f64::from(png[i + k]);
+            assert!(
+                (got - expected).abs() < 30.0,
+                "corner {v}: channel {k} is {got}, expected about {expected}"
+            );
+        }
+    }
+}

@@ -42,8 +42,10 @@ pub fn losses(
     if ps.approximated > 0 {
         let what = match format {
             Format::Eps => {
-                "translucent fills or outlines: EPS has no opacity, so they are \
-                            blended with the background instead"
+                "translucent fills or outlines, or smoothly lit textured fragments: EPS \
+                            has no opacity and no blend modes, so translucent ones are \
+                            blended with the background instead and a lit texture is \
+                            multiplied by its fragment's mean lit colour"
             }
             Format::Tikz => {
                 "smoothly shaded fragments: TikZ has no triangle-mesh shading, so each \
@@ -62,21 +64,6 @@ pub fn losses(
                 Format::Tikz => "TikZ",
                 _ => "this format",
             }
-        ));
-    }
-    let tinted_textures = scene
-        .faces
-        .iter()
-        .filter(|f| {
-            f.colors.is_some()
-                && f.texcoords.is_some()
-                && scene.materials[f.material as usize].texture.is_some()
-        })
-        .count();
-    if tinted_textures > 0 {
-        out.push(format!(
-            "{tinted_textures} textured faces have vertex colours, which are not drawn over \
-             textures (the texture times the material's colour is)"
         ));
     }
     if ps.skipped > 0 {

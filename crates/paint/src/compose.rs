@@ -75,9 +75,10 @@ impl Style {
 /// once (flat, at its centroid, from the eye actually used); `illum 0` materials keep
 /// exactly their `Kd`.
 ///
-/// Textured faces (texture coordinates and a textured material) are shaded flat and
-/// their fragments carry a [`crate::TextureMap`]: the texture's colour multiplies the
-/// lit colour (as OpenGL's modulate: for `illum 0` exactly `Kd` times the texture).
+/// Textured faces (texture coordinates and a textured material) are shaded as the
+/// others (flat, Gouraud or Phong, vertex colours as a tint) and their fragments carry a
+/// [`crate::TextureMap`]: the texture's colour multiplies the lit colour at each point
+/// (as OpenGL's modulate: for `illum 0` exactly `Kd` times the texture).
 pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     let cam = &ordered.camera;
     let fills = face_fills(scene, ordered);
@@ -115,7 +116,30 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
                 Some(tex) => {
                     let (frag, use_cover) = flat_fragment(scene, style, f, cover.as_ref(), fill);
                     let world = world_of(scene, f, use_cover);
-                    tex.apply(frag, &world, &projector, &mut fragments);
+                    if one_fill(scene, style, f.face) {
+                        tex.apply(frag, &world, &projector, &mut |frag, _, _| {
+                            fragments.push(frag)
+                        });
+                    } else {
+                        // Lit smoothly (or vertex-coloured): each piece's lit colours,
+                        // which the texture multiplies.
+                        let light = FaceLight::new(scene, f.face).in_shadow_of(f.shadowed);
+                        let shading = shading_of(scene, style, f.face);
+                        tex.apply(frag, &world, &projector, &mut |frag, world, tint| {
+                            let start = fragments.len();
+                            shade_smooth(&light, shading, &view, frag, world, &mut fragments);
+                            if tint != [1.0; 3] {
+                                for p in &mut fragments[start..] {
+                                    match &mut p.vertex_colors {
+                                        Some(cs) => cs
+                                            .iter_mut()
+                                            .for_each(|c| (0..3).for_each(|k| c[k] *= tint[k])),
+                                        None => (0..3).for_each(|k| p.fill[k] *= tint[k]),
+                                    }
+                                }
+                            }
+                        });
+                    }
                 }
                 None => compose(scene, style, &view, f, cover.as_ref(), fill, &mut fragments),
             }
@@ -314,16 +338,31 @@ fn compose(
     out: &mut Vec<PaintFragment>,
 ) {
     let shading = shading_of(scene, style, f.face);
-    let (mut frag, use_cover) = flat_fragment(scene, style, f, cover, fill);
+    let (frag, use_cover) = flat_fragment(scene, style, f, cover, fill);
     if one_fill(scene, style, f.face) {
         out.push(frag);
         return;
     }
     let world = world_of(scene, f, use_cover);
     let light = FaceLight::new(scene, f.face).in_shadow_of(f.shadowed);
+    shade_smooth(&light, shading, view, frag, &world, out);
+}
+
+/// Pushes `frag` (with world corners `world`) lit by `light` under `shading` onto `out`:
+/// one fragment with vertex colours (or one fill where they all agree), or Phong's
+/// triangles; a texture map it carries stays on every part.
+fn shade_smooth(
+    light: &FaceLight<'_>,
+    shading: Shading,
+    view: &View<'_>,
+    mut frag: PaintFragment,
+    world: &[DVec3],
+    out: &mut Vec<PaintFragment>,
+) {
+    let fill = frag.fill;
     if shading == Shading::Flat {
         // Vertex colours: the flat lighting times the colour at each corner.
-        let colors = light.flat_vertex_colors(&world, view.camera.eye, fill[3]);
+        let colors = light.flat_vertex_colors(world, view.camera.eye, fill[3]);
         if colors.iter().all(|c| *c == colors[0]) {
             frag.fill = colors[0];
         } else {
@@ -333,9 +372,9 @@ fn compose(
         return;
     }
     if shading == Shading::Phong && world.len() == frag.points.len() {
-        light.phong(&frag, &world, view, out);
+        light.phong(&frag, world, view, out);
     } else {
-        frag.vertex_colors = Some(light.vertex_colors(&world, view.camera.eye, fill[3]));
+        frag.vertex_colors = Some(light.vertex_colors(world, view.camera.eye, fill[3]));
         out.push(frag);
     }
 }

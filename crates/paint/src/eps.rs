@@ -38,7 +38,10 @@
 //! LanguageLevel 2; the images are defined once in the prolog and the fill multiplies
 //! them through `/Decode` (see `eps_texture.rs`). A translucent textured fragment is
 //! flattened like a flat fill (and counted); a piece reaching more than 1024
-//! repetitions is filled with the fill times the texture's mean colour (counted).
+//! repetitions is filled with the fill times the texture's mean colour (counted). A
+//! smoothly lit textured fragment (vertex colours) multiplies its texture by the mean
+//! of its corners' colours (counted): LanguageLevel 2 has no blend mode to multiply a
+//! shading over an image.
 //!
 //! **Marks** are each painted inside `gsave … grestore`: line pieces with butt caps, round
 //! joins and `setdash`; markers as stroked or filled paths (circles with `arc`); labels
@@ -435,6 +438,17 @@ impl Painter for EpsPainter {
                     let decode = (w.quantise(lo), w.quantise(hi));
                     let mean = w.quantise(mean);
                     stats.approximated += w.textured_run(b, run, k, decode, mean);
+                    // Smoothly lit: each fragment in the mean of its corners' colours
+                    // (PostScript has no blend mode to multiply a shading over an
+                    // image).
+                    stats.approximated += run
+                        .iter()
+                        .filter(|f| {
+                            f.colors
+                                .as_ref()
+                                .is_some_and(|cs| cs.iter().any(|c| *c != cs[0]))
+                        })
+                        .count();
                 }
             }
             stats.paths += usize::from(style != Style::Flat(None));

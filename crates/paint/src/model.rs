@@ -20,11 +20,12 @@ pub struct PaintFragment {
     /// Per edge `i` (`points[i]` to `points[(i + 1) % n]`): is it an original model edge (outlined
     /// when outlines are on)?
     pub original_edges: Vec<bool>,
-    /// A texture drawn over the fragment: each point's colour is [`PaintFragment::fill`]
-    /// (RGB) times the texture's colour there; opacity stays `fill[3]`. Textured
-    /// fragments have no vertex colours. Boxed: most fragments have none, and the map
-    /// inline made every fragment 80 bytes larger (a million-face picture's fragments
-    /// and flaps, held two or three times while flaps are put in, 190 MB more).
+    /// A texture drawn over the fragment: each point's colour is its colour without the
+    /// texture ([`PaintFragment::fill`] (RGB), or the vertex colours interpolated when
+    /// there are any: a smoothly lit textured face) times the texture's colour there;
+    /// opacity stays `fill[3]`. Boxed: most fragments have none, and the map inline made
+    /// every fragment 80 bytes larger (a million-face picture's fragments and flaps,
+    /// held two or three times while flaps are put in, 190 MB more).
     pub texture: Option<Box<TextureMap>>,
     /// Whether this is a seam flap of the fragment of the same face painted before it
     /// (see [`crate::seam_flaps`]): it lies inside a fragment painted later, so it
@@ -167,8 +168,8 @@ impl Picture {
         }
     }
 
-    /// The picture with every textured fragment filled flat with its fill times its
-    /// texture's mean colour, and no textures: what the writers that draw no images
+    /// The picture with every textured fragment filled with its fill (or its vertex
+    /// colours) times its texture's mean colour, and no textures: what the writers that draw no images
     /// paint (they report it as approximated).
     pub fn textures_flattened(&self) -> Picture {
         let means: Vec<[f64; 3]> = self.textures.iter().map(|t| t.mean()).collect();
@@ -179,6 +180,11 @@ impl Picture {
                 let m = means.get(t.texture as usize).copied().unwrap_or([1.0; 3]);
                 for (c, m) in f.fill.iter_mut().zip(m) {
                     *c *= m;
+                }
+                for vc in f.vertex_colors.iter_mut().flatten() {
+                    for (c, m) in vc.iter_mut().zip(m) {
+                        *c *= m;
+                    }
                 }
             }
         }

@@ -31,7 +31,10 @@
 //!   map, so the anti-aliased edges between triangles show nearly the same texels. A fill other than white is then
 //!   painted over the fragment with the blend mode `Multiply` (`/Mul gs`): fill times
 //!   texture, exact for opaque fragments; a translucent one blends twice and is counted
-//!   as approximated.
+//!   as approximated. Smoothly lit textured fragments (vertex colours) instead wait,
+//!   consecutive opaque runs together, and their triangle mesh goes over their textures
+//!   in one transparency group drawn with `/Mul gs` (inside the group the fills cover
+//!   each other as untextured layers do, so each pixel is multiplied once).
 //! - Outlines: `w`, round caps and joins and the stroke colour are set once; each run's
 //!   original edges are one path stroked with `S` right after the run's fill.
 //! - Marks: each inside `q … Q`, so they leave the fragments' state alone. Line pieces are
@@ -91,8 +94,8 @@ impl PdfPainter {
 enum Style {
     Flat([u32; 3], u16),
     Gouraud(u16),
-    /// Texture index, fill and opacity.
-    Textured(u32, [u32; 3], u16),
+    /// Texture index, fill (`None`: the vertex colours, smooth) and opacity.
+    Textured(u32, Option<[u32; 3]>, u16),
 }
 
 /// A type-4 shading waiting to be written.
@@ -202,10 +205,17 @@ impl Content {
         }
     }
 
-    /// A run of textured fragments with texture `k` and fill `rgb` (see the module
-    /// docs), inside `q … Q`; returns how many fragments are approximated.
-    fn textured_run(&mut self, run: &[Frag<'_>], k: u32, rgb: [u32; 3], mean: [f64; 3]) -> usize {
-        let fill = run[0].src.fill;
+    /// A run of textured fragments with texture `k` and fill `rgb` (`None`: their
+    /// vertex colours; see the module docs), inside `q … Q`; returns how many fragments
+    /// are approximated.
+    fn textured_run(
+        &mut self,
+        run: &[Frag<'_>],
+        k: u32,
+        rgb: Option<[u32; 3]>,
+        mean: [f64; 3],
+    ) -> usize {
+        let fill = run[0].flat_rgb();
         let size = (self.images[k as usize].1, self.images[k as usize].2);
         let flat = self.quantise([0, 1, 2].map(|i| fill[i] * mean[i]));
         let polys: Vec<Vec<[f64; 2]>> = run
@@ -271,6 +281,12 @@ impl Content {
             approximated += usize::from(flat);
         }
         let white = self.quantise([1.0; 3]);
+        let Some(rgb) = rgb else {
+            // Smoothly lit: the caller multiplies the lit colours over the texture
+            // (`lit_layer`).
+            self.buf.extend_from_slice(b"Q\n");
+            return approximated;
+        };
         if rgb != white {
             self.buf.extend_from_slice(b"/Mul gs ");
             self.multiply = true;
@@ -291,6 +307,20 @@ impl Content {
         self.buf.extend_from_slice(b"Q\n");
         // Q restored the colour set before the run.
         approximated
+    }
+
+    /// The lit colours of smoothly lit textured runs (`frags`, painted just before with
+    /// their textures) as one triangle mesh in a transparency group, multiplied over
+    /// the textures (`/Mul gs`): inside the group the fills are composited as an
+    /// untextured smooth layer is, so each pixel is multiplied once.
+    fn lit_layer(&mut self, frags: &[Frag<'_>]) {
+        if frags.is_empty() {
+            return;
+        }
+        self.multiply = true;
+        self.buf.extend_from_slice(b"q /Mul gs ");
+        self.gouraud_run(frags, true);
+        self.buf.extend_from_slice(b"Q\n");
     }
 
     /// Sets the stroke colour and line width, writing only what changes.
@@ -358,8 +388,10 @@ impl Content {
         let group = group.then(|| {
             let main = std::mem::take(&mut self.buf);
             for f in run {
-                for (k, p) in f.points.iter().enumerate() {
-                    self.point(*p);
+                // Every subpath turning one way: the non-zero rule fills their union
+                // (overlapping seam flaps included).
+                for (k, p) in f.oriented(f.area2() < 0.0).enumerate() {
+                    self.point(p);
                     self.buf
                         .extend_from_slice(if k == 0 { b" m " } else { b" l " });
                 }
@@ -476,7 +508,11 @@ impl Painter for PdfPainter {
         let key = |f: &Frag<'_>| {
             let a = alpha_milli(f.alpha());
             if let Some(t) = &f.src.texture {
-                return Style::Textured(t.texture, f.flat_rgb().map(|v| channel_fixed(v, cd)), a);
+                let fill = match f.colors {
+                    Some(_) => None,
+                    None => Some(f.flat_rgb().map(|v| channel_fixed(v, cd))),
+                };
+                return Style::Textured(t.texture, fill, a);
             }
             match f.colors {
                 Some(_) => Style::Gouraud(a),
@@ -498,8 +534,21 @@ impl Painter for PdfPainter {
                 }
             }
         };
+        // Opaque smoothly lit textured runs: textures painted as they come, their lit
+        // colours waiting here for one multiplied group (`lit_layer`) before anything
+        // else is painted.
+        let lit: RefCell<Vec<Frag<'p>>> = RefCell::new(Vec::new());
+        let flush_lit = |c: &mut Content| {
+            let mut lit = lit.borrow_mut();
+            c.lit_layer(&lit);
+            lit.clear();
+        };
         let on_run = |run: &[Frag<'p>], style: &Style| {
             let mut c = c.borrow_mut();
+            let lit_run = matches!(*style, Style::Textured(_, None, a) if a >= 1000);
+            if !lit_run || !layer.borrow().clear_of(run) {
+                flush_lit(&mut c);
+            }
             if let Style::Gouraud(a) = *style {
                 if a < 1000 && checked.outline.is_none() {
                     let key = (run[0].src.object, a);
@@ -526,6 +575,17 @@ impl Painter for PdfPainter {
                     c.fill_alpha(a);
                     let approximated = c.textured_run(run, k, rgb, means[k as usize]);
                     stats.borrow_mut().approximated += approximated;
+                    if rgb.is_none() {
+                        lit.borrow_mut().extend(run.iter().cloned());
+                        if !lit_run || checked.outline.is_some() {
+                            // Translucent: blended at once (counted as approximated);
+                            // outlined: the outline goes over the lit texture.
+                            flush_lit(&mut c);
+                        }
+                        if !lit_run {
+                            stats.borrow_mut().approximated += run.len();
+                        }
+                    }
                 }
             }
             let mut stats = stats.borrow_mut();
@@ -538,6 +598,7 @@ impl Painter for PdfPainter {
         };
         let on_mark = |m: &super::Mark| {
             let mut c = c.borrow_mut();
+            flush_lit(&mut c);
             flush_layer(&mut c, &mut stats.borrow_mut());
             paint_mark(m, &checked.guard, &mut *c, &mut stats.borrow_mut())
         };
@@ -551,6 +612,7 @@ impl Painter for PdfPainter {
         )?;
         let mut c = c.into_inner();
         let mut stats = stats.into_inner();
+        flush_lit(&mut c);
         flush_layer(&mut c, &mut stats);
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;

@@ -18,7 +18,8 @@
 //! barycentric coordinates clamped to it. Opacity is applied on top, source-over.
 //!
 //! **Textured** fragments are filled the same way (coverage from the run's mask), each
-//! pixel's colour being the fill times the texture sampled at the texture coordinates of
+//! pixel's colour being the fill (a smoothly lit one's vertex colours interpolated as
+//! above) times the texture sampled at the texture coordinates of
 //! the pixel's centre under the fragment's projective map (perspective-correct, bilinear,
 //! repeating). With supersampling, each sample is textured and the samples averaged.
 
@@ -424,7 +425,8 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
     }
 }
 
-/// Fills `path` (the run's union) with each fragment's fill times its texture, sampled
+/// Fills `path` (the run's union) with each fragment's fill (or its vertex colours
+/// interpolated in its fan triangle) times its texture, sampled
 /// per pixel centre through the fragment's map; a pixel whose centre lies in no fragment
 /// (the anti-aliased rim) takes the fragment whose fan triangle is nearest.
 fn textured(
@@ -450,15 +452,16 @@ fn textured(
     };
     let shift = Transform::from_translate(-(x0 as f32), -(y0 as f32));
     mask.fill_path(path, FillRule::Winding, aa, shift);
-    // Fan triangles of every fragment, each with its fragment's index.
-    let mut tris: Vec<([[f64; 2]; 3], f64, usize)> = Vec::new();
+    // Fan triangles of every fragment, each with its fragment's index and its second
+    // corner's.
+    let mut tris: Vec<([[f64; 2]; 3], f64, usize, usize)> = Vec::new();
     for (k, f) in run.iter().enumerate() {
         for i in 1..f.points.len() - 1 {
             let p = [f.points[0], f.points[i], f.points[i + 1]];
             let det = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1])
                 - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
             if det != 0.0 && det.is_finite() {
-                tris.push((p, 1.0 / det, k));
+                tris.push((p, 1.0 / det, k, i));
             }
         }
     }
@@ -475,21 +478,35 @@ fn textured(
             }
             let px = f64::from(i) + 0.5;
             // The fragment whose fan triangle holds the centre (or comes nearest).
-            let mut best = (f64::NEG_INFINITY, 0usize);
-            for (t, inv_det, k) in &tris {
+            let mut best = (f64::NEG_INFINITY, 0usize, 1usize, [1.0, 0.0, 0.0]);
+            for (t, inv_det, k, corner) in &tris {
                 let [a, b, c] = *t;
                 let l1 = ((px - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (py - a[1])) * inv_det;
                 let l2 = ((b[0] - a[0]) * (py - a[1]) - (px - a[0]) * (b[1] - a[1])) * inv_det;
                 let score = (1.0 - l1 - l2).min(l1).min(l2);
                 if score > best.0 {
-                    best = (score, *k);
+                    best = (score, *k, *corner, [1.0 - l1 - l2, l1, l2]);
                 }
                 if score >= 0.0 {
                     break;
                 }
             }
             let f = &run[best.1];
-            let fill = f.src.fill;
+            // The colour without the texture: the fill, or the vertex colours
+            // interpolated (weights clamped to the triangle for the rim).
+            let fill = match &f.colors {
+                None => f.src.fill,
+                Some(cs) => {
+                    let l = best.3.map(|v: f64| v.max(0.0));
+                    let sum = (l[0] + l[1] + l[2]).max(f64::MIN_POSITIVE);
+                    let at = [0, best.2, best.2 + 1];
+                    let mut c = [0.0; 4];
+                    for k in 0..3 {
+                        c[k] = (0..3).map(|j| l[j] * cs[at[j]][k]).sum::<f64>() / sum;
+                    }
+                    c
+                }
+            };
             let c = match &f.src.texture {
                 Some(map) => {
                     let tex = &textures[map.texture as usize];

@@ -47,7 +47,9 @@
 //! `opacity` when translucent, and when the fill is not white with
 //! `filter="url(#mN)"`, a `<feColorMatrix>` scaling each channel by the fill's (one
 //! filter per fill colour, written before its first use): fill times texture at every
-//! pixel. A fragment drawn as two triangles or more is first drawn whole under one
+//! pixel. Smoothly lit textured fragments (vertex colours) have no filter: the smooth
+//! fills of consecutive opaque ones are written after their textures as one
+//! `<g style="mix-blend-mode:multiply">` (a translucent one's inside its own group). A fragment drawn as two triangles or more is first drawn whole under one
 //! affine map (its first fan triangle's), so the hairlines between its triangles show
 //! nearly the same texels.
 //!
@@ -110,7 +112,7 @@ impl SvgPainter {
 /// Smooth fragments of one face (and their seam flaps) are one run whatever their
 /// colours: the run is drawn as a whole (see `svg_smooth_run.rs`).
 fn style_key(f: &Frag<'_>) -> ([u8; 3], u16, bool, Option<u32>) {
-    let smooth = f.colors.is_some() && f.src.texture.is_none();
+    let smooth = f.colors.is_some();
     (
         if smooth { [0; 3] } else { rgb_u8(f.flat_rgb()) },
         alpha_milli(f.alpha()),
@@ -256,11 +258,41 @@ impl Painter for SvgPainter {
             }
             Ok(())
         };
+        // Opaque smoothly lit textured runs: their textures are written as they come,
+        // their smooth fills wait here and go out as one group multiplied over them
+        // (`mix-blend-mode:multiply`) before anything else is written. Inside the group
+        // the fills are composited as untextured smooth runs are (seams closed by
+        // flaps), so the lit colour multiplies each pixel once.
+        let lit: RefCell<Vec<Vec<Frag<'p>>>> = RefCell::new(Vec::new());
+        let flush_lit = |sink: &mut Sink<'_>, stats: &mut PaintStats| {
+            let mut lit = lit.borrow_mut();
+            if lit.is_empty() {
+                return;
+            }
+            let b = &mut sink.buf;
+            b.extend_from_slice(b"<g style=\"mix-blend-mode:multiply\">\n");
+            let mut g = gradients.get();
+            for run in lit.iter() {
+                stats.paths += svg_smooth_run::write(b, run, 1000, tolerance, d, &mut g, false);
+            }
+            gradients.set(g);
+            b.extend_from_slice(b"</g>\n");
+            lit.clear();
+        };
         let on_run = |run: &[Frag<'p>], key: &([u8; 3], u16, bool, Option<u32>)| {
             let (rgb, alpha, smooth, texture) = *key;
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
-            if smooth && alpha < 1000 && checked.outline.is_none() {
+            let lit_run = smooth && texture.is_some() && alpha >= 1000;
+            // Anything else written first: the waiting lit fills go out before it.
+            if !lit_run
+                || !batch.borrow().is_empty()
+                || !layer.borrow().clear_of(run)
+                || group.get() != Some(run[0].src.object)
+            {
+                flush_lit(&mut sink, &mut stats);
+            }
+            if smooth && texture.is_none() && alpha < 1000 && checked.outline.is_none() {
                 send(&mut sink, &mut stats)?;
                 let key = (run[0].src.object, alpha);
                 if !layer.borrow_mut().join(key, run) {
@@ -289,9 +321,16 @@ impl Painter for SvgPainter {
             let b = &mut sink.buf;
             enter(b, run[0].src.object);
             if let Some(k) = texture {
-                stats.paths += textured
-                    .borrow_mut()
-                    .run(b, run, k, alpha, means[k as usize], d);
+                let mut g = gradients.get();
+                let inside = (smooth && !lit_run).then_some((tolerance, &mut g));
+                stats.paths +=
+                    textured
+                        .borrow_mut()
+                        .run(b, run, k, alpha, means[k as usize], d, inside);
+                gradients.set(g);
+                if lit_run {
+                    lit.borrow_mut().push(run.to_vec());
+                }
             } else {
                 let mut g = gradients.get();
                 stats.paths += svg_smooth_run::write(b, run, alpha, tolerance, d, &mut g, merge);
@@ -301,6 +340,9 @@ impl Painter for SvgPainter {
                 .outline
                 .filter(|_| run.iter().any(Frag::has_outline));
             if let Some(o) = outlined {
+                // Over the lit texture.
+                flush_lit(&mut sink, &mut stats);
+                let b = &mut sink.buf;
                 write_outline(b, run, o, seams > 0.0, d);
                 stats.strokes += 1;
             }
@@ -309,6 +351,7 @@ impl Painter for SvgPainter {
         };
         let on_mark = |m: &super::Mark| {
             let mut sink = sink.borrow_mut();
+            flush_lit(&mut sink, &mut stats.borrow_mut());
             flush_layer(&mut sink, &mut stats.borrow_mut())?;
             send(&mut sink, &mut stats.borrow_mut())?;
             enter(&mut sink.buf, m.object);
@@ -330,6 +373,7 @@ impl Painter for SvgPainter {
         )?;
         let mut sink = sink.into_inner();
         let mut stats = stats.into_inner();
+        flush_lit(&mut sink, &mut stats);
         flush_layer(&mut sink, &mut stats)?;
         send(&mut sink, &mut stats)?;
         stats.approximated += textured.into_inner().approximated;

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use super::number::{push_hex_color, push_num, push_uint, rgb_u8};
 use super::runs::{reversals, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over, AffinePiece};
-use super::{texture_images, PaintError, Texture};
+use super::{svg_smooth_run, texture_images, PaintError, Texture};
 
 /// Ids handed out while writing: clip paths and colour filters.
 #[derive(Default)]
@@ -69,6 +69,11 @@ fn rect_attrs(b: &mut Vec<u8>, r: [f64; 4]) {
 impl SvgTextures {
     /// Writes a run of textured fragments with texture `k` (opacity in thousandths,
     /// `mean` the texture's mean colour); returns the number of elements drawn.
+    /// Fragments with vertex colours (smoothly lit) get no colour filter: their smooth
+    /// fill is multiplied over the texture (`mix-blend-mode:multiply`), here when `lit`
+    /// (the smooth tolerance and the gradient counter) is given (inside the group, a
+    /// translucent run's), else by the caller over a batch of runs.
+    #[allow(clippy::too_many_arguments)]
     pub fn run(
         &mut self,
         b: &mut Vec<u8>,
@@ -77,12 +82,13 @@ impl SvgTextures {
         alpha: u16,
         mean: [f64; 3],
         d: u8,
+        lit: Option<(f64, &mut u64)>,
     ) -> usize {
-        let fill = run[0].src.fill;
-        let rgb = rgb_u8([fill[0], fill[1], fill[2]]);
+        let rgb = rgb_u8(run[0].flat_rgb());
         // Fill times texture: a colour matrix over the group (exact at every pixel,
         // edges included).
-        let filter = (rgb != [255; 3]).then(|| {
+        let smooth = run.iter().any(|f| f.colors.is_some());
+        let filter = (rgb != [255; 3] && !smooth).then(|| {
             let next = self.filters.len();
             let id = *self.filters.entry(rgb).or_insert(next);
             if id == next {
@@ -143,6 +149,13 @@ impl SvgTextures {
             for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
                 drawn += self.clipped(b, std::slice::from_ref(&p.points), &p, k, mean, d);
             }
+        }
+        if let Some((tolerance, gradients)) = lit {
+            // The lit colours as the untextured face's smooth fill, multiplied over the
+            // texture inside the group (blended once with the opacity).
+            b.extend_from_slice(b"<g style=\"mix-blend-mode:multiply\">\n");
+            drawn += svg_smooth_run::write(b, run, 1000, tolerance, d, gradients, false);
+            b.extend_from_slice(b"</g>\n");
         }
         b.extend_from_slice(b"</g>\n");
         drawn

@@ -61,8 +61,9 @@ enum FanPaint {
 }
 
 impl FanPaint {
-    /// `f` painted this way.
-    fn paint(self, mut f: PaintFragment) -> PaintFragment {
+    /// `f` painted this way, and the colour its lit colours are multiplied by (the
+    /// collapsed texture's, already applied to the fill; white otherwise).
+    fn paint(self, mut f: PaintFragment) -> (PaintFragment, [f64; 3]) {
         match self {
             FanPaint::Map(m) => f.texture = Some(Box::new(m)),
             FanPaint::Flat(c) => {
@@ -70,12 +71,17 @@ impl FanPaint {
                 for (v, c) in f.fill.iter_mut().zip(c) {
                     *v *= c;
                 }
+                return (f, c);
             }
             FanPaint::Fill => f.texture = None,
         }
-        f
+        (f, [1.0; 3])
     }
 }
+
+/// What receives each part of a textured fragment: the part, its world corners and the
+/// colour its lit colours are multiplied by.
+pub(crate) type Emit<'e> = dyn FnMut(PaintFragment, &[DVec3], [f64; 3]) + 'e;
 
 /// One textured face seen by one camera: a paint per fan triangle.
 pub(crate) struct FaceTexture {
@@ -148,20 +154,23 @@ impl FaceTexture {
         }
     }
 
-    /// Appends `template` (a fragment of the face with world corners `world`) with its
-    /// texture map: whole when the face is a triangle or the fragment lies in one fan
-    /// triangle, else cut along the fan's diagonals. Pieces whose map is undefined (a
-    /// face seen edge-on) keep the flat fill.
+    /// Hands `template` (a fragment of the face with world corners `world`) with its
+    /// texture map to `emit`, with its world corners and the colour its lit colours are
+    /// to be multiplied by (a collapsed texture's; white otherwise): whole when the face
+    /// is a triangle or the fragment lies in one fan triangle, else cut along the fan's
+    /// diagonals. Pieces whose map is undefined (a face seen edge-on) keep the flat
+    /// fill.
     pub fn apply(
         &self,
         template: PaintFragment,
         world: &[DVec3],
         view: &Projector<'_>,
-        out: &mut Vec<PaintFragment>,
+        emit: &mut Emit<'_>,
     ) {
         if self.maps.len() == 1 || world.len() != template.points.len() {
             let paint = self.maps.first().copied().unwrap_or(FanPaint::Fill);
-            out.push(paint.paint(template));
+            let (frag, tint) = paint.paint(template);
+            emit(frag, world, tint);
             return;
         }
         let start: Vec<Corner> = (0..world.len())
@@ -187,11 +196,13 @@ impl FaceTexture {
             if poly.len() < 3 {
                 continue;
             }
-            out.push(map.paint(PaintFragment {
+            let (frag, tint) = map.paint(PaintFragment {
                 points: poly.iter().map(|v| v.screen).collect(),
                 original_edges: poly.iter().map(|v| v.edge).collect(),
                 ..template.clone()
-            }));
+            });
+            let world: Vec<DVec3> = poly.iter().map(|v| v.world).collect();
+            emit(frag, &world, tint);
         }
     }
 

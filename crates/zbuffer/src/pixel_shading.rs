@@ -4,9 +4,10 @@
 //! corners' colours with the point's barycentric weights (perspective-correct, as
 //! they are taken in world space), Phong interpolates the normals and lights the point.
 //! Flat faces keep their one colour. Textured faces (texture coordinates and a textured
-//! material) are shaded flat, as the painter draws them, times the texture sampled at
-//! the point's texture coordinates (bilinear, repeating; perspective-correct, as they
-//! are interpolated in world space). A face with vertex colours is tinted at the point
+//! material) are shaded as the others (flat, Gouraud or Phong, vertex colours as a
+//! tint), as the painter draws them, times the texture sampled at the point's texture
+//! coordinates (bilinear, repeating; perspective-correct, as they are interpolated in
+//! world space). A face with vertex colours is tinted at the point
 //! by its interpolated colour (Phong), or interpolates its corners' tinted colours
 //! (Gouraud; lit flat, the corners' colours are the flat lighting times their vertex
 //! colours), as the painter draws it. Nothing here runs when no face is smooth,
@@ -85,14 +86,13 @@ pub(crate) fn shade(
                 return flat(i, id);
             };
             let m = &scene.materials[scene.faces[id as usize].material as usize];
-            let c = if let Some((tex, flat)) = &s.texture {
-                let t = tex.color_at(p);
-                let flat = if set.is_empty() {
+            let c = if let (Some((_, flat)), true, None) = (&s.texture, s.flat, &s.colors) {
+                // Textured, lit flat, no vertex colours: the face's one colour.
+                if set.is_empty() {
                     *flat
                 } else {
                     shade_face_in_shadow(scene, id, eye, set)
-                };
-                [0, 1, 2].map(|k| flat[k] * t[k])
+                }
             } else if s.phong {
                 let n = s.normals.as_ref().and_then(|ns| ns.at(p)).unwrap_or(s.side);
                 let tint = s.colors.as_ref().map_or([1.0; 3], |c| c.at(p));
@@ -113,6 +113,14 @@ pub(crate) fn shade(
                     None => return flat(i, id),
                 }
             };
+            // Textured: the lit colour times the texture.
+            let c = match &s.texture {
+                Some((tex, _)) => {
+                    let t = tex.color_at(p);
+                    [0, 1, 2].map(|k| c[k] * t[k])
+                }
+                None => c,
+            };
             rgb_to_u8(c)
         })
         .collect()
@@ -121,28 +129,10 @@ pub(crate) fn shade(
 fn smooth_face(scene: &Scene, face: u32, eye: DVec3) -> Option<Smooth> {
     let f = &scene.faces[face as usize];
     let m = &scene.materials[f.material as usize];
-    if let Some(tex) = FaceTexcoords::new(scene, face) {
-        let side = polygon_normal(tex.corners());
-        if side.length_squared() == 0.0 {
-            return None;
-        }
-        let origin = tex.corners().iter().copied().sum::<DVec3>() / tex.corners().len() as f64;
-        return Some(Smooth {
-            phong: false,
-            texture: Some((tex, shade_face(scene, face, eye))),
-            normals: None,
-            colors: None,
-            flat: true,
-            corners: Vec::new(),
-            corner_colors: Vec::new(),
-            side,
-            origin,
-            eye,
-        });
-    }
+    let texture = FaceTexcoords::new(scene, face);
     let colors = FaceColors::new(scene, face);
     let (phong, flat) = match Shading::of_face(scene.shading, f, m) {
-        Shading::Flat if colors.is_some() => (false, true),
+        Shading::Flat if colors.is_some() || texture.is_some() => (false, true),
         Shading::Flat => return None,
         Shading::Gouraud => (false, false),
         Shading::Phong => (true, false),
@@ -160,7 +150,7 @@ fn smooth_face(scene: &Scene, face: u32, eye: DVec3) -> Option<Smooth> {
     let origin = corners.iter().copied().sum::<DVec3>() / corners.len() as f64;
     let mut s = Smooth {
         phong,
-        texture: None,
+        texture: texture.map(|t| (t, shade_face(scene, face, eye))),
         normals,
         colors,
         flat,
