@@ -68,11 +68,8 @@ MATPLOTLIB_WRONG = {
     "surface3d_radial": ("seams", SEAMS),
     "surface3d_simple": ("seams", SEAMS),
     "trisurf3d": ("seams", SEAMS),
-    "trisurf3d_2": ("seams", SEAMS),
     "trisurf3d_simple": ("seams", SEAMS),
     "voxels_simple": ("seams", SEAMS),
-    "voxels_rgb": ("seams", SEAMS),
-    "imshow3d": ("seams", "the image's pixels are abutting polygons: " + SEAMS),
     # Data drawn with axlim_clip=False and quiver arrows reach out of the box.
     "axlim_clip": ("panes", PANES),
     "quiver3d_simple": ("panes", PANES),
