@@ -407,7 +407,7 @@ mod tests {
 
     #[test]
     fn a_split_flat_face_is_written_once_as_its_cover() {
-        // An L-shaped hexagon (cut into triangles) and, beside it, a square: the L's
+        // An L-shaped hexagon (cut into two convex pieces) and, beside it, a square: the L's
         // pieces come one after another, the first painted as the whole L, the others
         // left out; with outlines every piece stays (its strokes go over the cover).
         let mut s = Scene::default();
