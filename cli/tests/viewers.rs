@@ -451,6 +451,39 @@ fn sphere_in_viewers(base: &str, input: &str, extra: &[&str]) {
     agrees_in_viewers(dir.path(), base, &a, Page::LeftOut);
 }
 
+/// A flat grid of 12 × 12 squares whose corners are coloured (x, y, 0.5): the colours of
+/// no triangle lie on one line, so SVG paints each as three channel ramps added together.
+fn channel_grid_obj() -> String {
+    let n = 12;
+    let mut s = String::new();
+    for i in 0..=n {
+        for j in 0..=n {
+            let (x, y) = (i as f64 / n as f64, j as f64 / n as f64);
+            s += &format!("v {} {} 0 {x} {y} 0.5\n", 2.0 * x - 1.0, 2.0 * y - 1.0);
+        }
+    }
+    for i in 0..n {
+        for j in 0..n {
+            let a = i * (n + 1) + j + 1;
+            let b = a + n + 1;
+            s += &format!("f {a} {b} {}\nf {a} {} {}\n", b + 1, b + 1, a + 1);
+        }
+    }
+    s
+}
+
+#[test]
+fn unrelated_corner_colours_show_no_lines_in_every_viewer() {
+    let dir = tempdir();
+    put(dir.path(), "grid.obj", channel_grid_obj());
+    agrees_in_viewers(
+        dir.path(),
+        "channels",
+        &["grid.obj", "--size", "400x300"],
+        Page::LeftOut,
+    );
+}
+
 #[test]
 fn a_gouraud_sphere_is_seamless_in_every_viewer() {
     sphere_in_viewers("gouraud", "sphere.obj", &[]);

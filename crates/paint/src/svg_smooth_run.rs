@@ -423,9 +423,13 @@ fn write_flat_or_gradient(
 }
 
 /// Writes `polygons` filled with the sum of three channel ramps (see
-/// [`crate::svg_smooth`]): an isolated group (with the opacity, when below 1) of the
-/// same path three times, the red ramp, then the green and blue ones blended with
-/// `lighten`.
+/// [`crate::svg_smooth`]): an isolated group, clipped to the polygons (with the opacity,
+/// when below 1), of one rectangle three times, the red ramp, then the green and blue
+/// ones blended with `lighten`. The ramps fill a rectangle a pixel wider than the
+/// polygons, so inside the clip every pixel is fully covered by all three and only the
+/// clip is anti-aliased: three anti-aliased fills of the polygons themselves would each
+/// blend their partial coverage at the edges, darkening them (a dark line along every
+/// edge such a piece shares with another).
 fn write_channels(
     b: &mut Vec<u8>,
     ramps: &[svg_smooth::Ramp; 3],
@@ -434,13 +438,31 @@ fn write_channels(
     d: u8,
     gradients: &mut u64,
 ) {
-    b.extend_from_slice(b"<g style=\"isolation:isolate\"");
+    let clip = *gradients;
+    b.extend_from_slice(b"<clipPath id=\"c");
+    push_uint(b, clip);
+    b.extend_from_slice(b"\"><path d=\"");
+    for p in polygons {
+        push_polygon(b, p, d);
+    }
+    b.extend_from_slice(b"\"/></clipPath>\n<g clip-path=\"url(#c");
+    push_uint(b, clip);
+    b.extend_from_slice(b")\"");
     if alpha < 1000 {
         b.extend_from_slice(b" opacity=\"");
         push_milli(b, alpha);
         b.push(b'"');
     }
-    b.extend_from_slice(b">\n");
+    b.extend_from_slice(b"><g style=\"isolation:isolate\">\n");
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in polygons.iter().flat_map(|p| p.iter()) {
+        for k in 0..2 {
+            lo[k] = lo[k].min(q[k]);
+            hi[k] = hi[k].max(q[k]);
+        }
+    }
+    let (x0, y0) = ((lo[0] - 1.0).floor(), (lo[1] - 1.0).floor());
+    let (x1, y1) = ((hi[0] + 1.0).ceil(), (hi[1] + 1.0).ceil());
     for (k, r) in ramps.iter().enumerate() {
         let colour = |v: f64| {
             let mut c = [0.0; 3];
@@ -461,10 +483,14 @@ fn write_channels(
         push_hex_color(b, colour(r.v0));
         b.extend_from_slice(b"\"/><stop offset=\"1\" stop-color=\"");
         push_hex_color(b, colour(r.v1));
-        b.extend_from_slice(b"\"/></linearGradient>\n<path d=\"");
-        for p in polygons {
-            push_polygon(b, p, d);
-        }
+        b.extend_from_slice(b"\"/></linearGradient>\n<rect x=\"");
+        push_num(b, x0, 0);
+        b.extend_from_slice(b"\" y=\"");
+        push_num(b, y0, 0);
+        b.extend_from_slice(b"\" width=\"");
+        push_num(b, x1 - x0, 0);
+        b.extend_from_slice(b"\" height=\"");
+        push_num(b, y1 - y0, 0);
         b.extend_from_slice(b"\" fill=\"url(#s");
         push_uint(b, *gradients);
         b.extend_from_slice(b")\"");
@@ -474,7 +500,7 @@ fn write_channels(
         b.extend_from_slice(b"/>\n");
         *gradients += 1;
     }
-    b.extend_from_slice(b"</g>\n");
+    b.extend_from_slice(b"</g></g>\n");
 }
 
 /// ` fill-opacity="a"` when the opacity is below 1.
@@ -567,11 +593,21 @@ mod tests {
         f.fill[3] = 0.5;
         let (svg, paths) = written(vec![f], 500);
         assert_eq!(paths, 1);
+        // Clipped to the triangle, then the three ramps on one rectangle a pixel wider.
+        assert!(svg.starts_with("<clipPath id=\"c0\"><path d=\"M"), "{svg}");
         assert!(
-            svg.starts_with("<g style=\"isolation:isolate\" opacity=\"0.5\">\n"),
+            svg.contains(
+                "<g clip-path=\"url(#c0)\" opacity=\"0.5\"><g style=\"isolation:isolate\">\n"
+            ),
             "{svg}"
         );
-        assert_eq!(svg.matches("<path").count(), 3);
+        assert_eq!(svg.matches("<path").count(), 1);
+        assert_eq!(
+            svg.matches("<rect x=\"-1\" y=\"-1\" width=\"62\" height=\"62\"")
+                .count(),
+            3,
+            "{svg}"
+        );
         assert_eq!(svg.matches("mix-blend-mode:lighten").count(), 2);
         // Red runs from the first corner (full) to the opposite edge (none).
         assert!(svg.contains("x1=\"30\" y1=\"30\" x2=\"0\" y2=\"0\"><stop stop-color=\"#000000\"/><stop offset=\"1\" stop-color=\"#ff0000\"/>"), "{svg}");
