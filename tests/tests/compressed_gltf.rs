@@ -1,8 +1,9 @@
 //! Compressed glTF files as packers write them (`tests/models/`, see its README): the
 //! glTF sample Box Textured packed by gltfpack (`KHR_mesh_quantization` with
 //! `KHR_texture_transform`, `EXT_meshopt_compression`) draws the same picture as the
-//! plain file; compressed by glTF-Transform with Draco, it is refused naming the
-//! extension first.
+//! plain file, and so does the same compressed by glTF-Transform with Draco
+//! (`KHR_draco_mesh_compression`); a Draco stream cut short is an error naming the
+//! extension and the primitive.
 
 use std::path::{Path, PathBuf};
 
@@ -34,7 +35,11 @@ fn packed_boxes_draw_the_plain_box() {
     let plain = read("BoxTextured.glb");
     let camera = Camera::framing(&plain, 240, 180).unwrap();
     let want = drawn(&plain, &camera);
-    for name in ["BoxTextured-quantized.glb", "BoxTextured-meshopt.glb"] {
+    for name in [
+        "BoxTextured-quantized.glb",
+        "BoxTextured-meshopt.glb",
+        "BoxTextured-draco.glb",
+    ] {
         let s = read(name);
         assert!(s.warnings.is_empty(), "{name}: {:?}", s.warnings);
         assert_eq!(s.faces.len(), plain.faces.len(), "{name}");
@@ -51,11 +56,22 @@ fn packed_boxes_draw_the_plain_box() {
 }
 
 #[test]
-fn draco_is_refused_naming_the_extension_first() {
-    let e = load(&model("BoxTextured-draco.glb"), &LoadOptions::default())
+fn a_draco_stream_cut_short_is_an_error_naming_the_extension() {
+    // The Draco stream (233 bytes, after the PNG in the binary chunk): all but its
+    // header zeroed, so it cannot decode.
+    let mut bytes = std::fs::read(model("BoxTextured-draco.glb")).unwrap();
+    let at = bytes
+        .windows(5)
+        .position(|w| w == b"DRACO")
+        .expect("a Draco stream");
+    bytes[at + 16..at + 200].fill(0);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("broken-draco.glb");
+    std::fs::write(&path, bytes).unwrap();
+    let e = load(&path, &LoadOptions::default())
         .unwrap_err()
         .to_string();
-    let at = e.find("KHR_draco_mesh_compression").expect("named");
-    let file = e.find("BoxTextured-draco.glb").unwrap();
-    assert!(at < file + 80, "{e}");
+    assert!(e.contains("broken-draco.glb"), "{e}");
+    assert!(e.contains("mesh 0 primitive 0"), "{e}");
+    assert!(e.contains("KHR_draco_mesh_compression"), "{e}");
 }

@@ -2,13 +2,13 @@
 //! `EXT_meshopt_compression` decoded.
 //!
 //! Read: `KHR_mesh_quantization` (integer positions, normals and texture coordinates,
-//! read by [`super::data::read_components`]) and `EXT_meshopt_compression` (decoded here
+//! read by [`super::data::read_components`]), `EXT_meshopt_compression` (decoded here
 //! by the `meshopt` crate, the Rust binding of meshoptimizer, whose decoders are the
-//! reference of the extension and safe on untrusted input: every mode and filter).
+//! reference of the extension and safe on untrusted input: every mode and filter) and
+//! `KHR_draco_mesh_compression` (decoded by [`super::draco`]).
 //! Not read, and refused when a file requires them, with the extension named first:
-//! Draco (`KHR_draco_mesh_compression`: no maintained Rust decoder; the C++ library's
-//! bindings need CMake and its whole build), Basis Universal and WebP or AVIF textures
-//! (no maintained Rust transcoder of those into RGBA). A file that only *uses* one of
+//! Basis Universal and WebP or AVIF textures (no maintained Rust transcoder of those
+//! into RGBA). A file that only *uses* one of
 //! them keeps an uncompressed fallback, which is drawn, with a warning.
 
 use std::borrow::Cow;
@@ -19,14 +19,14 @@ use serde_json::Value;
 use crate::{LoadError, Location};
 
 /// Compression extensions read.
-pub(crate) const READ: &[&str] = &["KHR_mesh_quantization", "EXT_meshopt_compression"];
+pub(crate) const READ: &[&str] = &[
+    "KHR_mesh_quantization",
+    "EXT_meshopt_compression",
+    "KHR_draco_mesh_compression",
+];
 
 /// Extensions not read, with what they hold and why.
 const NOT_READ: &[(&str, &str)] = &[
-    (
-        "KHR_draco_mesh_compression",
-        "Draco-compressed meshes; no maintained Rust Draco decoder exists",
-    ),
     (
         "KHR_meshopt_compression",
         "meshopt-compressed buffers under the KHR name (EXT_meshopt_compression is read)",

@@ -31,8 +31,10 @@
 mod camera;
 mod compression;
 mod data;
+mod draco;
 mod textures;
 
+use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;
@@ -105,17 +107,42 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         None
     };
     check_position_accessors(&root, path)?;
-    let doc = Document::from_json(root).map_err(|e| LoadError::Invalid {
+    let draco = if root.extensions_used.iter().any(|e| e == draco::NAME) {
+        draco::read(json, path)?
+    } else {
+        Vec::new()
+    };
+    let invalid = |e: ::gltf::Error| LoadError::Invalid {
         at: Location::file(path),
         message: validation_message(&e),
-    })?;
-    textures::check_images(&doc, path)?;
+    };
     let mut files = Vec::new();
     let fallback = meshopt.as_ref().map_or(&[][..], |m| &m.fallback[..]);
-    let mut buffers = data::buffers(&doc, blob, path, opts, fallback, &mut files)?;
-    if let Some(m) = &meshopt {
-        m.decode(&mut buffers, path)?;
-    }
+    let mut read_buffers = |doc: &Document| {
+        let mut buffers = data::buffers(doc, blob, path, opts, fallback, &mut files)?;
+        if let Some(m) = &meshopt {
+            m.decode(&mut buffers, path)?;
+        }
+        Ok::<_, LoadError>(buffers)
+    };
+    let (doc, buffers) = if draco.is_empty() {
+        let doc = Document::from_json(root).map_err(invalid)?;
+        let buffers = read_buffers(&doc)?;
+        (doc, buffers)
+    } else {
+        // Draco primitives' accessors have no data until decoded: the buffers are read
+        // first (through a document of the buffers alone), the primitives decoded into
+        // accessors, and the whole document made after.
+        let only = ::gltf::json::Root {
+            buffers: root.buffers.clone(),
+            ..Default::default()
+        };
+        let mut buffers = read_buffers(&Document::from_json(only).map_err(invalid)?)?;
+        let decoded = draco::decode(&draco, &mut root, &buffers, path)?;
+        buffers.push(Cow::Owned(decoded));
+        (Document::from_json(root).map_err(invalid)?, buffers)
+    };
+    textures::check_images(&doc, path)?;
     let mut b = Builder {
         path,
         opts,
