@@ -73,5 +73,63 @@ fn a_draco_stream_cut_short_is_an_error_naming_the_extension() {
         .to_string();
     assert!(e.contains("broken-draco.glb"), "{e}");
     assert!(e.contains("mesh 0 primitive 0"), "{e}");
-    assert!(e.contains("KHR_draco_mesh_compression"), "{e}");
+    assert!(
+        e.contains("KHR_draco_mesh_compression: the stream does not decode"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_draco_point_cloud_is_read_as_points() {
+    use draco_core::{
+        DataType, EncoderBuffer, EncoderOptions, GeometryAttributeType, PointAttribute, PointCloud,
+        PointCloudEncoder,
+    };
+    let coords: [f32; 9] = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+    let mut position = PointAttribute::new();
+    position.init(
+        GeometryAttributeType::Position,
+        3,
+        DataType::Float32,
+        false,
+        3,
+    );
+    for (i, v) in coords.iter().enumerate() {
+        position.buffer_mut().write(i * 4, &v.to_le_bytes());
+    }
+    let mut cloud = PointCloud::new();
+    let id = cloud.add_attribute(position);
+    let unique = cloud.attribute(id).unique_id();
+    let mut encoder = PointCloudEncoder::new();
+    encoder.set_point_cloud(cloud);
+    let mut stream = EncoderBuffer::new();
+    encoder.encode(&EncoderOptions::new(), &mut stream).unwrap();
+    let n = stream.data().len();
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("cloud.bin"), stream.data()).unwrap();
+    let ext = "KHR_draco_mesh_compression";
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "extensionsUsed": ["{ext}"],
+        "extensionsRequired": ["{ext}"],
+        "buffers": [{{"uri": "cloud.bin", "byteLength": {n}}}],
+        "bufferViews": [{{"buffer": 0, "byteLength": {n}}}],
+        "accessors": [{{"componentType": 5126, "count": 3, "type": "VEC3",
+            "min": [0, 0, 0], "max": [1, 1, 0]}}],
+        "meshes": [{{"primitives": [{{"mode": 0, "attributes": {{"POSITION": 0}},
+            "extensions": {{"{ext}": {{"bufferView": 0, "attributes": {{"POSITION": {unique}}}}}}}}}]}}],
+        "nodes": [{{"mesh": 0}}], "scenes": [{{"nodes": [0]}}]}}"#
+    );
+    let path = dir.path().join("cloud.gltf");
+    std::fs::write(&path, json).unwrap();
+    // Decoded as a point cloud (a mesh decoder refuses the stream), then, as every
+    // point primitive, left out with a warning.
+    let s = load(&path, &LoadOptions::default()).unwrap();
+    assert!(s.faces.is_empty());
+    assert!(
+        s.warnings
+            .iter()
+            .any(|w| w.contains("1 point or line primitives skipped")),
+        "{:?}",
+        s.warnings
+    );
 }

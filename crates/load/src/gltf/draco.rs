@@ -1,4 +1,5 @@
-//! Draco-compressed primitives (`KHR_draco_mesh_compression`), decoded by the
+//! Draco-compressed primitives (`KHR_draco_mesh_compression`: triangle meshes, and
+//! point clouds for point primitives), decoded by the
 //! `draco-core` crate (a Rust Draco decoder, no `unsafe`, with ceilings on what one
 //! decode may produce) into plain accessors.
 //!
@@ -33,6 +34,8 @@ pub(crate) struct Primitive {
     attributes: Vec<(usize, u32)>,
     /// The indices' accessor.
     indices: Option<usize>,
+    /// A point primitive (mode 0): a Draco point cloud.
+    points: bool,
 }
 
 /// The compressed primitives of a file (empty when it has none).
@@ -76,6 +79,7 @@ pub(crate) fn read(json: &[u8], path: &Path) -> Result<Vec<Primitive>, LoadError
                 view,
                 attributes,
                 indices: index(prim.get("indices")),
+                points: prim.get("mode").and_then(Value::as_u64) == Some(0),
             });
         }
     }
@@ -115,15 +119,28 @@ pub(crate) fn decode(
             .get(b)
             .and_then(|buf| buf.get(o..o.checked_add(n)?))
             .ok_or_else(|| bad(format!("bytes {o}..+{n} of buffer {b} do not exist")))?;
+        let mut stream = draco_core::DecoderBuffer::new(bytes);
+        let undecodable =
+            |e: draco_core::DracoError| bad(format!("the stream does not decode: {e}"));
         let mut mesh = draco_core::Mesh::new();
-        draco_core::MeshDecoder::new()
-            .decode(&mut draco_core::DecoderBuffer::new(bytes), &mut mesh)
-            .map_err(|e| bad(format!("the Draco mesh does not decode: {e}")))?;
-        let points = mesh.num_points();
+        let mut cloud = draco_core::PointCloud::new();
+        let (decoded, faces): (&draco_core::PointCloud, &[draco_core::mesh::Face]) = if prim.points
+        {
+            draco_core::PointCloudDecoder::new()
+                .decode(&mut stream, &mut cloud)
+                .map_err(undecodable)?;
+            (&cloud, &[])
+        } else {
+            draco_core::MeshDecoder::new()
+                .decode(&mut stream, &mut mesh)
+                .map_err(undecodable)?;
+            (&mesh, mesh.faces())
+        };
+        let points = decoded.num_points();
         for &(accessor, id) in &prim.attributes {
-            let attribute = mesh
+            let attribute = decoded
                 .attribute_by_unique_id(id)
-                .ok_or_else(|| bad(format!("Draco attribute {id} is not in the mesh")))?;
+                .ok_or_else(|| bad(format!("Draco attribute {id} is not in the stream")))?;
             let acc = root
                 .accessors
                 .get(accessor)
@@ -135,7 +152,7 @@ pub(crate) fn decode(
             };
             if acc.count.0 as usize != points {
                 return Err(bad(format!(
-                    "accessor {accessor} counts {} values, the Draco mesh has {points} points",
+                    "accessor {accessor} counts {} values, the Draco stream has {points} points",
                     acc.count.0
                 )));
             }
@@ -151,12 +168,12 @@ pub(crate) fn decode(
                 return Err(bad(format!("accessor {accessor} does not exist")));
             }
             let start = place(&mut out);
-            for face in mesh.faces() {
+            for face in faces {
                 for p in face {
                     out.extend_from_slice(&p.0.to_le_bytes());
                 }
             }
-            let count = 3 * mesh.num_faces();
+            let count = 3 * faces.len();
             point_at(
                 root,
                 accessor,
