@@ -188,6 +188,10 @@ pub(crate) fn hidden_parts<K: Kernel>(
         .collect()
 }
 
+/// The largest half-width, relative to the largest coordinate, of the boxes a part's
+/// extent is taken from (the broad phase's margins are a relative 1e-9).
+const BOX_REL: f64 = 1e-10;
+
 /// Splits the parts of a receiver (`node`, a piece `whole` of face `face`) along the
 /// volumes of caster `c`; parts already hidden from the eye are left as they are.
 fn cast<K: Kernel>(
@@ -196,12 +200,27 @@ fn cast<K: Kernel>(
     face: u32,
     whole: &K::Polygon,
     node: &mut Node<K::Polygon>,
-    (seen, cand, corners): (&mut Vec<bool>, &mut Vec<u32>, &mut Vec<DVec3>),
+    (seen, cand, corners): (&mut Vec<bool>, &mut Vec<u32>, &mut Vec<(DVec3, f64)>),
 ) {
-    let extent = |p: &K::Polygon, corners: &mut Vec<DVec3>| {
+    // The extent of a part from its corners' proven boxes where the kernel's cached
+    // positions are that close (a prefilter needs no rounded corners); the corners
+    // known less closely are rounded (their boxes then points), since wide boxes would
+    // let fewer occluders be pruned.
+    let extent = |p: &K::Polygon, corners: &mut Vec<(DVec3, f64)>| {
         corners.clear();
-        ctx.k.vertices_world(p, corners);
-        c.view.extent(corners)
+        let n = ctx.k.vertex_count(p);
+        corners.extend((0..n).map_while(|i| {
+            ctx.k
+                .vertex_world_bounded(p, i)
+                .filter(|(v, r)| *r <= BOX_REL * v.abs().max_element())
+        }));
+        if corners.len() < n {
+            let mut rounded = Vec::with_capacity(n);
+            ctx.k.vertices_world(p, &mut rounded);
+            corners.clear();
+            corners.extend(rounded.into_iter().map(|v| (v, 0.0)));
+        }
+        c.view.extent_of_boxes(corners)
     };
     // Every leaf's extent from this source (cuts made for an earlier source have none
     // from this one).
@@ -231,13 +250,17 @@ fn cast<K: Kernel>(
     // A receiver not yet cut that one occluder hides whole is hidden without a cut (most
     // of what the eye cannot see, in a scene of many layers; one cut by an occluder that
     // hides only a part of it would leave parts to clip by every later candidate).
-    if let Node::Leaf(p, s, _) = node {
+    // Only an occluder whose extent holds the receiver's can hide all of it.
+    if let Node::Leaf(p, s, e) = node {
         if !s.contains(c.who) && !s.from_eye {
-            let vols = cand.iter().map(|&q| &c.volumes[q as usize]);
-            if vols
-                .clone()
-                .any(|v| covers(ctx.k, p, v, coplanar_hidden(v)))
-            {
+            let may_cover = |q: u32| match (c.grid.extent(q), e.as_ref()) {
+                (Some(o), Some(r)) => c.grid.may_cover(o, r),
+                _ => true,
+            };
+            if cand.iter().any(|&q| {
+                let v = &c.volumes[q as usize];
+                may_cover(q) && covers(ctx.k, p, v, coplanar_hidden(v))
+            }) {
                 s.insert(c.who);
                 return;
             }
