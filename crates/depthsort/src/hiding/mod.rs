@@ -33,7 +33,7 @@ use rayon::prelude::*;
 use crate::options::OrderError;
 use crate::pieces::Ctx;
 use broad::{Extent, Grid, LightView};
-use volume::{clip, covers, Clip, Source, Volume};
+use volume::{clip, reach, Clip, Reach, Source, Volume};
 
 pub(crate) use sight::Sight;
 
@@ -267,18 +267,29 @@ fn cast<K: Kernel>(
     let coplanar_hidden = |vol: &Volume<K::Plane>| c.who == Who::Eye && face < vol.face;
     // A receiver not yet cut that one occluder hides whole is hidden without a cut (most
     // of what the eye cannot see, in a scene of many layers; one cut by an occluder that
-    // hides only a part of it would leave parts to clip by every later candidate).
-    // Only an occluder whose extent holds the receiver's can hide all of it.
+    // hides only a part of it would leave parts to clip by every later candidate). Only
+    // an occluder whose extent holds the receiver's can hide all of it; those of them
+    // found to lie apart from it touch none of its parts and are dropped.
     if let Node::Leaf(p, s, e) = node {
         if !s.contains(c.who) && !s.from_eye {
             let may_cover = |q: u32| match (c.grid.extent(q), e.as_ref()) {
                 (Some(o), Some(r)) => c.grid.may_cover(o, r),
                 _ => true,
             };
-            if cand.iter().any(|&q| {
+            let mut covered = false;
+            cand.retain(|&q| {
+                if covered || !may_cover(q) {
+                    return true;
+                }
                 let v = &c.volumes[q as usize];
-                may_cover(q) && covers(ctx.k, p, v, coplanar_hidden(v))
-            }) {
+                match reach(ctx.k, p, v, coplanar_hidden(v)) {
+                    Reach::Covered => covered = true,
+                    Reach::Apart => return false,
+                    Reach::Across => {}
+                }
+                true
+            });
+            if covered {
                 s.insert(c.who);
                 return;
             }
