@@ -107,8 +107,8 @@ impl Sight {
                 built.push((v, view.extent(&corners)));
             }
         }
-        // Numbered nearest first (ties and occluders without extent as before), so that
-        // the candidates of a receiver, listed by number, come nearest first.
+        // Numbered nearest first (occluders without extent first, ties in input order),
+        // so that the candidates of a receiver, listed by number, come nearest first.
         let near = |e: &Option<Extent>| e.map_or(f64::NEG_INFINITY, |e| e.near);
         built.sort_by(|a, b| near(&a.1).total_cmp(&near(&b.1)));
         Ok(Caster::new(Who::Eye, source, view, built))
