@@ -204,13 +204,16 @@ pub(crate) fn hidden_parts<K: Kernel>(
 /// extent is taken from (the broad phase's margins are a relative 1e-9).
 const BOX_REL: f64 = 1e-10;
 
+/// Which occluders' volumes may hide a receiver (the others are not tested).
+type MayHide<'a, P> = &'a dyn Fn(&Volume<P>) -> bool;
+
 /// Splits the parts of a receiver (`node`, a piece `whole` of face `face`) along the
 /// volumes of caster `c` that `may_hide` lets through; parts already hidden from the
 /// eye are left as they are.
 fn cast<K: Kernel>(
     ctx: &Ctx<'_, K>,
     c: &Caster<K>,
-    (face, whole, may_hide): (u32, &K::Polygon, &dyn Fn(&Volume<K::Plane>) -> bool),
+    (face, whole, may_hide): (u32, &K::Polygon, MayHide<'_, K::Plane>),
     node: &mut Node<K::Polygon>,
     (seen, cand, corners): (&mut Vec<bool>, &mut Vec<u32>, &mut Vec<(DVec3, f64)>),
 ) {
