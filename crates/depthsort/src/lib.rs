@@ -234,6 +234,7 @@ fn ordered<K: Kernel>(
     let sight = opts.visible.then(|| hiding::Sight {
         culled_objects: culled_objects.clone(),
         near,
+        order_exact: opts.sort != SortMode::Simple && opts.arith == Arith::Exact,
     });
     let parts = if scene.shadow_lights().is_empty() && sight.is_none() {
         None

@@ -102,20 +102,30 @@ impl LightView {
 
     /// The screen box and depth range of a polygon's corners.
     pub fn extent(&self, corners: &[DVec3]) -> Option<Extent> {
-        let mut e = Extent {
-            lo: [f64::INFINITY; 2],
-            hi: [f64::NEG_INFINITY; 2],
-            near: f64::INFINITY,
-            far: f64::NEG_INFINITY,
-        };
+        let mut e = Extent::EMPTY;
         for &c in corners {
-            let (s, z) = self.project(c)?;
-            for (i, v) in s.into_iter().enumerate() {
-                e.lo[i] = e.lo[i].min(v);
-                e.hi[i] = e.hi[i].max(v);
+            e.add(self.project(c)?);
+        }
+        Some(e)
+    }
+
+    /// The screen box and depth range of a polygon whose corners are known only within
+    /// boxes: `(position, half-width)` each, the corner within `half-width` of the
+    /// position in every coordinate. The extent holds every point of every box (a box's
+    /// eight corners are projected; a convex set seen at positive depth projects into
+    /// the hull of its corners' projections), so that it bounds the polygon without
+    /// rounding its implicit corners.
+    pub fn extent_of_boxes(&self, boxes: &[(DVec3, f64)]) -> Option<Extent> {
+        let mut e = Extent::EMPTY;
+        for &(c, r) in boxes {
+            if r == 0.0 {
+                e.add(self.project(c)?);
+                continue;
             }
-            e.near = e.near.min(z);
-            e.far = e.far.max(z);
+            for k in 0..8 {
+                let sign = |b: usize| if k & b == 0 { -r } else { r };
+                e.add(self.project(c + DVec3::new(sign(1), sign(2), sign(4)))?);
+            }
         }
         Some(e)
     }
@@ -128,6 +138,26 @@ pub(crate) struct Extent {
     pub hi: [f64; 2],
     pub near: f64,
     pub far: f64,
+}
+
+impl Extent {
+    /// The extent of no point.
+    const EMPTY: Extent = Extent {
+        lo: [f64::INFINITY; 2],
+        hi: [f64::NEG_INFINITY; 2],
+        near: f64::INFINITY,
+        far: f64::NEG_INFINITY,
+    };
+
+    /// Widens the extent to a point seen at screen position `s` and depth `z`.
+    fn add(&mut self, (s, z): ([f64; 2], f64)) {
+        for (i, v) in s.into_iter().enumerate() {
+            self.lo[i] = self.lo[i].min(v);
+            self.hi[i] = self.hi[i].max(v);
+        }
+        self.near = self.near.min(z);
+        self.far = self.far.max(z);
+    }
 }
 
 /// Occluders binned by their box on the light's screen; those without one (a corner
@@ -238,6 +268,18 @@ impl Grid {
             && o.lo[1] <= r.hi[1] + m
             && r.lo[1] <= o.hi[1] + m
             && o.near <= r.far + self.dmargin
+    }
+
+    /// Whether an occluder of extent `o` may hide all of a part of extent `r`: every
+    /// point it hides is seen inside its box and farther than its nearest point, so `r`
+    /// must lie in `o`'s box and no nearer than `o` (within the margins).
+    pub fn may_cover(&self, o: Extent, r: &Extent) -> bool {
+        let m = self.margin;
+        o.lo[0] <= r.lo[0] + m
+            && r.hi[0] <= o.hi[0] + m
+            && o.lo[1] <= r.lo[1] + m
+            && r.hi[1] <= o.hi[1] + m
+            && o.near <= r.near + self.dmargin
     }
 
     /// The occluders whose box meets `r`'s and which reach nearer to the light than

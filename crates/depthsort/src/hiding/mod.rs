@@ -33,7 +33,7 @@ use rayon::prelude::*;
 use crate::options::OrderError;
 use crate::pieces::Ctx;
 use broad::{Extent, Grid, LightView};
-use volume::{clip, covers, Clip, Source, Volume};
+use volume::{clip, reach, Clip, Reach, Source, Volume};
 
 pub(crate) use sight::Sight;
 
@@ -136,6 +136,15 @@ pub(crate) fn hidden_parts<K: Kernel>(
         None => Vec::new(),
     };
     casters.extend(lights::casters(ctx.k, scene)?);
+    // Per face, the position of its last piece in an exact order (`None`: not in the
+    // order, or the order not exact): a face can hide from the eye only pieces painted
+    // before one of its own.
+    let mut last: Vec<Option<u32>> = vec![None; scene.faces.len()];
+    if sight.is_some_and(|s| s.order_exact) {
+        for (pos, &id) in order.iter().enumerate() {
+            last[ctx.pieces[id as usize].face as usize] = Some(pos as u32);
+        }
+    }
     let lit: Vec<bool> = scene
         .faces
         .iter()
@@ -143,9 +152,10 @@ pub(crate) fn hidden_parts<K: Kernel>(
         .collect();
     order
         .par_iter()
+        .enumerate()
         .map_init(
             || (Vec::new(), Vec::new(), Vec::new()),
-            |(seen, cand, corners), &id| {
+            |(seen, cand, corners), (pos, &id)| {
                 let piece = &ctx.pieces[id as usize];
                 let seen_side = if piece.eye_front {
                     Side::Front
@@ -171,11 +181,13 @@ pub(crate) fn hidden_parts<K: Kernel>(
                             continue;
                         }
                     }
+                    let painted_after = |vol: &Volume<K::Plane>| {
+                        c.who != Who::Eye || last[vol.face as usize].is_none_or(|l| l > pos as u32)
+                    };
                     cast(
                         ctx,
                         c,
-                        piece.face,
-                        &piece.poly,
+                        (piece.face, &piece.poly, &painted_after),
                         &mut node,
                         (seen, cand, corners),
                     );
@@ -188,20 +200,42 @@ pub(crate) fn hidden_parts<K: Kernel>(
         .collect()
 }
 
+/// The largest half-width, relative to the largest coordinate, of the boxes a part's
+/// extent is taken from (the broad phase's margins are a relative 1e-9).
+const BOX_REL: f64 = 1e-10;
+
+/// Which occluders' volumes may hide a receiver (the others are not tested).
+type MayHide<'a, P> = &'a dyn Fn(&Volume<P>) -> bool;
+
 /// Splits the parts of a receiver (`node`, a piece `whole` of face `face`) along the
-/// volumes of caster `c`; parts already hidden from the eye are left as they are.
+/// volumes of caster `c` that `may_hide` lets through; parts already hidden from the
+/// eye are left as they are.
 fn cast<K: Kernel>(
     ctx: &Ctx<'_, K>,
     c: &Caster<K>,
-    face: u32,
-    whole: &K::Polygon,
+    (face, whole, may_hide): (u32, &K::Polygon, MayHide<'_, K::Plane>),
     node: &mut Node<K::Polygon>,
-    (seen, cand, corners): (&mut Vec<bool>, &mut Vec<u32>, &mut Vec<DVec3>),
+    (seen, cand, corners): (&mut Vec<bool>, &mut Vec<u32>, &mut Vec<(DVec3, f64)>),
 ) {
-    let extent = |p: &K::Polygon, corners: &mut Vec<DVec3>| {
+    // The extent of a part from its corners' proven boxes where the kernel's cached
+    // positions are that close (a prefilter needs no rounded corners); the corners
+    // known less closely are rounded (their boxes then points), since wide boxes would
+    // let fewer occluders be pruned.
+    let extent = |p: &K::Polygon, corners: &mut Vec<(DVec3, f64)>| {
         corners.clear();
-        ctx.k.vertices_world(p, corners);
-        c.view.extent(corners)
+        let n = ctx.k.vertex_count(p);
+        corners.extend((0..n).map_while(|i| {
+            ctx.k
+                .vertex_world_bounded(p, i)
+                .filter(|(v, r)| *r <= BOX_REL * v.abs().max_element())
+        }));
+        if corners.len() < n {
+            let mut rounded = Vec::with_capacity(n);
+            ctx.k.vertices_world(p, &mut rounded);
+            corners.clear();
+            corners.extend(rounded.into_iter().map(|v| (v, 0.0)));
+        }
+        c.view.extent_of_boxes(corners)
     };
     // Every leaf's extent from this source (cuts made for an earlier source have none
     // from this one).
@@ -218,26 +252,38 @@ fn cast<K: Kernel>(
             cand.extend(0..c.volumes.len() as u32);
         }
     }
-    // Seen from the eye, nearest first: what the nearest occluders hide needs no cut by
-    // the occluders behind them (ties and occluders without extent in index order). A
-    // light's occluders stay in index order: sorted, the demo's shadow parts took 68 %
-    // more bytes.
-    if c.who == Who::Eye {
-        let near = |q: u32| c.grid.extent(q).map_or(f64::NEG_INFINITY, |e| e.near);
-        cand.sort_by(|&a, &b| near(a).total_cmp(&near(b)).then(a.cmp(&b)));
-    }
+    // In index order: seen from the eye, that is nearest first (see [`Sight`]), so what
+    // the nearest occluders hide needs no cut by the occluders behind them. A light's
+    // occluders stay in input order: sorted, the demo's shadow parts took 68 % more
+    // bytes.
+    cand.retain(|&q| may_hide(&c.volumes[q as usize]));
     // The painter's coplanar rule, seen from the eye: the later face wins.
     let coplanar_hidden = |vol: &Volume<K::Plane>| c.who == Who::Eye && face < vol.face;
     // A receiver not yet cut that one occluder hides whole is hidden without a cut (most
     // of what the eye cannot see, in a scene of many layers; one cut by an occluder that
-    // hides only a part of it would leave parts to clip by every later candidate).
-    if let Node::Leaf(p, s, _) = node {
+    // hides only a part of it would leave parts to clip by every later candidate). Only
+    // an occluder whose extent holds the receiver's can hide all of it; those of them
+    // found to lie apart from it touch none of its parts and are dropped.
+    if let Node::Leaf(p, s, e) = node {
         if !s.contains(c.who) && !s.from_eye {
-            let vols = cand.iter().map(|&q| &c.volumes[q as usize]);
-            if vols
-                .clone()
-                .any(|v| covers(ctx.k, p, v, coplanar_hidden(v)))
-            {
+            let may_cover = |q: u32| match (c.grid.extent(q), e.as_ref()) {
+                (Some(o), Some(r)) => c.grid.may_cover(o, r),
+                _ => true,
+            };
+            let mut covered = false;
+            cand.retain(|&q| {
+                if covered || !may_cover(q) {
+                    return true;
+                }
+                let v = &c.volumes[q as usize];
+                match reach(ctx.k, p, v, coplanar_hidden(v)) {
+                    Reach::Covered => covered = true,
+                    Reach::Apart => return false,
+                    Reach::Across => {}
+                }
+                true
+            });
+            if covered {
                 s.insert(c.who);
                 return;
             }

@@ -40,6 +40,10 @@ pub(crate) struct Sight {
     pub culled_objects: Vec<bool>,
     /// The near plane's distance.
     pub near: f64,
+    /// Whether the order is exact (no piece painted over a part of a piece in front of
+    /// it), so that a face all of whose pieces come before a receiver in the order is
+    /// known to hide none of it.
+    pub order_exact: bool,
 }
 
 impl Sight {
@@ -103,6 +107,10 @@ impl Sight {
                 built.push((v, view.extent(&corners)));
             }
         }
+        // Numbered nearest first (occluders without extent first, ties in input order),
+        // so that the candidates of a receiver, listed by number, come nearest first.
+        let near = |e: &Option<Extent>| e.map_or(f64::NEG_INFINITY, |e| e.near);
+        built.sort_by(|a, b| near(&a.1).total_cmp(&near(&b.1)));
         Ok(Caster::new(Who::Eye, source, view, built))
     }
 }

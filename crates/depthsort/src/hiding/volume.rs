@@ -151,23 +151,51 @@ pub(crate) fn volume<K: Kernel>(
     Ok(Some(Volume { bounds, face }))
 }
 
-/// Whether all of the convex polygon `poly` lies inside `vol` (its boundary may touch
-/// the volume's), exactly: [`clip`] without cutting anything, which says
-/// [`Clip::Inside`] for the same polygon.
-pub(crate) fn covers<K: Kernel>(
+/// How a convex polygon lies with respect to a volume.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Reach {
+    /// All of it lies inside (its boundary may touch the volume's): [`clip`] says
+    /// [`Clip::Inside`].
+    Covered,
+    /// It lies wholly outside one of the volume's bounds, and so does every part of it:
+    /// [`clip`] says [`Clip::Outside`] for it and for each of its parts.
+    Apart,
+    /// It crosses a bound (the bounds after it were not looked at).
+    Across,
+}
+
+/// Whether a polygon on `side` of a bound lies inside it (`Some(true)`), outside it
+/// (`Some(false)`, also when it lies in the bound's plane, unless `coplanar_inside`), or
+/// across it (`None`).
+fn inside_of(side: PolygonSide, inside: Side, coplanar_inside: bool) -> Option<bool> {
+    match (side, inside) {
+        (PolygonSide::Front, Side::Front) | (PolygonSide::Back, Side::Back) => Some(true),
+        (PolygonSide::Coplanar | PolygonSide::CoplanarOpposite, _) => Some(coplanar_inside),
+        (PolygonSide::Spanning, _) => None,
+        _ => Some(false),
+    }
+}
+
+/// How the convex polygon `poly` lies with respect to `vol`, exactly, without cutting
+/// anything: the bounds in order, up to the first one it does not lie inside.
+pub(crate) fn reach<K: Kernel>(
     k: &K,
     poly: &K::Polygon,
     vol: &Volume<K::Plane>,
     coplanar_hidden: bool,
-) -> bool {
-    vol.bounds
-        .iter()
-        .enumerate()
-        .all(|(i, b)| match (k.classify(poly, &b.plane), b.inside) {
-            (PolygonSide::Front, Side::Front) | (PolygonSide::Back, Side::Back) => true,
-            (PolygonSide::Coplanar | PolygonSide::CoplanarOpposite, _) => i == 0 && coplanar_hidden,
-            _ => false,
-        })
+) -> Reach {
+    for (i, b) in vol.bounds.iter().enumerate() {
+        match inside_of(
+            k.classify(poly, &b.plane),
+            b.inside,
+            i == 0 && coplanar_hidden,
+        ) {
+            Some(true) => {}
+            Some(false) => return Reach::Apart,
+            None => return Reach::Across,
+        }
+    }
+    Reach::Covered
 }
 
 /// Clips the convex polygon `poly` by `vol`, exactly. A polygon lying in one of the
@@ -183,12 +211,14 @@ pub(crate) fn clip<K: Kernel>(
     let mut outside = Vec::new();
     for (i, b) in vol.bounds.iter().enumerate() {
         let cur = rest.as_ref().unwrap_or(poly);
-        let side = k.classify(cur, &b.plane);
-        match (side, b.inside) {
-            (PolygonSide::Front, Side::Front) | (PolygonSide::Back, Side::Back) => {}
-            (PolygonSide::Coplanar | PolygonSide::CoplanarOpposite, _)
-                if i == 0 && coplanar_hidden => {}
-            (PolygonSide::Spanning, _) => {
+        match inside_of(
+            k.classify(cur, &b.plane),
+            b.inside,
+            i == 0 && coplanar_hidden,
+        ) {
+            Some(true) => {}
+            Some(false) => return Clip::Outside,
+            None => {
                 let (front, back) = k.split(cur, &b.plane);
                 let (inn, out) = if b.inside == Side::Front {
                     (front, back)
@@ -204,7 +234,6 @@ pub(crate) fn clip<K: Kernel>(
                     (None, _) => return Clip::Outside,
                 }
             }
-            _ => return Clip::Outside,
         }
     }
     match rest {
