@@ -158,9 +158,9 @@ fn magnification(t: [[f64; 2]; 3], page: [[f64; 2]; 3]) -> f64 {
     stretch(t, page)
 }
 
-/// The largest factor by which the affine map taking triangle `from` to triangle `to`
-/// stretches a length (its largest singular value); infinite when `from` is degenerate.
-pub(crate) fn stretch(from: [[f64; 2]; 3], to: [[f64; 2]; 3]) -> f64 {
+/// The linear part `[a11, a12, a21, a22]` (rows: the image's x, then y) of the affine
+/// map taking triangle `from` to triangle `to`; `None` when `from` is degenerate.
+pub(crate) fn linear_part(from: [[f64; 2]; 3], to: [[f64; 2]; 3]) -> Option<[f64; 4]> {
     let d = |q: &[[f64; 2]; 3], i: usize, k: usize| q[i][k] - q[0][k];
     let (t11, t12, t21, t22) = (
         d(&from, 1, 0),
@@ -170,14 +170,24 @@ pub(crate) fn stretch(from: [[f64; 2]; 3], to: [[f64; 2]; 3]) -> f64 {
     );
     let det = t11 * t22 - t12 * t21;
     if det == 0.0 || !det.is_finite() {
-        return f64::INFINITY;
+        return None;
     }
     // A = P · T⁻¹, P and T the differences of `to` and `from` as columns.
     let (p11, p12, p21, p22) = (d(&to, 1, 0), d(&to, 2, 0), d(&to, 1, 1), d(&to, 2, 1));
-    let a11 = (p11 * t22 - p12 * t21) / det;
-    let a12 = (p12 * t11 - p11 * t12) / det;
-    let a21 = (p21 * t22 - p22 * t21) / det;
-    let a22 = (p22 * t11 - p21 * t12) / det;
+    Some([
+        (p11 * t22 - p12 * t21) / det,
+        (p12 * t11 - p11 * t12) / det,
+        (p21 * t22 - p22 * t21) / det,
+        (p22 * t11 - p21 * t12) / det,
+    ])
+}
+
+/// The largest factor by which the affine map taking triangle `from` to triangle `to`
+/// stretches a length (its largest singular value); infinite when `from` is degenerate.
+pub(crate) fn stretch(from: [[f64; 2]; 3], to: [[f64; 2]; 3]) -> f64 {
+    let Some([a11, a12, a21, a22]) = linear_part(from, to) else {
+        return f64::INFINITY;
+    };
     let f2 = a11 * a11 + a12 * a12 + a21 * a21 + a22 * a22;
     let dt = a11 * a22 - a12 * a21;
     let m = ((f2 + (f2 * f2 - 4.0 * dt * dt).max(0.0).sqrt()) / 2.0).sqrt();

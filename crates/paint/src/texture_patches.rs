@@ -40,12 +40,16 @@ pub(crate) struct Patches {
 impl Patches {
     /// The patch of `t` for a triangle with texture coordinates `st` whose samples may
     /// stray `reach` texels beyond them, and the coordinates moved onto it; `None` when
-    /// the texture itself serves as well (see the module docs).
+    /// the texture itself serves as well (see the module docs). A `magnified` triangle
+    /// (a texel over more than a page pixel) gets the texels it reads and no more,
+    /// never a shared block: a viewer resamples the whole image to the page, and a
+    /// block's spare texels would cost it their enlarged area.
     pub fn patch(
         &mut self,
         t: &Arc<Texture>,
         st: [[f64; 2]; 3],
         reach: f64,
+        magnified: bool,
     ) -> Option<(Arc<Texture>, [[f64; 2]; 3])> {
         let size = [i64::from(t.width()), i64::from(t.height())];
         if st.iter().flatten().any(|v| !v.is_finite()) {
@@ -74,7 +78,7 @@ impl Patches {
             }
             let (a, b) = (a as i64, b as i64);
             let start = a.div_euclid(BLOCK / 2) * (BLOCK / 2);
-            range[k] = if b < start + BLOCK {
+            range[k] = if b < start + BLOCK && !magnified {
                 [start, start + BLOCK - 1]
             } else {
                 [a, b]
@@ -135,7 +139,7 @@ mod tests {
         let t = gradient();
         let mut patches = Patches::default();
         let st = [[1.1, 0.30], [1.15, 0.32], [1.12, 0.36]];
-        let (p, moved) = patches.patch(&t, st, 2.0).unwrap();
+        let (p, moved) = patches.patch(&t, st, 2.0, false).unwrap();
         assert!(p.width() < 32 && p.height() < 32);
         // Corners, points between them, and points up to the reach beyond.
         for w in [
@@ -155,21 +159,24 @@ mod tests {
         // A neighbour in the same block shares the patch; a face reading a quarter of
         // the texture keeps the texture.
         let (q, _) = patches
-            .patch(&t, st.map(|p| [p[0] - 1.0, p[1] + 2.0]), 2.0)
+            .patch(&t, st.map(|p| [p[0] - 1.0, p[1] + 2.0]), 2.0, false)
             .unwrap();
         assert!(Arc::ptr_eq(&p, &q));
         let small = [[0.1, 0.3], [0.11, 0.3], [0.1, 0.31]];
-        let (a, _) = patches.patch(&t, small, 0.5).unwrap();
+        let (a, _) = patches.patch(&t, small, 0.5, false).unwrap();
         let (b, _) = patches
-            .patch(&t, small.map(|p| [p[0] + 0.003, p[1]]), 0.5)
+            .patch(&t, small.map(|p| [p[0] + 0.003, p[1]]), 0.5, false)
             .unwrap();
         assert_eq!((a.width(), a.height()), (16, 16));
         assert!(Arc::ptr_eq(&a, &b), "a shared block");
+        // Magnified, the same triangle gets only the texels it reads.
+        let (c, _) = patches.patch(&t, small, 0.5, true).unwrap();
+        assert!(c.width() < 8 && c.height() < 8, "{c:?}");
         assert!(patches
-            .patch(&t, [[0.0, 0.0], [0.5, 0.0], [0.0, 0.5]], 2.0)
+            .patch(&t, [[0.0, 0.0], [0.5, 0.0], [0.0, 0.5]], 2.0, false)
             .is_none());
         assert!(patches
-            .patch(&t, [[0.0, 0.0], [9.0, 0.0], [0.0, 0.01]], 2.0)
+            .patch(&t, [[0.0, 0.0], [9.0, 0.0], [0.0, 0.01]], 2.0, false)
             .is_none());
     }
 }

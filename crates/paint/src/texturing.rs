@@ -10,7 +10,9 @@ use std::sync::Arc;
 use glam::{DMat3, DMat4, DVec3};
 use limn_scene::{polygon_normal, Camera, FaceTexcoords, Texture};
 
-use crate::texture_collapse::{classify, max_step, stretch, Collapse, Strips};
+use crate::texture_bake::{bake, worth_baking};
+use crate::texture_collapse::{classify, linear_part, max_step, stretch, Collapse, Strips};
+use crate::texture_levels::{factors, Levels};
 use crate::texture_patches::{Patches, REACH_PX};
 use crate::{PaintFragment, TextureMap};
 
@@ -23,6 +25,7 @@ pub(crate) struct TextureTable {
     /// Per texture: the largest step between neighbouring texels.
     steps: HashMap<*const Texture, f64>,
     strips: Strips,
+    levels: Levels,
     patches: Patches,
 }
 
@@ -120,16 +123,35 @@ impl FaceTexture {
                 let w = [c[0], c[i], c[i + 1]];
                 let st = [st[0], st[i], st[i + 1]];
                 let page = w.map(|p| view.project(p));
+                let mut baked = false;
                 let (texture, st) = match classify(st, page, size, step) {
                     Collapse::Area => {
-                        // Texels per page pixel, at most, to know how far flaps read.
+                        // The texture averaged to what the page shows (see
+                        // `texture_levels.rs`): texels per page pixel along s and t.
                         let texel =
                             st.map(|p| [p[0] * f64::from(size.0), p[1] * f64::from(size.1)]);
+                        let per_px = linear_part(page, texel)
+                            .map_or([f64::INFINITY; 2], |[a, b, c, d]| [a.hypot(b), c.hypot(d)]);
+                        let level = table.levels.level(tex, factors(per_px, size));
+                        // Texels per page pixel, at most, to know how far flaps read.
+                        let (lw, lh) = (f64::from(level.width()), f64::from(level.height()));
+                        let texel = st.map(|p| [p[0] * lw, p[1] * lh]);
                         let reach = REACH_PX * stretch(page, texel);
-                        match table.patches.patch(tex, st, reach) {
+                        let magnified = stretch(texel, page) > 1.0;
+                        let (image, st) = match table.patches.patch(&level, st, reach, magnified) {
                             Some(patch) => patch,
-                            None => (tex.clone(), st),
-                        }
+                            None => (level, st),
+                        };
+                        let texel = st.map(|p| {
+                            [
+                                p[0] * f64::from(image.width()),
+                                p[1] * f64::from(image.height()),
+                            ]
+                        });
+                        baked = linear_part(texel, page).is_some_and(|to_page| {
+                            worth_baking(page, (image.width(), image.height()), to_page, REACH_PX)
+                        });
+                        (image, st)
                     }
                     Collapse::Point(p) => return FanPaint::Flat(tex.sample(p)),
                     Collapse::Band(band) => {
@@ -138,13 +160,23 @@ impl FaceTexture {
                         (strip.texture, st)
                     }
                 };
-                match page_to_texture(w, st, view) {
-                    Some(screen_to_st) => FanPaint::Map(TextureMap {
-                        texture: table.index_of(&texture),
-                        screen_to_st,
-                    }),
-                    None => FanPaint::Fill,
+                let Some(screen_to_st) = page_to_texture(w, st, view) else {
+                    return FanPaint::Fill;
+                };
+                let mut map = TextureMap {
+                    texture: 0,
+                    screen_to_st,
+                };
+                let page_samples = baked
+                    .then(|| bake(&texture, &map, page, REACH_PX))
+                    .flatten();
+                if let Some((image, to_image)) = page_samples {
+                    map.texture = table.index_of(&Arc::new(image));
+                    map.screen_to_st = to_image;
+                } else {
+                    map.texture = table.index_of(&texture);
                 }
+                FanPaint::Map(map)
             })
             .collect();
         FaceTexture {
