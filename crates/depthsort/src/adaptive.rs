@@ -11,7 +11,7 @@ use crate::detached::order_apart;
 use crate::face_runs::FaceRuns;
 use crate::geom::{boxes_meet, convex_disjoint, Box2};
 use crate::occlusion::Pair;
-use crate::partition::{choose_splitter, partition, SCORE_SAMPLE};
+use crate::partition::{split_set, SCORE_SAMPLE};
 use crate::pieces::Ctx;
 use crate::probe::{cycles_everywhere, PROBE_MIN};
 use crate::separation::SeparatingAxes;
@@ -336,8 +336,7 @@ fn run<K: Kernel>(
                 split_on_every_core(ctx, s, f64::INFINITY, candidates, out);
             }
             Task::Split(s) => {
-                let sp = choose_splitter(ctx, &s, candidates);
-                let (far, cop, near) = partition(ctx, &s, sp);
+                let (far, cop, near) = split_set(ctx, &s, candidates);
                 push_parts_as(&mut stack, far, cop, near, |v| Task::Deep(v, f64::INFINITY));
             }
             Task::Deep(s, density) => {
@@ -354,8 +353,7 @@ fn run<K: Kernel>(
                     split_on_every_core(ctx, s, density, candidates, out);
                     continue;
                 }
-                let sp = choose_splitter(ctx, &s, candidates);
-                let (far, cop, near) = partition(ctx, &s, sp);
+                let (far, cop, near) = split_set(ctx, &s, candidates);
                 push_parts_as(&mut stack, far, cop, near, |v| Task::Deep(v, density));
             }
         }

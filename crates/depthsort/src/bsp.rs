@@ -3,7 +3,7 @@
 
 use limn_kernel::Kernel;
 
-use crate::partition::{choose_splitter, partition};
+use crate::partition::split_set;
 use crate::pieces::Ctx;
 use crate::split_apart::{split_apart, splits_apart};
 
@@ -74,8 +74,7 @@ pub(crate) fn bsp<K: Kernel>(ctx: &mut Ctx<'_, K>, set: Vec<u32>, candidates: us
                     ));
                     continue;
                 }
-                let sp = choose_splitter(ctx, &s, candidates);
-                let (far, cop, near) = partition(ctx, &s, sp);
+                let (far, cop, near) = split_set(ctx, &s, candidates);
                 push_parts(&mut stack, far, cop, near);
             }
         }

@@ -44,7 +44,7 @@ impl<K: Kernel> Ctx<'_, K> {
     }
 
     /// [`Ctx::rel`] when the kernel can tell it cheaply.
-    fn rel_if_cheap(&self, q: u32, p: u32) -> Option<Rel> {
+    pub fn rel_if_cheap(&self, q: u32, p: u32) -> Option<Rel> {
         let pp = &self.pieces[p as usize];
         let side = self
             .k

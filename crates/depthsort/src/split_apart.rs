@@ -10,7 +10,7 @@
 use limn_kernel::Kernel;
 
 use crate::detached::order_apart;
-use crate::partition::{choose_splitter, partition};
+use crate::partition::split_set;
 use crate::pieces::Ctx;
 
 /// Sets of at least this many pieces are split into parts ordered apart; smaller parts
@@ -106,8 +106,7 @@ pub(crate) fn split_apart<'a, K: Kernel, T: Copy + Send>(
             parts.push((s, with));
             continue;
         };
-        let sp = choose_splitter(ctx, &s, candidates);
-        let (far, cop, near) = partition(ctx, &s, sp);
+        let (far, cop, near) = split_set(ctx, &s, candidates);
         stack.push(Pending::Part(near, inherited, depth + 1));
         stack.push(Pending::Plane(cop));
         stack.push(Pending::Part(far, inherited, depth + 1));
