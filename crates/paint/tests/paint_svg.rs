@@ -217,8 +217,13 @@ fn gouraud_is_a_fitted_cover_under_pieces_within_the_tolerance() {
     ]);
     p.fragments = vec![f.clone()];
     let (text, _) = svg(&p);
-    assert!(text.contains("<g style=\"isolation:isolate\">"), "{text}");
-    assert_eq!(text.matches("<path").count(), 3, "{text}");
+    // An isolated group clipped to the triangle: the ramps fill a rectangle under it.
+    assert!(
+        text.contains("<g clip-path=\"url(#c0)\"><g style=\"isolation:isolate\">"),
+        "{text}"
+    );
+    assert_eq!(text.matches("<path").count(), 1, "{text}");
+    assert_eq!(text.matches("<rect").count(), 3, "{text}");
     // Colours on one line in RGB: one exact gradient.
     f.vertex_colors = Some(vec![
         [0.2, 0.2, 0.2, 1.0],
