@@ -35,14 +35,14 @@
 //! **Textures**: each texture is embedded once in `<defs>`, as a PNG `data:` URI in an
 //! `<image id="texK">` filling the unit square of texture space (with a wrapped border
 //! of one texel outside it, see `texture_images.rs`; `image-rendering:smooth` asks for
-//! bilinear interpolation, as limn samples). A textured fragment is drawn as triangles
-//! within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact projective map (see
-//! `texture_pieces.rs`), each a `<path fill="url(#tcN)">` painted with a
-//! `<pattern id="tcN" patternUnits="userSpaceOnUse" width="1" height="1"
-//! patternTransform="matrix(…)">` of its own holding `<use href="#texK"/>` (the matrix is
-//! the affine map from texture to page; the pattern's tile, the unit square, repeats the
-//! texture as limn samples it, and viewers paint it without a clip layer per face; a
-//! triangle reaching more than 1024 repetitions is filled with the mean colour instead and
+//! bilinear interpolation, as limn samples), with a `<clipPath id="unitK">`: that square
+//! grown by half a texel. A textured fragment is drawn as triangles within
+//! [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact projective map (see
+//! `texture_pieces.rs`), each a `<clipPath id="tcN">` of its own and a
+//! `<g clip-path="url(#tcN)">` holding one `<use href="#texK" transform="matrix(…)"
+//! clip-path="url(#unitK)"/>` per repetition of the texture the triangle reaches (the
+//! matrix is the affine map from texture to page, shifted to the repetition; a triangle
+//! reaching more than 1024 repetitions is filled with the mean colour instead and
 //! counted as approximated). A fragment's triangles go in one `<g>`: with
 //! `opacity` when translucent, and when the fill is not white with
 //! `filter="url(#mN)"`, a `<feColorMatrix>` scaling each channel by the fill's (one

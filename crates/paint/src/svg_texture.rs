@@ -7,10 +7,10 @@ use super::runs::{reversals, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over, AffinePiece};
 use super::{svg_smooth_run, texture_images, PaintError, Texture};
 
-/// Ids handed out while writing: patterns and colour filters.
+/// Ids handed out while writing: clip paths and colour filters.
 #[derive(Default)]
 pub(crate) struct SvgTextures {
-    patterns: u64,
+    clips: u64,
     /// Fill colour → the id number of its `<filter id="mN">`.
     filters: HashMap<[u8; 3], usize>,
     /// Pieces filled with a mean colour (too many repetitions).
@@ -31,8 +31,8 @@ pub(crate) fn write_defs(
             what: "texture",
             reason: "the image cannot be encoded as PNG",
         })?;
-        // The padded image: its inner texels fill the unit square of texture space, the
-        // tile of each face's pattern (which cuts the border off).
+        // The padded image: its inner texels fill the unit square of texture space;
+        // each repetition is clipped to that square grown by half a texel.
         let (tw, th) = (f64::from(t.width()), f64::from(t.height()));
         let pad = f64::from(texture_images::PAD);
         let (px, py) = (pad / tw, pad / th);
@@ -44,7 +44,11 @@ pub(crate) fn write_defs(
             b" preserveAspectRatio=\"none\" style=\"image-rendering:smooth\" href=\"",
         );
         b.extend_from_slice(uri.as_bytes());
-        b.extend_from_slice(b"\"/>\n");
+        b.extend_from_slice(b"\"/>\n<clipPath id=\"unit");
+        push_uint(b, k as u64);
+        b.extend_from_slice(b"\"><rect");
+        rect_attrs(b, [-0.5 / tw, -0.5 / th, 1.0 + 1.0 / tw, 1.0 + 1.0 / th]);
+        b.extend_from_slice(b"/></clipPath>\n");
     }
     b.extend_from_slice(b"</defs>\n");
     Ok(())
@@ -122,7 +126,7 @@ impl SvgTextures {
         }
         b.extend_from_slice(b">\n");
         let mut drawn = 0;
-        // Under the pieces, the whole run (fragments and seam flaps, one path, so
+        // Under the pieces, the whole run (fragments and seam flaps, one clip path, so
         // their shared edges are covered at once) under one affine map, the first fan
         // triangle's: the anti-aliased edges between pieces then show nearly the same
         // texels, not the page.
@@ -157,9 +161,9 @@ impl SvgTextures {
         drawn
     }
 
-    /// The polygons `polys` (one path, non-zero rule) painted with the texture placed
-    /// by `piece`'s map (a pattern repeating it), or filled with the mean colour when it
-    /// reaches too many repetitions.
+    /// The polygons `polys` (one path, non-zero rule) clipped out of the texture placed
+    /// by `piece`'s map (one `<use>` per repetition `piece` reaches), or filled with the
+    /// mean colour when it reaches too many repetitions.
     fn clipped(
         &mut self,
         b: &mut Vec<u8>,
@@ -184,7 +188,7 @@ impl SvgTextures {
                 b.push(b'Z');
             }
         };
-        if piece.repetitions().is_none() {
+        let Some(tiles) = piece.repetitions() else {
             b.extend_from_slice(b"<path d=\"");
             path(b);
             b.extend_from_slice(b"\" fill=\"");
@@ -192,29 +196,33 @@ impl SvgTextures {
             b.extend_from_slice(b"\"/>\n");
             self.approximated += 1;
             return 1;
-        }
-        // A pattern of one repetition of the texture: the path's fill repeats it, and
-        // viewers draw it as a paint (no clip layer per face).
-        b.extend_from_slice(b"<pattern id=\"tc");
-        push_uint(b, self.patterns);
-        b.extend_from_slice(
-            b"\" patternUnits=\"userSpaceOnUse\" width=\"1\" height=\"1\" patternTransform=\"matrix(",
-        );
-        for (n, v) in piece.st_to_page.iter().enumerate() {
-            if n > 0 {
-                b.push(b' ');
-            }
-            // The linear part scales the unit square up to the page: more decimals.
-            push_num(b, *v, if n < 4 { d + 4 } else { d + 2 });
-        }
-        b.extend_from_slice(b")\"><use href=\"#tex");
-        push_uint(b, k.into());
-        b.extend_from_slice(b"\"/></pattern>\n<path d=\"");
+        };
+        b.extend_from_slice(b"<clipPath id=\"tc");
+        push_uint(b, self.clips);
+        b.extend_from_slice(b"\"><path d=\"");
         path(b);
-        b.extend_from_slice(b"\" fill=\"url(#tc");
-        push_uint(b, self.patterns);
-        b.extend_from_slice(b")\"/>\n");
-        self.patterns += 1;
+        b.extend_from_slice(b"\"/></clipPath>\n<g clip-path=\"url(#tc");
+        push_uint(b, self.clips);
+        b.extend_from_slice(b")\">\n");
+        let [ma, mb, mc, md, me, mf] = piece.st_to_page;
+        for (i, j) in tiles {
+            b.extend_from_slice(b"<use href=\"#tex");
+            push_uint(b, k.into());
+            b.extend_from_slice(b"\" transform=\"matrix(");
+            let m = [ma, mb, mc, md, ma * i + mc * j + me, mb * i + md * j + mf];
+            for (n, v) in m.iter().enumerate() {
+                if n > 0 {
+                    b.push(b' ');
+                }
+                // The linear part scales the unit square up to the page: more decimals.
+                push_num(b, *v, if n < 4 { d + 4 } else { d + 2 });
+            }
+            b.extend_from_slice(b")\" clip-path=\"url(#unit");
+            push_uint(b, k.into());
+            b.extend_from_slice(b")\"/>\n");
+        }
+        b.extend_from_slice(b"</g>\n");
+        self.clips += 1;
         1
     }
 }
