@@ -12,6 +12,7 @@ use crate::polygon::ExactPolygon;
 use crate::predicates::rounded_intersection;
 use crate::side::{PolygonSide, Side};
 use crate::traits::Kernel;
+use crate::vertex_memo;
 
 /// Largest relative error bound (against the largest coordinate) at which the cached
 /// approximation of a vertex is returned as its world position; beyond it the exact
@@ -92,7 +93,7 @@ impl ExactKernel {
             return pos;
         }
         let [s, a, b] = poly.vertex_planes(i);
-        rounded_intersection(&s, &a, &b).unwrap_or(pos)
+        vertex_memo::rounded([&s, &a, &b], || rounded_intersection(&s, &a, &b)).unwrap_or(pos)
     }
 
     #[inline]

@@ -64,6 +64,7 @@ mod quotient;
 mod side;
 mod traits;
 mod triangulate;
+mod vertex_memo;
 
 pub use affine::ExactAffine;
 #[cfg(any(test, feature = "check-invariants"))]

@@ -70,6 +70,8 @@ pub enum PlaneDef {
 #[derive(Debug)]
 pub(crate) struct PlaneData {
     def: PlaneDef,
+    /// This plane's identity, never given to another ([`Plane::id`]).
+    id: u64,
     /// An input point besides the definition's that is known to lie exactly on the plane
     /// (the fourth corner of a planar quad, checked exactly when the face was converted):
     /// the combinatorial shortcut answers for it as for the definition's points.
@@ -282,12 +284,47 @@ fn c3(p: [f64; 3]) -> robust::Coord3D<f64> {
     }
 }
 
+/// Identities of planes: each thread takes blocks of them from one counter, so that
+/// making a plane touches no memory shared between threads.
+mod plane_identity {
+    use std::cell::Cell;
+    use std::sync::atomic::{AtomicU64, Ordering};
+
+    /// Identities handed out per block.
+    const BLOCK: u64 = 1 << 20;
+    /// The first identity of the next block (0 is never an identity).
+    static NEXT_BLOCK: AtomicU64 = AtomicU64::new(1);
+
+    thread_local! {
+        /// The next identity of this thread's block and the end of the block.
+        static RANGE: Cell<(u64, u64)> = const { Cell::new((0, 0)) };
+    }
+
+    /// A new identity.
+    #[inline]
+    pub(super) fn next() -> u64 {
+        RANGE
+            .try_with(|r| {
+                let (mut next, mut end) = r.get();
+                if next == end {
+                    next = NEXT_BLOCK.fetch_add(BLOCK, Ordering::Relaxed);
+                    end = next + BLOCK;
+                }
+                r.set((next + 1, end));
+                next
+            })
+            // A thread being torn down: a block of one.
+            .unwrap_or_else(|_| NEXT_BLOCK.fetch_add(1, Ordering::Relaxed))
+    }
+}
+
 impl Plane {
     fn from_def(def: PlaneDef) -> Plane {
         let (mid_n, mid_d, err_n, err_d) = def.approximate();
         Plane {
             data: Arc::new(PlaneData {
                 def,
+                id: plane_identity::next(),
                 also_on: None,
                 approx: [mid_n[0], mid_n[1], mid_n[2], mid_d],
                 err_n,
@@ -362,6 +399,7 @@ impl Plane {
         Plane {
             data: Arc::new(PlaneData {
                 def: self.data.def,
+                id: plane_identity::next(),
                 also_on: Some(x),
                 approx: self.data.approx,
                 err_n: self.data.err_n,
@@ -505,6 +543,13 @@ impl Plane {
         } else {
             (n, d)
         }
+    }
+
+    /// An identity of the plane's definition, shared by its clones and its flipped
+    /// copies and by no other plane made in this process (never 0).
+    #[inline]
+    pub(crate) fn id(&self) -> u64 {
+        self.data.id
     }
 
     /// Whether `self` and `other` share a definition (they are the same plane, possibly

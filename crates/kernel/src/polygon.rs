@@ -9,6 +9,7 @@ use crate::filter::PlaneF;
 use crate::plane::Plane;
 use crate::predicates;
 use crate::side::{PolygonSide, Side};
+use crate::vertex_memo;
 
 /// Vertices and edges stored inline (no heap allocation) up to this count.
 pub(crate) const INLINE: usize = 4;
@@ -207,7 +208,14 @@ impl ExactPolygon {
         }
         match self.stored_edges_at(i) {
             Some((a, b)) => {
-                predicates::side_of_intersection(&self.support, a, b, h).unwrap_or(Side::On)
+                // A vertex lies on its own planes: told at once, not remembered.
+                if h.same_definition(&self.support) || h.same_definition(a) || h.same_definition(b)
+                {
+                    return Side::On;
+                }
+                vertex_memo::side_at([&self.support, a, b], h, || {
+                    predicates::side_of_intersection(&self.support, a, b, h).unwrap_or(Side::On)
+                })
             }
             // Not reached: an input polygon's vertices are input points (error 0).
             None => h.side_exact(c.pos),
