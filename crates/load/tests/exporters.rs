@@ -1,5 +1,6 @@
 //! What real exporters write, read as their users mean it: Windows texture paths,
-//! Rhino's empty `usemtl`, MeshLab's `Tr`, PLY triangle strips, point clouds.
+//! Rhino's empty `usemtl`, MeshLab's `Tr` and extra PLY values, PLY triangle strips,
+//! point clouds.
 
 mod common;
 
@@ -182,4 +183,25 @@ fn point_clouds_are_drawn_as_points_with_a_warning() {
     let s = ok(&write(d.path(), "empty.obj", "# nothing\n"));
     assert!(s.points.is_empty());
     assert!(s.warnings[0].ends_with("no faces"), "{:?}", s.warnings);
+}
+
+/// MeshLab's ASCII PLY with texture coordinates writes a list its header does not name
+/// after each face (trimesh's `fuze_ascii.ply`): the faces are read, the extra values
+/// ignored with one warning naming the first such line.
+#[test]
+fn values_beyond_the_ply_header_are_ignored_with_a_warning() {
+    let d = dir();
+    let head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+                property float z\nelement face 2\nproperty list uchar int vertex_indices\n\
+                end_header\n";
+    let body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 9 1 1 1\n3 0 2 1\n";
+    let p = write(d.path(), "m.ply", format!("{head}{body}"));
+    let s = ok(&p);
+    assert_eq!(s.faces.len(), 2);
+    assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
+    let w = &s.warnings[0];
+    assert!(
+        w.contains("m.ply:13:") && w.contains("beyond") && w.contains("(1 lines)"),
+        "{w}"
+    );
 }

@@ -246,6 +246,12 @@ pub(crate) fn parse(bytes: &[u8], path: &Path) -> Result<Scene, LoadError> {
             path.display()
         ));
     }
+    if let Some((lines, first)) = src.extra_values() {
+        scene.warnings.push(format!(
+            "{}:{first}: values beyond those the header declares ignored ({lines} lines)",
+            path.display()
+        ));
+    }
     let trailing = src.trailing();
     if trailing > 0 {
         scene.warnings.push(format!(
@@ -432,7 +438,8 @@ fn read_instance(
             }
         }
     }
-    src.end(path)
+    src.end();
+    Ok(())
 }
 
 /// The material of a face colour (deduplicated), or the default grey.

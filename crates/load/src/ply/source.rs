@@ -14,6 +14,9 @@ pub(crate) enum Source<'a> {
         line: &'a [u8],
         /// Number of the current line.
         number: u64,
+        /// Lines that held values beyond those the header declares (ignored): how
+        /// many, and the first.
+        extra: (u64, u64),
     },
     /// Binary, of either byte order.
     Binary {
@@ -32,6 +35,7 @@ impl<'a> Source<'a> {
                 rest: body,
                 line: &[],
                 number: first_line - 1,
+                extra: (0, 0),
             },
             Encoding::LittleEndian | Encoding::BigEndian => Source::Binary {
                 data: body,
@@ -55,7 +59,9 @@ impl<'a> Source<'a> {
     /// Starts element instance `index` (0-based) of element `name`.
     pub(crate) fn begin(&mut self, name: &str, index: u64, path: &Path) -> Result<(), LoadError> {
         match self {
-            Source::Ascii { rest, line, number } => loop {
+            Source::Ascii {
+                rest, line, number, ..
+            } => loop {
                 if rest.is_empty() {
                     return Err(LoadError::Truncated {
                         at: Location::line(path, *number + 1),
@@ -87,21 +93,33 @@ impl<'a> Source<'a> {
         }
     }
 
-    /// Ends an element instance: an ASCII line must hold nothing more.
-    pub(crate) fn end(&mut self, path: &Path) -> Result<(), LoadError> {
-        if let Source::Ascii { line, number, .. } = self {
+    /// Ends an element instance. Values left on an ASCII line beyond those the header
+    /// declares are ignored and counted (some writers append lists their header does
+    /// not name; see [`Source::extra_values`]).
+    pub(crate) fn end(&mut self) {
+        if let Source::Ascii {
+            line,
+            number,
+            extra,
+            ..
+        } = self
+        {
             if !line.trim_ascii().is_empty() {
-                return Err(LoadError::syntax(
-                    path,
-                    *number,
-                    format!(
-                        "more values than the header declares: {:?}",
-                        String::from_utf8_lossy(line.trim_ascii())
-                    ),
-                ));
+                if extra.0 == 0 {
+                    extra.1 = *number;
+                }
+                extra.0 += 1;
             }
         }
-        Ok(())
+    }
+
+    /// How many ASCII lines held values beyond those the header declares, and the
+    /// number of the first (`None` when there were none).
+    pub(crate) fn extra_values(&self) -> Option<(u64, u64)> {
+        match self {
+            Source::Ascii { extra, .. } if extra.0 > 0 => Some(*extra),
+            _ => None,
+        }
     }
 
     /// Reads one value of type `ty`.
