@@ -75,7 +75,7 @@ pub fn measure(
         last = Some(done);
     }
     let done = last.expect("at least one run");
-    let primitives = done.ordered().map_or(0, |o| o.fragments.len());
+    let primitives = done.ordered().map_or(0, |o| o.stats.fragments_out);
     let pic = done.picture().context("a painter's render has a picture")?;
     let svg = std::fs::read(&path)?;
     Ok(Measured {

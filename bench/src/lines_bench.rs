@@ -90,7 +90,7 @@ pub fn run(a: LinesArgs) -> Result<()> {
     let faces_only = order(&s, &cam, &opts)?;
     let t_faces = t0.elapsed().as_secs_f64() * 1e3;
     let t1 = Instant::now();
-    let (ordered, marks) = order_with_marks(&s, &cam, &opts)?;
+    let (mut ordered, marks) = order_with_marks(&s, &cam, &opts)?;
     let t_all = t1.elapsed().as_secs_f64() * 1e3;
     let st = marks.stats;
     let mut out = String::new();
@@ -117,7 +117,7 @@ pub fn run(a: LinesArgs) -> Result<()> {
         st.markers_in,
         st.exact_tests
     );
-    let pic = picture_with_marks(&s, &ordered, &marks, &Style::default());
+    let pic = picture_with_marks(&s, &mut ordered, &marks, &Style::default());
     for f in [Format::Svg, Format::Pdf, Format::Eps, Format::Png] {
         let t = Instant::now();
         let mut buf = Vec::new();

@@ -483,14 +483,14 @@ impl PyScene {
         let cam =
             limn::camera(&self.scene, &view, self.settings.size, &self.name).map_err(raise)?;
         let oo = limn::order_options(&view, &self.settings).map_err(raise)?;
-        let (ordered, marks) = py
+        let (mut ordered, marks) = py
             .detach(|| order_with_marks(&self.scene, &cam, &oo))
             .map_err(value_error)?;
         let style = Style {
             seams,
             ..Style::default()
         };
-        let pic = picture_with_marks(&self.scene, &ordered, &marks, &style);
+        let pic = picture_with_marks(&self.scene, &mut ordered, &marks, &style);
         let polys = pic
             .fragments
             .into_iter()

@@ -193,9 +193,9 @@ fn marks_outputs(scene: &Scene, camera: &Camera, threads: usize) -> (VisibleMark
         .build()
         .expect("thread pool");
     pool.install(|| {
-        let (o, mut marks) =
+        let (mut o, mut marks) =
             order_with_marks(scene, camera, &OrderOptions::default()).expect("orderable");
-        let pic = picture_with_marks(scene, &o, &marks, &Style::default());
+        let pic = picture_with_marks(scene, &mut o, &marks, &Style::default());
         marks.stats.ms = 0;
         let bytes = Format::ALL
             .iter()

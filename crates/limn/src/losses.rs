@@ -73,7 +73,7 @@ pub fn losses(
         ));
     }
     let marks_painted = ps.lines + ps.markers + ps.labels > 0;
-    if ordered.fragments.is_empty() && !(marks_painted && scene.faces.is_empty()) {
+    if ordered.stats.fragments_out == 0 && !(marks_painted && scene.faces.is_empty()) {
         let what = if marks_painted {
             "no face is drawn"
         } else {

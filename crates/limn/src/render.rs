@@ -65,7 +65,9 @@ struct Parts {
 }
 
 impl Rendered<'_> {
-    /// The ordering's result (`None` for the image-space methods).
+    /// The ordering's result (`None` for the image-space methods), without its fragments:
+    /// they are released once composed into the picture (their count is
+    /// [`limn_depthsort::Stats::fragments_out`]).
     pub fn ordered(&self) -> Option<&Ordered> {
         self.parts.as_ref().map(|p| &p.ordered)
     }
@@ -189,15 +191,17 @@ fn run<'a>(
         hidden_line_scene(scene, &cam, h, fill)
     });
     let ordered_scene = drawn_scene.as_ref().map_or(scene, |d| &d.0);
-    let (ordered, marks) =
+    let (mut ordered, marks) =
         order_scene(ordered_scene, &cam, &oo).map_err(|e| Error::order(e, name))?;
     let t2 = Instant::now();
     ev.phase("writing");
     let tolerance = settings::tolerance(o, scene, format);
     let style = settings::style(o, &loaded.settings, background, tolerance);
     let pic = match (&hidden_line, &drawn_scene) {
-        (Some(h), Some((s, first))) => hidden_line_picture(s, &ordered, &marks, *first, h, &style),
-        _ => picture_with_marks(ordered_scene, &ordered, &marks, &style),
+        (Some(h), Some((s, first))) => {
+            hidden_line_picture(s, &mut ordered, &marks, *first, h, &style)
+        }
+        _ => picture_with_marks(ordered_scene, &mut ordered, &marks, &style),
     };
     let painter: Box<dyn Painter> = match format {
         Format::Tikz => Box::new(TikzPainter::new(TikzOptions {

@@ -154,7 +154,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         // Room for the seam flaps that stay fragments of their own, so that they are put
         // in without moving the fragments to fresh memory (see `seam_flaps_indexed`).
         let count = ordered.fragments.len();
-        let mut fragments = Vec::with_capacity(count + count / FLAP_ROOM + 16);
+        let mut fragments = Vec::with_capacity(count + count * FLAP_ROOM + 16);
         // A group of chunks at a time, each group's chunks moved into the picture before
         // the next is composed: the chunks of all the fragments held beside the picture
         // were a second copy of it in fresh pages.
@@ -192,7 +192,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
             done += frags.len();
             let made = fragments.len() + chunks.iter().map(Vec::len).sum::<usize>();
             let projected = made.saturating_mul(count) / done.max(1);
-            let wanted = projected.max(made) + projected / FLAP_ROOM + 16;
+            let wanted = projected.max(made) + projected * FLAP_ROOM + 16;
             if wanted > fragments.capacity() {
                 fragments.reserve_exact(wanted - fragments.len());
             }
@@ -221,9 +221,13 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
     }
 }
 
-/// One place kept free per this many fragments for separate seam flaps (the 300² height
-/// fields have one per 1,500).
-const FLAP_ROOM: usize = 64;
+/// Places kept free per fragment for separate seam flaps, as many as their blocks make
+/// room for (see `seam_flaps_indexed`; a smooth mesh has about one and a half per
+/// triangle, the 300² height fields one per 1,500). Room never written is address space
+/// only; one place per 64 fragments made a smooth mesh's flaps move the picture to a
+/// new vector while the old one, the flaps and the new one were all held (the old one
+/// was 62 MB of the peak on a million faces).
+const FLAP_ROOM: usize = 2;
 
 /// Parallel tasks composed before their fragments are moved into the picture.
 const CHUNKS_PER_GROUP: usize = 64;

@@ -48,10 +48,11 @@ impl Default for HiddenLineStyle {
 /// The picture of a hidden-line drawing: `scene` is the scene with its feature edges
 /// appended to its lines from `first_edge` on, its materials the fill colour (the `limn`
 /// crate's `hidden_line_scene`); `ordered` and `marks` come from
-/// `limn_depthsort::order_with_marks`.
+/// `limn_depthsort::order_with_marks`; the ordered fragments are released once composed
+/// (see [`picture_with_marks`]).
 pub fn hidden_line_picture(
     scene: &Scene,
-    ordered: &Ordered,
+    ordered: &mut Ordered,
     marks: &VisibleMarks,
     first_edge: usize,
     style: &HiddenLineStyle,

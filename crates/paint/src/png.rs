@@ -23,6 +23,7 @@
 //! the pixel's centre under the fragment's projective map (perspective-correct, bilinear,
 //! repeating). With supersampling, each sample is textured and the samples averaged.
 
+use std::borrow::Cow;
 use std::cell::RefCell;
 use std::io::Write;
 
@@ -83,31 +84,14 @@ impl PngPainter {
             s -= 1;
         }
         if !self.options.anti_alias || s == 1 || px > self.options.max_pixels || px == 0 {
-            return self.render_direct(picture);
+            return self.render_direct(picture, 1);
         }
-        let scale = f64::from(s);
-        let mut big = picture.clone();
-        big.width = picture.width * s;
-        big.height = picture.height * s;
-        for f in &mut big.fragments {
-            for p in &mut f.points {
-                p[0] *= scale;
-                p[1] *= scale;
-            }
-            if let Some(t) = &mut f.texture {
-                **t = t.scaled(scale);
-            }
-        }
-        if let Some(o) = &mut big.outline {
-            o.width *= scale;
-        }
-        big.marks = picture.marks.iter().map(|m| scaled(m, scale)).collect();
         let inner = PngPainter::new(PngOptions {
             anti_alias: false,
             max_pixels: u64::MAX,
             supersample: 1,
         });
-        let (pixmap, stats) = inner.render_direct(&big)?;
+        let (pixmap, stats) = inner.render_direct(picture, s)?;
         let small =
             downsample(&pixmap, s, picture.width, picture.height).ok_or(PaintError::Size {
                 width: picture.width,
@@ -117,10 +101,22 @@ impl PngPainter {
         Ok((small, stats))
     }
 
-    /// Rasterises at the picture's own size.
-    fn render_direct(&self, picture: &Picture) -> Result<(Pixmap, PaintStats), PaintError> {
+    /// Rasterises the picture `scale` times larger than its own size (its fragments and
+    /// marks scaled as they are drawn: a copy of a large picture scaled was as large as
+    /// the picture).
+    fn render_direct(
+        &self,
+        picture: &Picture,
+        scale: u32,
+    ) -> Result<(Pixmap, PaintStats), PaintError> {
         let checked = check(picture)?;
-        let (width, height) = (picture.width, picture.height);
+        let checked = if scale == 1 {
+            checked
+        } else {
+            checked.scaled(picture, scale)
+        };
+        let k = f64::from(scale);
+        let (width, height) = (picture.width * scale, picture.height * scale);
         if u64::from(width) * u64::from(height) > self.options.max_pixels {
             return Err(PaintError::Size {
                 width,
@@ -186,7 +182,7 @@ impl PngPainter {
                     }
                     Style::Gouraud(a) => gouraud(&mut pixmap, run, &path, a, aa),
                     Style::Textured(_, a) => {
-                        textured(&mut pixmap, run, &path, a, aa, &picture.textures)
+                        textured(&mut pixmap, run, &path, a, aa, &picture.textures, k)
                     }
                 }
                 builder = Some(path.clear());
@@ -226,7 +222,12 @@ impl PngPainter {
                 pixmap: &mut pixmap,
                 aa,
             };
-            paint_mark(m, &checked.guard, &mut sink, &mut stats.borrow_mut())
+            let m = if scale == 1 {
+                Cow::Borrowed(m)
+            } else {
+                Cow::Owned(scaled(m, k))
+            };
+            paint_mark(&m, &checked.guard, &mut sink, &mut stats.borrow_mut())
         };
         let counts = walk_with_marks(
             picture,
@@ -436,7 +437,18 @@ fn textured(
     alpha: u8,
     aa: bool,
     textures: &[std::sync::Arc<limn_scene::Texture>],
+    scale: f64,
 ) {
+    // Each fragment's map for the page as drawn (`scale` times the picture's).
+    let maps: Vec<Option<super::TextureMap>> = run
+        .iter()
+        .map(|f| {
+            f.src
+                .texture
+                .as_deref()
+                .map(|m| if scale == 1.0 { *m } else { m.scaled(scale) })
+        })
+        .collect();
     let (w, h) = (pixmap.width(), pixmap.height());
     let r = path.bounds();
     let x0 = (r.left().floor().max(0.0) as u32).min(w);
@@ -507,7 +519,7 @@ fn textured(
                     c
                 }
             };
-            let c = match &f.src.texture {
+            let c = match &maps[best.1] {
                 Some(map) => {
                     let tex = &textures[map.texture as usize];
                     let t = match map.st_at([px, py]) {

@@ -172,16 +172,26 @@ pub(crate) fn check(picture: &Picture) -> Result<Checked, PaintError> {
             }
         }
     }
-    let w = f64::from(picture.width);
-    let h = f64::from(picture.height);
-    let margin = w.max(h) + 2.0 * outline.map_or(0.0, |o| o.width);
     Ok(Checked {
         outline,
-        guard: Guard {
-            min: [-margin, -margin],
-            max: [w + margin, h + margin],
-        },
+        guard: Guard::of_page(picture.width, picture.height, outline),
     })
+}
+
+impl Checked {
+    /// The checked picture drawn `scale` times larger (supersampled): the outline's width
+    /// and the guard box grown as the page, and the guard scaling each fragment's corners
+    /// as it clips them (see [`Guard::clip`]), so that the picture need not be copied.
+    pub(crate) fn scaled(self, picture: &Picture, scale: u32) -> Checked {
+        let k = f64::from(scale);
+        let outline = self.outline.map(|o| Outline {
+            width: o.width * k,
+            ..o
+        });
+        let mut guard = Guard::of_page(picture.width * scale, picture.height * scale, outline);
+        guard.scale = k;
+        Checked { outline, guard }
+    }
 }
 
 /// Is the fragment paintable at all (see the module docs for the rule)?
@@ -200,6 +210,9 @@ pub(crate) fn is_valid(f: &PaintFragment) -> bool {
 pub(crate) struct Guard {
     min: [f64; 2],
     max: [f64; 2],
+    /// What fragments' corners are multiplied by before they are clipped (1 but for a
+    /// supersampled page).
+    scale: f64,
 }
 
 /// The result of clipping one fragment.
@@ -223,6 +236,19 @@ struct V {
 }
 
 impl Guard {
+    /// The box of a page `width` × `height` with `outline`: the page grown on every side
+    /// by its larger side and twice the outline's width.
+    fn of_page(width: u32, height: u32, outline: Option<Outline>) -> Guard {
+        let w = f64::from(width);
+        let h = f64::from(height);
+        let margin = w.max(h) + 2.0 * outline.map_or(0.0, |o| o.width);
+        Guard {
+            min: [-margin, -margin],
+            max: [w + margin, h + margin],
+            scale: 1.0,
+        }
+    }
+
     /// The box as (min, max) corners.
     pub(crate) fn bounds(&self) -> ([f64; 2], [f64; 2]) {
         (self.min, self.max)
@@ -233,19 +259,29 @@ impl Guard {
         p[0] >= self.min[0] && p[0] <= self.max[0] && p[1] >= self.min[1] && p[1] <= self.max[1]
     }
 
-    /// Clips a valid fragment to the box.
+    /// Clips a valid fragment to the box (its corners scaled by the guard's scale).
     pub fn clip<'a>(&self, f: &'a PaintFragment) -> Clipped<'a> {
-        if f.points.iter().all(|&p| self.contains(p)) {
+        let points: Cow<'a, [[f64; 2]]> = if self.scale == 1.0 {
+            Cow::Borrowed(&f.points)
+        } else {
+            let k = self.scale;
+            let scaled: Vec<[f64; 2]> = f.points.iter().map(|p| [p[0] * k, p[1] * k]).collect();
+            if !scaled.iter().flatten().all(|v| v.is_finite()) {
+                return Clipped::Overflow;
+            }
+            Cow::Owned(scaled)
+        };
+        if points.iter().all(|&p| self.contains(p)) {
             return Clipped::Inside(Frag {
                 src: f,
-                points: Cow::Borrowed(&f.points),
+                points,
                 edges: Cow::Borrowed(&f.original_edges),
                 colors: f.vertex_colors.as_deref().map(Cow::Borrowed),
             });
         }
-        let mut poly: Vec<V> = (0..f.points.len())
+        let mut poly: Vec<V> = (0..points.len())
             .map(|i| V {
-                p: f.points[i],
+                p: points[i],
                 c: f.vertex_colors.as_ref().map_or(f.fill, |cs| cs[i]),
                 e: f.original_edges.get(i).copied().unwrap_or(false),
             })
