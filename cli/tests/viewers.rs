@@ -544,3 +544,101 @@ fn a_hidden_line_drawing_is_seamless_in_every_viewer() {
         Page::Counted,
     );
 }
+
+/// An 8 × 8 PNG whose red rises to the right and green downwards, 14 levels a texel
+/// (gently: poppler magnifies images without interpolating, so a texel's edge may differ
+/// by half a step): every mirror image and stretched edge shows where it samples.
+fn ramps_png() -> Vec<u8> {
+    let mut out = Vec::new();
+    let mut e = png::Encoder::new(&mut out, 8, 8);
+    e.set_color(png::ColorType::Rgb);
+    e.set_depth(png::BitDepth::Eight);
+    let mut w = e.write_header().unwrap();
+    let data: Vec<u8> = (0..8u8)
+        .flat_map(|j| (0..8u8).flat_map(move |i| [80 + 14 * i, 80 + 14 * j, 120]))
+        .collect();
+    w.write_image_data(&data).unwrap();
+    drop(w);
+    out
+}
+
+/// A glTF of two unit quads side by side (x 0 … 1 and 1.2 … 2.2, facing +z), texture
+/// coordinates -1 … 2 along both axes: the left one `MIRRORED_REPEAT` along s and
+/// `CLAMP_TO_EDGE` along t, the right one the other way round. Files `wrap.gltf`,
+/// `wrap.bin`, `ramps.png`.
+fn wrap_modes_gltf(dir: &Path) {
+    let mut bin = Vec::new();
+    for x0 in [0f32, 1.2] {
+        for [x, y] in [[0f32, 0.], [1., 0.], [1., 1.], [0., 1.]] {
+            for c in [x0 + x, y, 0.0] {
+                bin.extend_from_slice(&c.to_le_bytes());
+            }
+        }
+    }
+    for _ in 0..2 {
+        for [s, t] in [[-1f32, 2.], [2., 2.], [2., -1.], [-1., -1.]] {
+            bin.extend_from_slice(&s.to_le_bytes());
+            bin.extend_from_slice(&t.to_le_bytes());
+        }
+    }
+    for i in [0u16, 1, 2, 0, 2, 3] {
+        bin.extend_from_slice(&i.to_le_bytes());
+    }
+    put(dir, "wrap.bin", &bin);
+    put(dir, "ramps.png", ramps_png());
+    let gltf = r#"{
+  "asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_materials_unlit"],
+  "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [
+    {"attributes": {"POSITION": 0, "TEXCOORD_0": 2}, "indices": 4, "material": 0},
+    {"attributes": {"POSITION": 1, "TEXCOORD_0": 3}, "indices": 4, "material": 1}]}],
+  "materials": [
+    {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}},
+     "extensions": {"KHR_materials_unlit": {}}},
+    {"pbrMetallicRoughness": {"baseColorTexture": {"index": 1}},
+     "extensions": {"KHR_materials_unlit": {}}}],
+  "textures": [{"source": 0, "sampler": 0}, {"source": 0, "sampler": 1}],
+  "samplers": [{"wrapS": 33648, "wrapT": 33071}, {"wrapS": 33071, "wrapT": 33648}],
+  "images": [{"uri": "ramps.png"}],
+  "buffers": [{"uri": "wrap.bin", "byteLength": 172}],
+  "bufferViews": [
+    {"buffer": 0, "byteOffset": 0, "byteLength": 96},
+    {"buffer": 0, "byteOffset": 96, "byteLength": 64},
+    {"buffer": 0, "byteOffset": 160, "byteLength": 12}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+     "min": [0, 0, 0], "max": [1, 1, 0]},
+    {"bufferView": 0, "byteOffset": 48, "componentType": 5126, "count": 4, "type": "VEC3",
+     "min": [1.2, 0, 0], "max": [2.2, 1, 0]},
+    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+    {"bufferView": 1, "byteOffset": 32, "componentType": 5126, "count": 4, "type": "VEC2"},
+    {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}]
+}"#;
+    put(dir, "wrap.gltf", gltf);
+}
+
+#[test]
+fn mirrored_and_clamped_textures_agree_in_every_viewer() {
+    // Seen head-on, where ghostscript interpolates images as the others do.
+    let dir = tempdir();
+    wrap_modes_gltf(dir.path());
+    let r = limn(dir.path(), &["render", "wrap.gltf", "-o", "w.png"]);
+    assert_eq!(r.code, 0, "{}", r.stderr);
+    assert!(!r.stderr.contains("warning"), "{}", r.stderr);
+    agrees_in_viewers(
+        dir.path(),
+        "wrap-modes",
+        &[
+            "wrap.gltf",
+            "--size",
+            "480x240",
+            "--eye",
+            "1.1,0.5,2.2",
+            "--target",
+            "1.1,0.5,0",
+        ],
+        Page::LeftOut,
+    );
+}

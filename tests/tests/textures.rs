@@ -9,7 +9,7 @@ use limn_paint::{
     affine_pieces, picture, EpsPainter, Painter, PdfPainter, Picture, PngOptions, PngPainter,
     Style, SvgPainter, MAX_PERSPECTIVE_ERROR,
 };
-use limn_scene::{Camera, Material, Scene, Texture};
+use limn_scene::{Camera, Material, Scene, Texture, Wrap};
 
 /// An `n` × `n` checker of two soft colours (so that bilinear blending stays gentle).
 fn checker(n: u32) -> Arc<Texture> {
@@ -680,6 +680,132 @@ fn vertex_colours_multiply_the_texture() {
                 (got - expected).abs() < 30.0,
                 "corner {v}: channel {k} is {got}, expected about {expected}"
             );
+        }
+    }
+}
+
+/// An 8 × 8 texture whose red rises along s and green along t, over a soft checker of
+/// blue: every repetition, mirror image and edge strip tells where it samples.
+fn ramps() -> Arc<Texture> {
+    let mut rgba = Vec::new();
+    for j in 0..8u8 {
+        for i in 0..8u8 {
+            let b = if (i + j) % 2 == 0 { 90 } else { 150 };
+            rgba.extend_from_slice(&[50 + 22 * i, 50 + 22 * j, b, 255]);
+        }
+    }
+    Arc::new(Texture::new("ramps", 8, 8, rgba).unwrap())
+}
+
+/// The colour of a texture under `wrap` at `st`, sampled as OpenGL and glTF
+/// define it (bilinear between texel centres, each neighbour's index wrapped by the
+/// mode), for 8-bit channels.
+fn wrapped_sample(t: &Texture, wrap: [Wrap; 2], st: [f64; 2]) -> [f64; 3] {
+    let index = |i: i64, n: i64, w: Wrap| match w {
+        Wrap::Repeat => i.rem_euclid(n),
+        Wrap::ClampToEdge => i.clamp(0, n - 1),
+        Wrap::MirroredRepeat => {
+            let m = i.rem_euclid(2 * n);
+            if m < n {
+                m
+            } else {
+                2 * n - 1 - m
+            }
+        }
+    };
+    let (w, h) = (i64::from(t.width()), i64::from(t.height()));
+    let (x, y) = (st[0] * w as f64 - 0.5, st[1] * h as f64 - 0.5);
+    let (ax, ay) = (x - x.floor(), y - y.floor());
+    let (i, j) = (x.floor() as i64, y.floor() as i64);
+    let texel = |i: i64, j: i64| {
+        let (i, j) = (index(i, w, wrap[0]), index(j, h, wrap[1]));
+        let at = 4 * (j * w + i) as usize;
+        [0, 1, 2].map(|k| f64::from(t.rgba()[at + k]))
+    };
+    let (c00, c10, c01, c11) = (
+        texel(i, j),
+        texel(i + 1, j),
+        texel(i, j + 1),
+        texel(i + 1, j + 1),
+    );
+    [0, 1, 2].map(|k| {
+        let top = c00[k] + (c10[k] - c00[k]) * ax;
+        let bottom = c01[k] + (c11[k] - c01[k]) * ax;
+        top + (bottom - top) * ay
+    })
+}
+
+#[test]
+fn wrap_modes_draw_mirrored_and_clamped_texels() {
+    // A wall [-1, 1]² seen head-on with texture coordinates -1 … 2 along both axes
+    // over an 8 × 8 texture, under every pair of wrap modes: the PNG painter's pixels
+    // against the wrapped sampler computed here, and SVG (resvg), PDF and EPS
+    // (ghostscript) against the PNG painter.
+    let camera = Camera::new(DVec3::new(0.0, 0.0, 2.6), DVec3::ZERO, 240, 180);
+    let modes = [Wrap::Repeat, Wrap::MirroredRepeat, Wrap::ClampToEdge];
+    let texture = ramps();
+    for ws in modes {
+        for wt in modes {
+            let wrap = [ws, wt];
+            let (mut scene, outline) = textured_wall(1, false, &camera);
+            scene.materials[0].texture = Some(texture.clone());
+            for st in &mut scene.texcoords {
+                *st = st.map(|c| 1.5 * c - 1.0);
+            }
+            let changed = limn_scene::wrap_material_texture(&mut scene, 0, wrap).unwrap();
+            assert_eq!(changed, wrap != [Wrap::Repeat; 2]);
+            let mut pic = ordered_picture(&scene, &camera);
+            pic.background = Some([1.0; 4]);
+            let png = png_pixels(&pic);
+            // The wall's corners on the page: top left (s, t) = (-1, 2), bottom right
+            // (2, -1); head-on, the page maps affinely onto texture coordinates.
+            let (lo, hi) = (outline[0], outline[2]);
+            let mut worst = 0.0f64;
+            let mut compared = 0;
+            for (i, px) in png.chunks_exact(4).enumerate() {
+                let (x, y) = ((i as u32 % 240) as f64 + 0.5, (i as u32 / 240) as f64 + 0.5);
+                let inner =
+                    x > lo[0] + 2.0 && x < hi[0] - 2.0 && y > lo[1] + 2.0 && y < hi[1] - 2.0;
+                if !inner {
+                    continue;
+                }
+                let st = [
+                    -1.0 + 3.0 * (x - lo[0]) / (hi[0] - lo[0]),
+                    2.0 - 3.0 * (y - lo[1]) / (hi[1] - lo[1]),
+                ];
+                let want = wrapped_sample(&texture, wrap, st);
+                for k in 0..3 {
+                    worst = worst.max((f64::from(px[k]) - want[k]).abs());
+                }
+                compared += 1;
+            }
+            let what = format!("{ws:?}/{wt:?}");
+            eprintln!("{what}: PNG against the wrapped sampler: worst {worst:.1} over {compared}");
+            assert!(compared > 10_000, "{what}: {compared}");
+            // Up to rounding (8-bit channels, the painter's own page-to-texture map); a
+            // texel out of place is off by 22 levels or more.
+            assert!(worst <= 6.0, "{what}: worst {worst}");
+            let (_, svg) = svg_pixels(&pic);
+            assert_agree(&png, &svg, pic.width, &outline, &format!("{what}, svg"));
+            let painters: [(&str, &dyn Painter); 2] = [
+                ("eps", &EpsPainter::default()),
+                ("pdf", &PdfPainter::default()),
+            ];
+            for (ext, painter) in painters {
+                let mut file = Vec::new();
+                painter.paint(&pic, &mut file).unwrap();
+                let Some(rendered) = ghostscript_pixels(&file, ext) else {
+                    return;
+                };
+                assert_agree_within(
+                    &png,
+                    &rendered,
+                    pic.width,
+                    &outline,
+                    &format!("{what}, {ext}"),
+                    FEW_GHOSTSCRIPT,
+                );
+            }
         }
     }
 }

@@ -107,9 +107,10 @@ impl Library {
 ///
 /// Options: `-s u v` (scale) and `-o u v` (offset) transform texture coordinates as
 /// `(u, v) ↦ (s·u + o, …)` (a third number, for 3D textures, is read and ignored);
-/// `-blendu`, `-blendv`, `-cc`, `-boost`, `-texres` and `-bm` change nothing in
-/// limn's pictures and are read and ignored; `-clamp on`, `-mm`, `-t` and `-imfchan`
-/// would change colours and are refused with the line.
+/// `-clamp on` extends the edge texels outside [0, 1] instead of repeating (see
+/// [`limn_scene::texture_wrap`]); `-blendu`, `-blendv`, `-cc`, `-boost`, `-texres` and
+/// `-bm` change nothing in limn's pictures and are read and ignored; `-mm`, `-t` and
+/// `-imfchan` would change colours and are refused with the line.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct MapRef {
     /// The file as written.
@@ -120,6 +121,8 @@ pub(crate) struct MapRef {
     pub(crate) scale: [f64; 2],
     /// `-o`: offset of `u` and `v`.
     pub(crate) offset: [f64; 2],
+    /// `-clamp on`: the edge texels extend outside [0, 1] (else the texture repeats).
+    pub(crate) clamp: bool,
 }
 
 /// Parses MTL text into `lib`, appending warnings.
@@ -289,6 +292,7 @@ impl Opacity {
 fn map_kd(path: &Path, n: u64, rest: &[u8]) -> Result<MapRef, LoadError> {
     let mut scale = [1.0, 1.0];
     let mut offset = [0.0, 0.0];
+    let mut clamp = false;
     let toks: Vec<&[u8]> = tokens(rest).collect();
     let mut i = 0;
     // Up to `max` numbers after an option.
@@ -345,11 +349,8 @@ fn map_kd(path: &Path, n: u64, rest: &[u8]) -> Result<MapRef, LoadError> {
                         format!("map_Kd {} needs on or off", lossy(t)),
                     ));
                 }
-                if t == b"-clamp" && v == b"on" {
-                    return Err(LoadError::Unsupported {
-                        at: Location::line(path, n),
-                        what: "map_Kd -clamp on (textures repeat)".into(),
-                    });
+                if t == b"-clamp" {
+                    clamp = v == b"on";
                 }
                 i += 1;
             }
@@ -377,6 +378,7 @@ fn map_kd(path: &Path, n: u64, rest: &[u8]) -> Result<MapRef, LoadError> {
         at: Location::line(path, n),
         scale,
         offset,
+        clamp,
     })
 }
 
@@ -517,7 +519,7 @@ mod tests {
     #[test]
     fn map_kd_options_are_read_or_refused() {
         let src = b"newmtl a\nmap_Kd -s 2 3 1 -o 0.5 -blendu off -bm 1 my tex.png\n\
-                    newmtl b\nmap_Kd plain.jpg\n";
+                    newmtl b\nmap_Kd -clamp on plain.jpg\n";
         let mut lib = Library::default();
         let mut w = Vec::new();
         parse(src, Path::new("a.mtl"), &mut lib, &mut w).unwrap();
@@ -527,8 +529,9 @@ mod tests {
         assert_eq!((a.scale, a.offset), ([2.0, 3.0], [0.5, 0.0]));
         assert_eq!(a.at, Location::line(Path::new("a.mtl"), 2));
         assert_eq!(lib.maps["b"].file, "plain.jpg");
+        assert!(lib.maps["b"].clamp && !a.clamp);
         for (bad, what) in [
-            ("map_Kd -clamp on x.png", "-clamp on"),
+            ("map_Kd -clamp yes x.png", "-clamp needs on or off"),
             ("map_Kd -mm 0 1 x.png", "option -mm"),
             ("map_Kd -s x.png", "-s needs numbers"),
             ("map_Kd -s 1 nan x.png", "non-finite"),

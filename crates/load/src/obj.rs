@@ -116,6 +116,8 @@ struct Obj<'a> {
     textured: HashMap<u32, Option<UvTransform>>,
     /// Transformed copies of texture coordinates: (index, material) → index.
     moved: HashMap<(u32, u32), u32>,
+    /// Scene materials whose `map_Kd` is `-clamp on`, and where it was said.
+    clamp_maps: Vec<(u32, Location)>,
     /// Per vertex, its colour's index in the scene ([`NO_COLOR`] for none); empty
     /// until the first vertex with a colour.
     vertex_color: Vec<u32>,
@@ -161,6 +163,7 @@ fn parse_with(
         images: HashMap::default(),
         textured: HashMap::default(),
         moved: HashMap::default(),
+        clamp_maps: Vec::new(),
         vertex_color: Vec::new(),
         white: None,
         clamped: None,
@@ -176,6 +179,14 @@ fn parse_with(
     // A library's error comes first: it was named above any line the OBJ failed at.
     obj.libraries.wait(&mut obj.scene.warnings)?;
     read?;
+    for (material, at) in std::mem::take(&mut obj.clamp_maps) {
+        let clamp = [limn_scene::Wrap::ClampToEdge; 2];
+        if let Err(e) = limn_scene::wrap_material_texture(&mut obj.scene, material, clamp) {
+            obj.scene
+                .warnings
+                .push(format!("{at}: map_Kd -clamp on: {e}; the texture repeats"));
+        }
+    }
     if let Some((line, count)) = obj.unnamed {
         let more = match count {
             1 => String::new(),
@@ -544,7 +555,12 @@ impl Obj<'_> {
             }
         };
         self.scene.materials[material as usize].texture = Some(texture);
-        let moves = map.scale != [1.0, 1.0] || map.offset != [0.0, 0.0];
+        if map.clamp {
+            self.clamp_maps.push((material, map.at.clone()));
+        }
+        // Clamped maps move their coordinates once all faces are read: they get copies
+        // of their own.
+        let moves = map.scale != [1.0, 1.0] || map.offset != [0.0, 0.0] || map.clamp;
         Ok(moves.then_some((map.scale, map.offset)))
     }
 

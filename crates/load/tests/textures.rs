@@ -283,3 +283,65 @@ fn scene_files_keep_each_mesh_textured() {
     assert!(t(1).is_some() && t(2).is_some());
     assert!(limn_scene::Effects::of(&s).texture);
 }
+
+#[test]
+fn gltf_wrap_modes_are_drawn_through_a_repeating_texture() {
+    // MIRRORED_REPEAT along s: the texture and its mirror image, read at s / 2;
+    // CLAMP_TO_EDGE along t: a copy of the edge row on either side, read at
+    // (4t + 1) / 6. No warning: both are drawn.
+    let d = dir();
+    write(d.path(), "tex/c.png", checker());
+    let gltf = textured_gltf(&data_uri(&textured_buffer()), r#"{"uri": "tex/c.png"}"#).replace(
+        r#""textures": [{"source": 0}],"#,
+        r#""textures": [{"source": 0, "sampler": 0}],
+  "samplers": [{"wrapS": 33648, "wrapT": 33071}],"#,
+    );
+    let s = ok(&write(d.path(), "w.gltf", gltf));
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    let t = s.materials[0].texture.as_ref().unwrap();
+    assert_eq!((t.width(), t.height()), (8, 6));
+    // Row 0 copies row 0 of the checker (the clamped edge), mirrored after 4 texels.
+    let row0: Vec<u8> = (0..8).map(|i| t.rgba()[4 * i]).collect();
+    assert_eq!(row0, [255, 0, 255, 0, 0, 255, 0, 255]);
+    assert_eq!(&t.rgba()[..32], &t.rgba()[32..64]);
+    let want = [
+        [0.0, 5.0 / 6.0],
+        [0.5, 5.0 / 6.0],
+        [0.5, 1.0 / 6.0],
+        [0.0, 1.0 / 6.0],
+    ];
+    assert!(close(&s.texcoords, &want), "{:?}", s.texcoords);
+}
+
+/// Whether two lists of texture coordinates agree up to rounding.
+fn close(a: &[[f64; 2]], b: &[[f64; 2]]) -> bool {
+    a.len() == b.len()
+        && a.iter()
+            .flatten()
+            .zip(b.iter().flatten())
+            .all(|(x, y)| (x - y).abs() < 1e-12)
+}
+
+#[test]
+fn mtl_clamp_on_extends_the_edge_texels() {
+    let d = dir();
+    write(d.path(), "img/c.png", checker());
+    write(
+        d.path(),
+        "m.mtl",
+        "newmtl tex\nKd 1 1 1\nillum 0\nmap_Kd -clamp on img/c.png\n",
+    );
+    let s = ok(&write(d.path(), "q.obj", QUAD));
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+    let t = s.materials[0].texture.as_ref().unwrap();
+    assert_eq!((t.width(), t.height()), (6, 6));
+    let at = |i: usize, j: usize| t.rgba()[4 * (6 * j + i)];
+    // The corner texel of the checker (white) fills the 2 × 2 corner; the edges extend.
+    assert_eq!([at(0, 0), at(1, 0), at(0, 1), at(1, 1)], [255; 4]);
+    assert_eq!((at(2, 0), at(2, 1), at(5, 5)), (0, 0, 255));
+    // The face's coordinates (copies of its own) moved onto the inner 4 × 4 texels.
+    let f = s.faces[0].texcoords.as_ref().unwrap();
+    let st: Vec<[f64; 2]> = f.iter().map(|&i| s.texcoords[i as usize]).collect();
+    let (a, b) = (1.0 / 6.0, 5.0 / 6.0);
+    assert!(close(&st, &[[a, b], [b, b], [b, a], [a, a]]), "{st:?}");
+}

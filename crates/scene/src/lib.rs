@@ -31,6 +31,7 @@ mod model;
 mod shade;
 pub mod shapes;
 pub mod texture;
+pub mod texture_wrap;
 
 pub use camera::{Camera, CameraError, Projected, Projection, Viewpoint, DEFAULT_VIEW_DIRECTION};
 pub use face_colors::FaceColors;
@@ -44,3 +45,4 @@ pub use shade::{
     shade_sided_in_shadow, shade_tinted_in_shadow, Effects, FaceNormals, Rgb,
 };
 pub use texture::{FaceTexcoords, Texture, TextureError};
+pub use texture_wrap::{wrap_material_texture, Wrap, WrapError};

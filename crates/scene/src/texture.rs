@@ -9,7 +9,8 @@
 //! **Sampling** ([`Texture::sample`]) is bilinear between texel centres, texel `(i, j)`
 //! having its centre at `((i + ½)/W, (j + ½)/H)`, and wraps by repetition in both
 //! directions (the default of OBJ and glTF): coordinates are taken modulo 1, and the
-//! neighbours of a texel on the last column or row are those of the first. The texture's
+//! neighbours of a texel on the last column or row are those of the first. Other wrap
+//! modes become repetition of a larger texture (see [`crate::texture_wrap`]). The texture's
 //! alpha channel is kept but not drawn: textured faces take their opacity from the
 //! material.
 

@@ -44,6 +44,7 @@ use ::gltf::mesh::Mode;
 use ::gltf::texture::WrappingMode;
 use ::gltf::Document;
 use glam::DMat4;
+use limn_scene::Wrap;
 
 use super::{check_u32, transform, LoadError, LoadOptions, Location};
 use limn_scene::{Face, Material, Scene, Texture};
@@ -160,7 +161,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         camera_tried: false,
         masked: Default::default(),
         alpha_warned: Default::default(),
-        samplers: Default::default(),
+        wraps: Default::default(),
     };
     b.walk(&doc)?;
     for (m, faces) in &b.masked {
@@ -171,13 +172,14 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
             m.map_or("default".to_string(), |i| i.to_string())
         ));
     }
-    for (sampler, (modes, prims)) in &b.samplers {
-        b.scene.warnings.push(format!(
-            "{} (sampler {}): wrap modes {modes} are drawn as REPEAT ({prims} primitives \
-             reach outside [0, 1])",
-            b.path.display(),
-            sampler.map_or("default".to_string(), |i| i.to_string())
-        ));
+    for (&material, &(sampler, wrap)) in &b.wraps {
+        if let Err(e) = limn_scene::wrap_material_texture(&mut b.scene, material, wrap) {
+            b.scene.warnings.push(format!(
+                "{} (sampler {}): {e}; drawn as REPEAT",
+                b.path.display(),
+                sampler.map_or("default".to_string(), |i| i.to_string())
+            ));
+        }
     }
     if b.skipped_modes > 0 {
         b.scene.warnings.push(format!(
@@ -278,9 +280,10 @@ struct Builder<'a, 'b> {
     masked: std::collections::BTreeMap<Option<usize>, usize>,
     /// glTF materials whose texture alpha was warned about.
     alpha_warned: std::collections::BTreeSet<Option<usize>>,
-    /// Samplers drawn as `REPEAT` over coordinates outside [0, 1]: by sampler index,
-    /// its wrap modes and the primitives.
-    samplers: std::collections::BTreeMap<Option<usize>, (String, usize)>,
+    /// Scene materials whose texture is sampled other than by repetition: the sampler
+    /// and its wrap modes (drawn once every primitive is read, see
+    /// [`limn_scene::texture_wrap`]).
+    wraps: std::collections::BTreeMap<u32, (Option<usize>, [Wrap; 2])>,
 }
 
 impl Builder<'_, '_> {
@@ -579,14 +582,13 @@ impl Builder<'_, '_> {
         };
         self.texture_alpha(prim, &t);
         let sampler = texture.sampler();
-        let (ws, wt) = (sampler.wrap_s(), sampler.wrap_t());
-        if (ws != WrappingMode::Repeat || wt != WrappingMode::Repeat)
-            && st.iter().flatten().any(|&c| !(0.0..=1.0).contains(&c))
-        {
-            self.samplers
-                .entry(sampler.index())
-                .or_insert_with(|| (format!("{ws:?}/{wt:?}"), 0))
-                .1 += 1;
+        let wrap = [sampler.wrap_s(), sampler.wrap_t()].map(|m| match m {
+            WrappingMode::Repeat => Wrap::Repeat,
+            WrappingMode::MirroredRepeat => Wrap::MirroredRepeat,
+            WrappingMode::ClampToEdge => Wrap::ClampToEdge,
+        });
+        if wrap != [Wrap::Repeat; 2] {
+            self.wraps.insert(material, (sampler.index(), wrap));
         }
         self.scene.materials[material as usize].texture = Some(t);
         Ok(Some(st))

@@ -3,11 +3,11 @@
 //! beside the glTF file, under the same folder rule as buffers).
 //!
 //! Images are read only for primitives that draw them (a textured material on a
-//! primitive with the texture coordinates), each at most once. Samplers: limn repeats
-//! textures (the glTF default); `CLAMP_TO_EDGE` and `MIRRORED_REPEAT` are drawn as
-//! repeat, with one warning per sampler whose primitives reach outside [0, 1] (inside,
-//! every mode draws the same). `KHR_texture_transform` (offset, rotation, scale, `texCoord`) moves the
-//! coordinates as they are read.
+//! primitive with the texture coordinates), each at most once. Samplers: `wrapS` and
+//! `wrapT` are drawn (`REPEAT`, `MIRRORED_REPEAT`, `CLAMP_TO_EDGE`, see
+//! [`limn_scene::texture_wrap`]); filters are not read (limn samples bilinearly).
+//! `KHR_texture_transform` (offset, rotation, scale, `texCoord`) moves the coordinates
+//! as they are read.
 
 use std::borrow::Cow;
 use std::path::Path;
