@@ -225,7 +225,12 @@ mod tests {
         let mut rgba = Vec::new();
         for j in 0..h {
             for i in 0..w {
-                rgba.extend_from_slice(&[i as u8 * 10, j as u8 * 10, 0, 255]);
+                rgba.extend_from_slice(&[
+                    (i as u8).wrapping_mul(10),
+                    (j as u8).wrapping_mul(10),
+                    0,
+                    255,
+                ]);
             }
         }
         Texture::new("r", w, h, rgba).unwrap()
