@@ -146,7 +146,7 @@ pub fn repeating_form(
         width: nw.min(u64::from(u32::MAX)) as u32,
         height: nh.min(u64::from(u32::MAX)) as u32,
     };
-    if nw * nh > limit || xs.source.is_empty() || ys.source.is_empty() {
+    if nw.saturating_mul(nh) > limit || xs.source.is_empty() || ys.source.is_empty() {
         return Err(too_large);
     }
     let (nw, nh) = (nw as u32, nh as u32);
@@ -311,6 +311,12 @@ mod tests {
         let far = Some([-100.0, 100.0]);
         assert!(matches!(
             repeating_form(&t, [Wrap::ClampToEdge, Wrap::Repeat], [far, None]),
+            Err(WrapError::TooLarge { .. })
+        ));
+        // Both axes beyond every size: refused, no overflow counting the texels.
+        let huge = Some([-1e12, 1e12]);
+        assert!(matches!(
+            repeating_form(&t, [Wrap::ClampToEdge; 2], [huge, huge]),
             Err(WrapError::TooLarge { .. })
         ));
         let near = Some([-0.5, 1.5]);
