@@ -509,13 +509,11 @@ fn smooth_flat_and_translucent_spheres_are_seamless_in_every_viewer() {
     sphere_in_viewers("mixed", "mixed.obj", &[]);
 }
 
+/// Glass cutting into an opaque sphere: its parts behind the sphere are cut off and it
+/// is painted after the opaque pieces, one layer for its back and one for its front;
+/// Phong glass, whose pieces meet at T-junctions a few units in the last place apart,
+/// kept in one layer by its triangles' outlines.
 #[test]
-#[ignore = "translucent pieces that layers cannot hold together: glass cutting into an \
-            opaque sphere (Chromium 99.96 %, rsvg 99.96 %, poppler 99.24 %, gs 98.04 %) \
-            and Phong glass, whose pieces meet at T-junctions a few ulps apart, so that \
-            neighbours overlap and go in different layers (Chromium 99.92 %, rsvg \
-            99.90 %, poppler 99.03 %, gs 97.20 %): the PDF viewers paint the pixels \
-            where two layers meet twice"]
 fn glass_cutting_into_a_sphere_and_phong_glass_are_seamless_in_every_viewer() {
     sphere_in_viewers("cutting", "cutting.obj", &[]);
     sphere_in_viewers("mixed-phong", "mixed.obj", &["--shading", "phong"]);

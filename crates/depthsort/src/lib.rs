@@ -61,6 +61,7 @@ mod split_apart;
 mod sweep;
 #[cfg(test)]
 mod test_scenes;
+mod translucent_last;
 mod view;
 
 use std::time::Instant;
@@ -231,10 +232,18 @@ fn ordered<K: Kernel>(
     } else {
         order
     };
-    let sight = opts.visible.then(|| hiding::Sight {
+    let hides_translucent =
+        translucent_last::occluders(scene, opts, |id| ctx.pieces[id as usize].face, &order);
+    let translucent_last = hides_translucent.is_some();
+    let sight = (opts.visible || translucent_last).then(|| hiding::Sight {
         culled_objects: culled_objects.clone(),
         near,
         order_exact: opts.sort != SortMode::Simple && opts.arith == Arith::Exact,
+        occluders: if opts.visible {
+            hiding::Occluders::All
+        } else {
+            hiding::Occluders::OfTranslucent(hides_translucent.unwrap_or_default())
+        },
     });
     let parts = if scene.shadow_lights().is_empty() && sight.is_none() {
         None
@@ -242,7 +251,7 @@ fn ordered<K: Kernel>(
         let t = Instant::now();
         let parts = hiding::hidden_parts(&ctx, scene, &order, sight.as_ref())?;
         let ms = t.elapsed().as_secs_f64() * 1e3;
-        if opts.visible {
+        if sight.is_some() {
             ctx.stats.ms_visible = ms;
         } else {
             ctx.stats.ms_shadows = ms;
@@ -251,7 +260,17 @@ fn ordered<K: Kernel>(
     };
     let (fragments, polys) = match parts {
         None => fragments(&ctx, &order, with_polygons),
-        Some(parts) => part_fragments(&mut ctx, &order, parts, &mut whole_faces),
+        Some((parts, complete)) => {
+            let mut items: Vec<(u32, (u32, hiding::Parts<K::Polygon>))> = order
+                .iter()
+                .zip(parts)
+                .map(|(&id, parts)| (ctx.pieces[id as usize].face, (id, parts)))
+                .collect();
+            if translucent_last && complete {
+                translucent_last::opaque_first(scene, &mut items);
+            }
+            part_fragments(&mut ctx, items, &mut whole_faces)
+        }
     };
     let t3 = Instant::now();
     let mut stats = ctx.stats;
@@ -335,19 +354,18 @@ fn fragments<K: Kernel>(
 /// than they save).
 const FRAGMENTS_PER_TASK: usize = 1024;
 
-/// [`fragments`] with each piece of `order` replaced by its parts (in order): the
-/// parts the eye cannot see left out (their faces are then not whole), the others with
+/// [`fragments`] of the pieces of `items` (each piece's face, its id and its parts, in
+/// paint order), each piece replaced by its parts: the parts the eye cannot see left out (their faces are then not whole), the others with
 /// the lights they are in the shadow of.
 fn part_fragments<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
-    order: &[u32],
-    parts: Vec<hiding::Parts<K::Polygon>>,
+    items: Vec<(u32, (u32, hiding::Parts<K::Polygon>))>,
     whole_faces: &mut [bool],
 ) -> (Vec<Fragment>, Vec<K::Polygon>) {
-    let mut fragments = Vec::with_capacity(order.len());
-    let mut polys = Vec::with_capacity(order.len());
+    let mut fragments = Vec::with_capacity(items.len());
+    let mut polys = Vec::with_capacity(items.len());
     let mut scratch = Vec::new();
-    for (&id, parts) in order.iter().zip(parts) {
+    for (_, (id, parts)) in items {
         let (face, eye_front) = {
             let p = &ctx.pieces[id as usize];
             (p.face, p.eye_front)

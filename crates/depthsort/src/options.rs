@@ -232,11 +232,13 @@ pub struct Stats {
     /// Milliseconds spent splitting fragments along shadows (0 unless a light casts
     /// shadows).
     pub ms_shadows: f64,
-    /// Parts of fragments left out of the visible map: hidden from the eye (0 unless
-    /// [`OrderOptions::visible`]).
+    /// Parts of fragments left out as hidden from the eye: of every fragment under
+    /// [`OrderOptions::visible`], else of translucent ones (their parts behind opaque
+    /// faces, cut off so that they can be painted after every opaque piece).
     pub fragments_hidden: usize,
     /// Milliseconds spent splitting fragments along what hides them from the eye (and
-    /// along shadows, done in the same pass; 0 unless [`OrderOptions::visible`]).
+    /// along shadows, done in the same pass; 0 unless [`OrderOptions::visible`] or the
+    /// scene has translucent and opaque faces).
     pub ms_visible: f64,
 }
 

@@ -23,7 +23,10 @@
 //! ([`limn_scene::Face::colors`]): they multiply the material's `Kd`, and faces without
 //! a `usemtl` get a white diffuse material named `vertex colours` rather than the grey
 //! (channels outside [0, 1] are clamped, and a colour with a NaN channel is no colour,
-//! each with a warning naming the first line). A
+//! each with a warning naming the first line). A face naming texture coordinates or
+//! normals while the file has defined none of them (an exporter's quirk) is drawn
+//! without them, with one warning naming the first such line; an index beyond those
+//! defined is still an error. A
 //! point cloud's dots take their vertices' colours. Smoothing groups and the free-form geometry statements are
 //! accepted and ignored; any other statement is an error (so
 //! binary garbage is reported, not silently dropped).
@@ -127,6 +130,11 @@ struct Obj<'a> {
     clamped: Option<(u64, u64)>,
     /// The first line with a colour channel that is not a number, and how many there are.
     no_colour: Option<(u64, u64)>,
+    /// The first face line naming texture coordinates while the file had defined none,
+    /// and how many faces did (they are drawn without them).
+    undefined_texcoords: Option<(u64, u64)>,
+    /// The same for normals.
+    undefined_normals: Option<(u64, u64)>,
 }
 
 /// A vertex without a colour.
@@ -168,6 +176,8 @@ fn parse_with(
         white: None,
         clamped: None,
         no_colour: None,
+        undefined_texcoords: None,
+        undefined_normals: None,
     };
     // Room for the faces and vertices the file's lines announce (a count of line starts,
     // a hint only): growing the vectors by doubling wrote every face again into fresh
@@ -203,6 +213,18 @@ fn parse_with(
             "{}:{line}: vertex colour channels outside [0, 1] clamped ({count} vertices)",
             path.display()
         ));
+    }
+    for (what, seen) in [
+        ("texture coordinates", obj.undefined_texcoords),
+        ("normals", obj.undefined_normals),
+    ] {
+        if let Some((line, count)) = seen {
+            obj.scene.warnings.push(format!(
+                "{}:{line}: faces name {what} the file had not defined ({count} faces): \
+                 drawn without them",
+                path.display()
+            ));
+        }
     }
     if let Some((line, count)) = obj.no_colour {
         obj.scene.warnings.push(format!(
@@ -378,6 +400,10 @@ impl Obj<'_> {
         // Allocated at the first texture coordinate index, like the normals.
         let mut texcoords = Vec::new();
         let mut all_texcoords = true;
+        // Corners naming texture coordinates or normals while the file has defined none
+        // (some exporters write `f 1/1/1` without any `vt`): the face is drawn without
+        // them, with a warning.
+        let (mut undefined_vt, mut undefined_vn) = (false, false);
         for t in toks {
             let mut parts = t.split(|&b| b == b'/');
             let v = parts.next().unwrap_or_default();
@@ -393,6 +419,10 @@ impl Obj<'_> {
             let count = self.scene.vertices.len() as u64;
             vertices.push(self.index(n, v, count, "vertex")?);
             match vt.filter(|s| !s.is_empty()) {
+                Some(_) if self.scene.texcoords.is_empty() => {
+                    undefined_vt = true;
+                    all_texcoords = false;
+                }
                 Some(vt) => {
                     let count = self.scene.texcoords.len() as u64;
                     texcoords.push(self.index(n, vt, count, "texture coordinate")?);
@@ -400,12 +430,22 @@ impl Obj<'_> {
                 None => all_texcoords = false,
             }
             match vn.filter(|s| !s.is_empty()) {
+                Some(_) if self.scene.normals.is_empty() => {
+                    undefined_vn = true;
+                    all_normals = false;
+                }
                 Some(vn) => {
                     let count = self.scene.normals.len() as u64;
                     normals.push(self.index(n, vn, count, "normal")?);
                 }
                 None => all_normals = false,
             }
+        }
+        if undefined_vt {
+            self.undefined_texcoords.get_or_insert((n, 0)).1 += 1;
+        }
+        if undefined_vn {
+            self.undefined_normals.get_or_insert((n, 0)).1 += 1;
         }
         if vertices.len() < 3 {
             return Err(LoadError::TooFewVertices {

@@ -30,6 +30,46 @@ fn index_zero_and_out_of_range_obj() {
 }
 
 #[test]
+fn texture_coordinates_and_normals_never_defined_are_dropped_with_a_warning() {
+    // Exporters write `f 1/1/1` with no `vt` or `vn` in the file: the faces are drawn
+    // without them, one warning per kind naming the first line and the count.
+    let d = dir();
+    for (body, what, line) in [
+        (
+            "f 1/1/1 2/2/2 3/3/3\nf 3/1 2/1 1/1\n",
+            "texture coordinates",
+            4,
+        ),
+        (
+            "f 1//1 2//2 3//3\nf 1 2 3\nf 3//1 2//1 1//1\n",
+            "normals",
+            4,
+        ),
+    ] {
+        let p = write(d.path(), "u.obj", format!("{TRI_OBJ}{body}"));
+        let s = ok(&p);
+        assert!(s.faces.len() >= 2, "{what}");
+        assert!(s
+            .faces
+            .iter()
+            .all(|f| f.texcoords.is_none() && f.normals.is_none()));
+        let w: Vec<_> = s.warnings.iter().filter(|w| w.contains(what)).collect();
+        assert_eq!(w.len(), 1, "{:?}", s.warnings);
+        assert!(
+            w[0].contains(&format!("u.obj:{line}:")) && w[0].contains("(2 faces)"),
+            "{w:?}"
+        );
+    }
+    // Once some are defined, an index beyond them is an error, as before.
+    let p = write(
+        d.path(),
+        "v.obj",
+        format!("{TRI_OBJ}vt 0 0\nf 1/1 2/1 3/2\n"),
+    );
+    assert!(matches!(err(&p), LoadError::IndexOutOfRange { .. }));
+}
+
+#[test]
 fn index_out_of_range_ply_and_gltf() {
     let d = dir();
     let body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n";

@@ -11,6 +11,7 @@ use limn_depthsort::{Fragment, Ordered};
 use rayon::prelude::*;
 
 use crate::covers::{covers, repeats_of_covers};
+use crate::face_outlines::translucent_outlines;
 use crate::phong::DEFAULT_TOLERANCE;
 use crate::seams::{seam_flaps_indexed, FlapJoin};
 use crate::smooth::{FaceLight, View};
@@ -218,6 +219,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         marks: Vec::new(),
         textures: textures.list,
         merge_pieces: ordered.visible,
+        face_outlines: translucent_outlines(scene, ordered),
     }
 }
 

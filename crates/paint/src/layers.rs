@@ -12,10 +12,17 @@
 //! must show through it. So a layer holds only fragments whose interiors are disjoint:
 //! their bounding boxes meet at most along a side, or some edge of the convex hull of
 //! one (found with exact orientation tests) has every corner of the other's hull on its
-//! line or outside it, by exact orientation tests. Fragments for which no such edge is
-//! found go in different layers: a seam, never a wrong colour.
+//! line or outside it, by exact orientation tests. Two runs of different faces are also
+//! disjoint when their faces' projected outlines are ([`Picture::face_outlines`]: a
+//! fragment lies in its face's hull, while cut fragments' rounded corners can overlap
+//! by a few units in the last place where the faces do not). Fragments for which no
+//! such edge is found go in different layers: a seam, never a wrong colour.
+
+use std::collections::BTreeMap;
 
 use crate::runs::Frag;
+#[cfg(doc)]
+use crate::Picture;
 
 /// Fragments held at most (each run is tested against those held, so the cost grows
 /// with their number).
@@ -102,15 +109,38 @@ fn turn(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> f64 {
     robust::orient2d(c(p), c(q), c(r))
 }
 
-/// A run held: its fragments and their hulls.
+/// A run held: its fragments and their hulls, and its face with the hull of the face's
+/// projected outline where the picture has it.
 struct Held<'a> {
     frags: Vec<Frag<'a>>,
     shapes: Vec<Shape>,
+    face: Option<(u32, Shape)>,
 }
 
-impl Held<'_> {
-    /// Whether some fragment of `self` may overlap one of `other` (not shown disjoint).
+impl<'a> Held<'a> {
+    /// The run `run` (fragments of one face), its face's outline from `outlines`.
+    fn new(run: &[Frag<'a>], outlines: &BTreeMap<u32, Vec<[f64; 2]>>) -> Held<'a> {
+        let face = run.first().and_then(|f| {
+            let face = f.src.face;
+            let one_face = run.iter().all(|g| g.src.face == face);
+            let outline = outlines.get(&face).filter(|_| one_face)?;
+            Some((face, Shape::new(outline)))
+        });
+        Held {
+            frags: run.to_vec(),
+            shapes: run.iter().map(|f| Shape::new(&f.points)).collect(),
+            face,
+        }
+    }
+
+    /// Whether some fragment of `self` may overlap one of `other` (not shown disjoint by
+    /// their faces' outlines nor by their own corners).
     fn meets(&self, other: &Held<'_>) -> bool {
+        if let (Some((a, s)), Some((b, t))) = (&self.face, &other.face) {
+            if a != b && s.disjoint(t) {
+                return false;
+            }
+        }
         self.shapes
             .iter()
             .any(|s| other.shapes.iter().any(|t| !s.disjoint(t)))
@@ -136,14 +166,18 @@ pub(crate) struct Layers<'a> {
     fragments: usize,
     /// Object and opacity (thousandths) of the runs held.
     key: Option<(u32, u16)>,
+    /// The projected outlines of translucent faces ([`Picture::face_outlines`]).
+    outlines: &'a BTreeMap<u32, Vec<[f64; 2]>>,
 }
 
 impl<'a> Layers<'a> {
-    pub(crate) fn new() -> Self {
+    /// An empty holder; `outlines`: the picture's [`Picture::face_outlines`].
+    pub(crate) fn new(outlines: &'a BTreeMap<u32, Vec<[f64; 2]>>) -> Self {
         Layers {
             runs: Vec::new(),
             fragments: 0,
             key: None,
+            outlines,
         }
     }
 
@@ -154,13 +188,9 @@ impl<'a> Layers<'a> {
         if !self.runs.is_empty() && (self.key != Some(key) || self.fragments >= MAX_FRAGMENTS) {
             return false;
         }
-        let shapes = run.iter().map(|f| Shape::new(&f.points)).collect();
         self.key = Some(key);
         self.fragments += run.len();
-        self.runs.push(Held {
-            frags: run.to_vec(),
-            shapes,
-        });
+        self.runs.push(Held::new(run, self.outlines));
         true
     }
 
@@ -170,33 +200,42 @@ impl<'a> Layers<'a> {
         if self.runs.is_empty() {
             return true;
         }
-        let other = Held {
-            frags: Vec::new(),
-            shapes: run.iter().map(|f| Shape::new(&f.points)).collect(),
-        };
+        let other = Held::new(run, self.outlines);
         !self.runs.iter().any(|h| h.meets(&other))
     }
 
     /// The layers of the runs held, in paint order (each the fragments of its runs in
     /// order), with the runs' object and opacity; empties the holder.
+    ///
+    /// The layers are taken from the front: the last layer holds every run that no
+    /// later run may overlap (and that overlaps none of the runs held back for earlier
+    /// layers), and so on backwards. A surface seen through nothing is then one layer
+    /// even where some of it has nothing behind it (a translucent sphere cut into by an
+    /// opaque one: the front's parts over the cut are its own), so no boundary between
+    /// layers crosses it.
     pub(crate) fn take(&mut self) -> Option<(Vec<Layer<'a>>, (u32, u16))> {
         let key = self.key.take()?;
         self.fragments = 0;
         let mut rest = std::mem::take(&mut self.runs);
+        rest.reverse();
         let mut out = Vec::new();
         while !rest.is_empty() {
-            let (mut layer, mut back): (Vec<Held<'a>>, Vec<Held<'a>>) = (Vec::new(), Vec::new());
+            // In reverse paint order: a run goes in this layer unless a run after it in
+            // paint order, in this layer or held for an earlier one, may overlap it.
+            let (mut layer, mut front): (Vec<Held<'a>>, Vec<Held<'a>>) = (Vec::new(), Vec::new());
             for r in rest {
-                let held_back = back.iter().any(|b| b.meets(&r));
-                if held_back || layer.iter().any(|l| l.meets(&r)) {
-                    back.push(r);
+                let held = front.iter().any(|b| b.meets(&r));
+                if held || layer.iter().any(|l| l.meets(&r)) {
+                    front.push(r);
                 } else {
                     layer.push(r);
                 }
             }
+            layer.reverse();
             out.push(layer.into_iter().flat_map(|h| h.frags).collect());
-            rest = back;
+            rest = front;
         }
+        out.reverse();
         Some((out, key))
     }
 }
@@ -235,8 +274,9 @@ mod tests {
     fn runs_are_layered_in_paint_order() {
         use crate::runs::{check, walk};
         use crate::{PaintFragment, Picture};
-        // Back A, back B (beside A), front C (over A), back D (beside both, after C),
-        // front E (over D and C): layers [A, B, D], [C], [E].
+        // Back A, back B (beside A), front C (over A and B), back D (beside all, after
+        // C), front E (over A, B and C): taken from the front, layers [A, B], [C],
+        // [D, E] (D, beside everything, goes as late as it can).
         let sq = |x: f64, y: f64| vec![[x, y], [x + 10.0, y], [x + 10.0, y + 10.0], [x, y + 10.0]];
         let mut p = Picture::new(100, 100);
         for (face, pts) in [
@@ -254,7 +294,7 @@ mod tests {
             p.fragments.push(f);
         }
         let guard = check(&p).unwrap().guard;
-        let mut layers = Layers::new();
+        let mut layers = Layers::new(&p.face_outlines);
         walk(
             &p,
             &guard,
@@ -271,7 +311,7 @@ mod tests {
             .iter()
             .map(|l| l.iter().map(|f| f.src.face).collect())
             .collect();
-        assert_eq!(faces, vec![vec![0, 1, 3], vec![2], vec![4]]);
+        assert_eq!(faces, vec![vec![0, 1], vec![2], vec![3, 4]]);
         assert!(layers.take().is_none());
     }
 }

@@ -82,6 +82,7 @@ mod covers;
 mod eps;
 mod eps_texture;
 mod error;
+mod face_outlines;
 mod format;
 mod hidden_line;
 mod layers;

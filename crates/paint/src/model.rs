@@ -1,5 +1,6 @@
 //! The picture model: what every painter paints.
 
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 pub use limn_scene::{LabelAnchor, MarkerShape, Texture};
@@ -136,6 +137,12 @@ pub struct Picture {
     /// area stays that of the subpaths. Set for a visible map
     /// ([`limn_depthsort::Ordered::visible`]). Default `false`.
     pub merge_pieces: bool,
+    /// The corners, on the page, of translucent input faces that lie wholly in front of
+    /// the eye, by face index: every fragment of such a face lies in the convex hull of
+    /// its face's corners, so writers that group translucent fragments use them to show
+    /// two faces' fragments apart (see [`PaintFragment::face`]). Empty by default; a
+    /// face left out is judged by its fragments' own corners.
+    pub face_outlines: BTreeMap<u32, Vec<[f64; 2]>>,
 }
 
 impl Picture {

@@ -524,7 +524,7 @@ impl Painter for PdfPainter {
         // Translucent Gouraud runs wait to be drawn as layers (see `layers.rs`), each one
         // shading in a transparency group; other runs disjoint from them are painted
         // first.
-        let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new());
+        let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new(&picture.face_outlines));
         let flush_layer = |c: &mut Content, stats: &mut PaintStats| {
             if let Some((layers, (_, a))) = layer.borrow_mut().take() {
                 c.fill_alpha(a);

@@ -235,7 +235,7 @@ impl Painter for SvgPainter {
         // Translucent smooth runs wait to be drawn as layers (see `layers.rs`): each a
         // group, opaque inside, blended once; other runs disjoint from them are painted
         // first. Not with outlines, which are painted after each run.
-        let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new());
+        let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new(&picture.face_outlines));
         let flush_layer = |sink: &mut Sink<'_>, stats: &mut PaintStats| -> Result<(), PaintError> {
             if let Some((layers, (object, alpha))) = layer.borrow_mut().take() {
                 // Runs painted before the layers (see `Layers::clear_of`) go first.

@@ -78,6 +78,7 @@ fn picture() -> impl Strategy<Value = Picture> {
             marks: Vec::new(),
             textures: Vec::new(),
             merge_pieces,
+            face_outlines: Default::default(),
         })
 }
 

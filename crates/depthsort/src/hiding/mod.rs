@@ -35,7 +35,7 @@ use crate::pieces::Ctx;
 use broad::{Extent, Grid, LightView};
 use volume::{clip, reach, Clip, Reach, Source, Volume};
 
-pub(crate) use sight::Sight;
+pub(crate) use sight::{Occluders, Sight};
 
 /// What a source is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -122,19 +122,38 @@ enum Node<P> {
 }
 
 /// Splits every piece of `order` along what hides it: from the eye when `sight` is
-/// given (every piece), and the shadows of the lights that ask for them (faces of
-/// `illum 0` materials keep their colour and are not split by shadows; parts the eye
-/// cannot see are not split further). Returns one list of parts per piece, in order.
+/// given (every piece, or only translucent ones when it says so), and the shadows of
+/// the lights that ask for them (faces of `illum 0` materials keep their colour and are
+/// not split by shadows; parts the eye cannot see are not split further). Returns one
+/// list of parts per piece, in order, and whether every polygon the painter draws of an
+/// opaque face hid from the eye (`false` when one cut by the near plane in view hid
+/// nothing; `true` without `sight`).
 pub(crate) fn hidden_parts<K: Kernel>(
     ctx: &Ctx<'_, K>,
     scene: &Scene,
     order: &[u32],
     sight: Option<&Sight>,
-) -> Result<Vec<Parts<K::Polygon>>, OrderError> {
+) -> Result<(Vec<Parts<K::Polygon>>, bool), OrderError> {
+    let mut complete = true;
     let mut casters = match sight {
-        Some(s) => vec![s.caster(ctx, scene)?],
+        Some(s) => {
+            let (eye, all) = s.caster(ctx, scene)?;
+            complete = all;
+            vec![eye]
+        }
         None => Vec::new(),
     };
+    // Per face, whether the eye splits its pieces.
+    let seen_by_eye: Vec<bool> = scene
+        .faces
+        .iter()
+        .map(|f| {
+            sight.is_some_and(|s| {
+                matches!(s.occluders, Occluders::All)
+                    || !scene.materials[f.material as usize].is_opaque()
+            })
+        })
+        .collect();
     casters.extend(lights::casters(ctx.k, scene)?);
     // Per face, the position of its last piece in an exact order (`None`: not in the
     // order, or the order not exact): a face can hide from the eye only pieces painted
@@ -167,6 +186,9 @@ pub(crate) fn hidden_parts<K: Kernel>(
                     if matches!(&node, Node::Leaf(_, s, _) if s.from_eye) {
                         break; // the eye sees none of it: no shadow to split
                     }
+                    if c.who == Who::Eye && !seen_by_eye[piece.face as usize] {
+                        continue;
+                    }
                     if let Who::Light(_) = c.who {
                         if !lit[piece.face as usize] {
                             continue;
@@ -197,7 +219,8 @@ pub(crate) fn hidden_parts<K: Kernel>(
                 Ok(parts)
             },
         )
-        .collect()
+        .collect::<Result<Vec<_>, _>>()
+        .map(|parts| (parts, complete))
 }
 
 /// The largest half-width, relative to the largest coordinate, of the boxes a part's

@@ -23,6 +23,7 @@
 use limn_kernel::{Kernel, PolygonSide, Side};
 use limn_scene::Scene;
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::broad::{Extent, LightView};
 use super::volume::{volume, SidePlanes, Source, Volume};
@@ -44,15 +45,30 @@ pub(crate) struct Sight {
     /// it), so that a face all of whose pieces come before a receiver in the order is
     /// known to hide none of it.
     pub order_exact: bool,
+    /// Which pieces the eye splits, and by which faces.
+    pub occluders: Occluders,
+}
+
+/// Which pieces the eye splits, and which opaque faces hide parts of them.
+#[derive(Debug, Clone)]
+pub(crate) enum Occluders {
+    /// Every piece, by every opaque face the painter draws (the visible map).
+    All,
+    /// Only the pieces of translucent faces (the opaque ones stay whole, painted over
+    /// what they hide as in painter's output), by the opaque faces marked here, per face
+    /// (see [`crate::translucent_last`]).
+    OfTranslucent(Vec<bool>),
 }
 
 impl Sight {
-    /// The eye with the volumes of its occluders.
+    /// The eye with the volumes of its occluders, and whether every polygon the painter
+    /// draws of an opaque face is one of them (`false` when one cut by the near plane
+    /// in view was left out).
     pub(super) fn caster<K: Kernel>(
         &self,
         ctx: &Ctx<'_, K>,
         scene: &Scene,
-    ) -> Result<Caster<K>, OrderError> {
+    ) -> Result<(Caster<K>, bool), OrderError> {
         let planes = view_planes(ctx, self.near)?;
         let (source, view) = match ctx.eye {
             Eye::At(p) => {
@@ -63,11 +79,18 @@ impl Sight {
             }
             Eye::Toward(d) => (Source::Toward(d), LightView::parallel(d)),
         };
+        let left_out = AtomicBool::new(false);
         let polys: Vec<(K::Polygon, u32)> = scene
             .faces
             .par_iter()
             .enumerate()
-            .filter(|(_, f)| scene.materials[f.material as usize].is_opaque())
+            .filter(|(i, f)| {
+                scene.materials[f.material as usize].is_opaque()
+                    && match &self.occluders {
+                        Occluders::All => true,
+                        Occluders::OfTranslucent(hides) => hides[*i],
+                    }
+            })
             .map(|(i, f)| {
                 let polys = ctx.k.face_polygons(&scene.face_points(i as u32))?;
                 let cull_back = self.culled_objects[f.object as usize];
@@ -82,13 +105,19 @@ impl Sight {
                         drawn
                             && match ctx.k.classify(p, &planes.near) {
                                 PolygonSide::Front => true,
-                                PolygonSide::Spanning => !lost_in_view(
-                                    ctx,
-                                    p,
-                                    &planes.near,
-                                    planes.eye.as_ref(),
-                                    &planes.sides,
-                                ),
+                                PolygonSide::Spanning => {
+                                    let lost = lost_in_view(
+                                        ctx,
+                                        p,
+                                        &planes.near,
+                                        planes.eye.as_ref(),
+                                        &planes.sides,
+                                    );
+                                    if lost {
+                                        left_out.store(true, Ordering::Relaxed);
+                                    }
+                                    !lost
+                                }
                                 _ => false,
                             }
                     })
@@ -111,6 +140,7 @@ impl Sight {
         // so that the candidates of a receiver, listed by number, come nearest first.
         let near = |e: &Option<Extent>| e.map_or(f64::NEG_INFINITY, |e| e.near);
         built.sort_by(|a, b| near(&a.1).total_cmp(&near(&b.1)));
-        Ok(Caster::new(Who::Eye, source, view, built))
+        let complete = !left_out.load(Ordering::Relaxed);
+        Ok((Caster::new(Who::Eye, source, view, built), complete))
     }
 }
