@@ -89,10 +89,9 @@ impl<'w> ObjectWriter<'w> {
                 }
                 let generation = if free == 0 { "65535" } else { "00000" };
                 write!(buf, "{:010} {generation} f\r\n", next % xref_len)?;
-                listed += 1;
             }
             write!(buf, "{offset:010} 00000 n\r\n")?;
-            listed += 1;
+            listed = id.get() + 1;
             if buf.len() >= BATCH {
                 self.out.write_all(&buf)?;
                 self.written += buf.len();
