@@ -3,14 +3,13 @@
 
 use limn_depthsort::Ordered;
 use limn_paint::{Format, PaintStats};
-use limn_scene::Scene;
 
 /// The warnings of one painter's run, after ordering and writing.
 ///
-/// `near_given` says whether the near plane came from the user (flag or scene file): an
-/// automatic one gets advice to set `--near`.
+/// `faces` is the scene's count of faces; `near_given` says whether the near plane came
+/// from the user (flag or scene file): an automatic one gets advice to set `--near`.
 pub fn losses(
-    scene: &Scene,
+    faces: usize,
     ordered: &Ordered,
     ps: &PaintStats,
     format: Format,
@@ -73,7 +72,7 @@ pub fn losses(
         ));
     }
     let marks_painted = ps.lines + ps.markers + ps.labels > 0;
-    if ordered.stats.fragments_out == 0 && !(marks_painted && scene.faces.is_empty()) {
+    if ordered.stats.fragments_out == 0 && !(marks_painted && faces == 0) {
         let what = if marks_painted {
             "no face is drawn"
         } else {
@@ -82,10 +81,7 @@ pub fn losses(
         out.push(format!(
             "{what}: of {} faces, {} are back faces or edge-on, {} degenerate, \
              {} outside the view or behind the near plane",
-            scene.faces.len(),
-            s.faces_culled,
-            s.faces_degenerate,
-            s.faces_clipped
+            faces, s.faces_culled, s.faces_degenerate, s.faces_clipped
         ));
     }
     out

@@ -91,6 +91,7 @@ mod model;
 mod number;
 mod painter;
 mod pdf;
+mod pdf_objects;
 mod pdf_texture;
 pub mod phong;
 mod png;
@@ -111,7 +112,9 @@ mod texture_pieces;
 mod texturing;
 mod tikz;
 
-pub use annotate::{head_length, marker_stroke, picture_with_marks};
+pub use annotate::{
+    add_seam_flaps, head_length, marker_stroke, picture_with_marks, picture_with_marks_unflapped,
+};
 pub use compose::{picture, Style};
 pub use covers::covers;
 pub use eps::{EpsOptions, EpsPainter};

@@ -47,12 +47,14 @@ use std::cell::RefCell;
 use std::collections::BTreeSet;
 use std::io::Write;
 
-use pdf_writer::{Name, Pdf, Rect, Ref};
+use pdf_writer::writers::Catalog;
+use pdf_writer::{Name, Rect, Ref};
 
 use super::layers::Layers;
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::merge;
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
+use super::pdf_objects::ObjectWriter;
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{pdf_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
@@ -617,27 +619,17 @@ impl Painter for PdfPainter {
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;
 
-        let bytes = c.document(w, h);
-        out.write_all(&bytes)?;
-        out.flush()?;
-        stats.bytes = bytes.len() as u64;
+        stats.bytes = c.write_document(w, h, out)?;
         Ok(stats)
     }
 }
 
 impl Content {
-    /// Wraps the content stream into a complete document.
-    fn document(self, w: f64, h: f64) -> Vec<u8> {
-        // One allocation for the whole file in the usual case.
-        let capacity = self.buf.len()
-            + self
-                .meshes
-                .iter()
-                .map(|m| m.data.len() + 400)
-                .sum::<usize>()
-            + 100 * (self.fill_alphas.len() + self.stroke_alphas.len())
-            + 2048;
-        let mut pdf = Pdf::with_capacity(capacity);
+    /// Wraps the content stream into a complete document written to `out` object by
+    /// object (never whole in memory: a million-face picture's was 188 MB); returns its
+    /// length in bytes.
+    fn write_document(self, w: f64, h: f64, out: &mut dyn Write) -> std::io::Result<u64> {
+        let mut pdf = ObjectWriter::new(out)?;
         let catalog = Ref::new(1);
         let pages = Ref::new(2);
         let page = Ref::new(3);
@@ -668,10 +660,13 @@ impl Content {
             .collect();
         let multiply = self.multiply.then(&mut alloc);
 
-        pdf.catalog(catalog).pages(pages);
-        pdf.pages(pages).kids([page]).count(1);
+        pdf.object(catalog)?
+            .indirect(catalog)
+            .start::<Catalog>()
+            .pages(pages);
+        pdf.object(pages)?.pages(pages).kids([page]).count(1);
         {
-            let mut p = pdf.page(page);
+            let mut p = pdf.object(page)?.page(page);
             p.media_box(Rect::new(0.0, 0.0, w as f32, h as f32));
             p.parent(pages);
             p.contents(content);
@@ -705,12 +700,13 @@ impl Content {
             }
         }
         if let Some(f) = font {
-            pdf.type1_font(f)
+            pdf.object(f)?
+                .type1_font(f)
                 .base_font(Name(b"Helvetica"))
                 .encoding_predefined(Name(b"WinAnsiEncoding"));
         }
-        pdf.stream(content, &self.buf);
-        // The copy is in the document now; give the memory back before the rest is written.
+        pdf.object(content)?.stream(content, &self.buf);
+        // The copy is on its way out now; give the memory back before the rest is written.
         let Content {
             buf,
             meshes,
@@ -720,7 +716,7 @@ impl Content {
         drop(buf);
         for ((_, r), (rgb, iw, ih)) in images.iter().zip(&pixels) {
             let data = miniz_oxide::deflate::compress_to_vec_zlib(rgb, 6);
-            let mut x = pdf.image_xobject(*r, &data);
+            let mut x = pdf.object(*r)?.image_xobject(*r, &data);
             x.filter(pdf_writer::Filter::FlateDecode);
             x.width(*iw as i32);
             x.height(*ih as i32);
@@ -729,12 +725,13 @@ impl Content {
             x.interpolate(true);
         }
         if let Some(r) = multiply {
-            pdf.ext_graphics(r)
+            pdf.object(r)?
+                .ext_graphics(r)
                 .blend_mode(pdf_writer::types::BlendMode::Multiply);
         }
         for (_, r, stroke, m) in &states {
             let a = f32::from(*m) / 1000.0;
-            let mut gs = pdf.ext_graphics(*r);
+            let mut gs = pdf.object(*r)?.ext_graphics(*r);
             if *stroke {
                 gs.stroking_alpha(a);
             } else {
@@ -747,15 +744,17 @@ impl Content {
             let mut content = b"/Pattern cs /P scn\n".to_vec();
             content.extend_from_slice(meshes[*i].group.as_deref().unwrap_or_default());
             content.extend_from_slice(b"f\n");
-            let mut form = pdf.form_xobject(*r, &content);
+            let mut form = pdf.object(*r)?.form_xobject(*r, &content);
             form.bbox(Rect::new(0.0, 0.0, w as f32, h as f32));
             form.group().transparency();
             form.resources().patterns().pair(Name(b"P"), *pattern);
             drop(form);
-            pdf.shading_pattern(*pattern).shading_ref(shadings[*i].1);
+            pdf.object(*pattern)?
+                .shading_pattern(*pattern)
+                .shading_ref(shadings[*i].1);
         }
-        for ((_, r), mesh) in shadings.iter().zip(&meshes) {
-            let mut s = pdf.stream_shading(*r, &mesh.data);
+        for ((_, r), mesh) in shadings.iter().zip(meshes) {
+            let mut s = pdf.object(*r)?.stream_shading(*r, &mesh.data);
             // `StreamShadingType` is not exported by pdf-writer 0.14: write the number.
             s.pair(Name(b"ShadingType"), 4);
             s.color_space().device_rgb();
@@ -765,7 +764,7 @@ impl Content {
             let [x0, x1, y0, y1] = mesh.decode.map(|v| v as f32);
             s.decode([x0, x1, y0, y1, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0]);
         }
-        pdf.finish()
+        pdf.finish(catalog)
     }
 }
 
