@@ -106,6 +106,7 @@ mod texture_bake;
 mod texture_collapse;
 mod texture_images;
 mod texture_levels;
+mod texture_mask;
 mod texture_patches;
 mod texture_pieces;
 mod texturing;

@@ -389,7 +389,7 @@ fn along(a: [f64; 2], b: [f64; 2], ca: [f64; 4], cb: [f64; 4], p: [f64; 2]) -> [
 }
 
 fn opaque(f: &PaintFragment) -> bool {
-    f.fill[3] >= 1.0
+    f.is_opaque()
 }
 
 /// For every edge of every opaque fragment, the first opaque fragment of another face

@@ -283,7 +283,8 @@ impl Painter for SvgPainter {
             let (rgb, alpha, smooth, texture) = *key;
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
-            let lit_run = smooth && texture.is_some() && alpha >= 1000;
+            let lit_run =
+                smooth && texture.is_some() && alpha >= 1000 && !svg_texture::see_through(run);
             // Anything else written first: the waiting lit fills go out before it.
             if !lit_run
                 || !batch.borrow().is_empty()

@@ -248,14 +248,17 @@ impl Strips {
                     for k in 0..n + 2 {
                         let l = (k.clamp(1, n) - 1) as f64 / (n - 1) as f64;
                         let st = [0, 1].map(|q| from[q] + (to[q] - from[q]) * l + across[q] * mu);
-                        let c = t.sample(st);
+                        // Colour and alpha (a cut-out's: whether the texel holding
+                        // the sample shows).
+                        let c = t.sample_rgba(st);
                         rgba.extend(c.map(|v| (v * 255.0).round().clamp(0.0, 255.0) as u8));
-                        rgba.push(255);
                     }
                 }
                 let name = format!("{} (band)", t.name());
                 // At most MAX_STRIP_SAMPLES + 2 by MAX_BAND_ROWS + 2 texels: a valid size.
-                Arc::new(Texture::new(&name, (n + 2) as u32, rows as u32, rgba).expect("band size"))
+                let band =
+                    Texture::new(&name, (n + 2) as u32, rows as u32, rgba).expect("band size");
+                Arc::new(band.with_alpha(t.alpha()))
             })
             .clone();
         let (tw, th) = (f64::from(texture.width()), f64::from(texture.height()));

@@ -475,6 +475,7 @@ mod tests {
         TextureMap {
             texture: 0,
             screen_to_st: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.004, 0.0, 1.0]],
+            see_through: false,
         }
     }
 
