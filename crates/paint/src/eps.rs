@@ -266,7 +266,7 @@ impl Writer {
         let whole = run
             .iter()
             .find_map(|f| f.src.texture.as_deref().copied())
-            .filter(|map| !map.see_through)
+            .filter(|map| !map.see_through())
             .and_then(|map| {
                 affine_pieces(&run[0].points, &map, f64::INFINITY)
                     .into_iter()

@@ -121,7 +121,7 @@ pub use format::Format;
 pub use hidden_line::{hidden_line_picture, HiddenLineStyle};
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
-    Outline, PaintFragment, Picture, Texture, TextureMap,
+    Outline, PaintFragment, Picture, Texture, TextureAlpha, TextureMap,
 };
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};

@@ -2,7 +2,7 @@
 
 use std::sync::Arc;
 
-pub use limn_scene::{LabelAnchor, MarkerShape, Texture};
+pub use limn_scene::{LabelAnchor, MarkerShape, Texture, TextureAlpha};
 
 /// One convex (or at least simple) polygon to paint, in pixel coordinates (x right, y down).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -46,12 +46,17 @@ pub struct TextureMap {
     pub texture: u32,
     /// Rows of the 3 × 3 matrix `H`: `(s·q, t·q, q) = H · (x, y, 1)`.
     pub screen_to_st: [[f64; 3]; 3],
-    /// Whether the texture's alpha is drawn (a cut-out or blended texture, see
-    /// [`limn_scene::TextureAlpha`]): what is behind the fragment may show through it.
-    pub see_through: bool,
+    /// How the texture's alpha is drawn (see [`limn_scene::TextureAlpha`]).
+    pub alpha: TextureAlpha,
 }
 
 impl TextureMap {
+    /// Whether the texture's alpha is drawn (a cut-out or blended texture): what is
+    /// behind the fragment may show through it.
+    pub fn see_through(&self) -> bool {
+        self.alpha != TextureAlpha::Opaque
+    }
+
     /// The texture coordinates at pixel point `p`; `None` where the map is undefined
     /// (on the horizon of the fragment's plane).
     pub fn st_at(&self, p: [f64; 2]) -> Option<[f64; 2]> {
@@ -77,7 +82,7 @@ impl PaintFragment {
     /// Whether the fragment hides what is behind it wherever it lies: opacity 1 and no
     /// texture whose alpha is drawn.
     pub fn is_opaque(&self) -> bool {
-        self.fill[3] >= 1.0 && self.texture.as_ref().is_none_or(|t| !t.see_through)
+        self.fill[3] >= 1.0 && self.texture.as_ref().is_none_or(|t| !t.see_through())
     }
 
     /// A flat-coloured fragment of face 0 and object 0 whose edges are all original.

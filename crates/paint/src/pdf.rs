@@ -22,7 +22,9 @@
 //!   opaque whatever the fill opacity, and ghostscript blends the shared edges of a
 //!   mesh's triangles twice; a group is blended once.
 //! - Textured fragments: each texture is one image XObject `/ImK` (RGB, 8 bits,
-//!   Flate-compressed, `/Interpolate true`). A fragment is drawn inside `q … Q` as
+//!   Flate-compressed, `/Interpolate true`; a blended texture's with an `/SMask` of its
+//!   alpha; a cut-out's repetitions clipped to its shown texels, see `texture_mask.rs`,
+//!   the fill multiplied inside that clip). A fragment is drawn inside `q … Q` as
 //!   affine triangles within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
 //!   projective map, each clipped to its triangle with the image placed by `cm` (once
 //!   per repetition of the texture the triangle reaches; a triangle reaching more than
@@ -558,7 +560,7 @@ impl Painter for PdfPainter {
                 // A smoothly lit run whose texture shows through takes its mean lit
                 // colour (see `textured_run`).
                 let fill = match f.colors {
-                    Some(_) if !t.see_through => None,
+                    Some(_) if !t.see_through() => None,
                     _ => Some(f.flat_rgb().map(|v| channel_fixed(v, cd))),
                 };
                 return Style::Textured(t.texture, fill, a);

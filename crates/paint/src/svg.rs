@@ -36,7 +36,8 @@
 //! `<image id="texK">` filling the unit square of texture space (with a wrapped border
 //! of one texel outside it, see `texture_images.rs`; `image-rendering:smooth` asks for
 //! bilinear interpolation, as limn samples), with a `<clipPath id="unitK">`: that square
-//! grown by half a texel. A textured fragment is drawn as triangles within
+//! grown by half a texel (a cut-out texture's: the rectangles of its shown texels, see
+//! `texture_mask.rs`; a blended texture's PNG carries its alpha). A textured fragment is drawn as triangles within
 //! [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact projective map (see
 //! `texture_pieces.rs`), each a `<clipPath id="tcN">` of its own and a
 //! `<g clip-path="url(#tcN)">` holding one `<use href="#texK" transform="matrix(…)"

@@ -79,7 +79,7 @@ pub(crate) fn write_defs(
 /// Whether a run's texture lets what is behind show through (its alpha is drawn).
 pub(crate) fn see_through(run: &[Frag<'_>]) -> bool {
     run.iter()
-        .any(|f| f.src.texture.as_ref().is_some_and(|t| t.see_through))
+        .any(|f| f.src.texture.as_ref().is_some_and(|t| t.see_through()))
 }
 
 /// ` x="…" y="…" width="…" height="…"`.

@@ -87,6 +87,7 @@ pub(crate) fn bake(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::TextureAlpha;
 
     #[test]
     fn a_baked_image_holds_the_texture_at_pixel_centres() {
@@ -98,7 +99,7 @@ mod tests {
         let map = TextureMap {
             texture: 0,
             screen_to_st: [[0.05, 0.01, 0.0], [0.0, 0.002, 0.1], [0.0, 0.0, 1.0]],
-            see_through: false,
+            alpha: TextureAlpha::Opaque,
         };
         let page = [[10.2, 20.5], [14.7, 21.0], [12.0, 25.9]];
         let (baked, to_image) = bake(&t, &map, page, 2.0).unwrap();
@@ -106,7 +107,7 @@ mod tests {
         let moved = TextureMap {
             texture: 0,
             screen_to_st: to_image,
-            see_through: false,
+            alpha: TextureAlpha::Opaque,
         };
         for p in [[12.5, 22.5], [9.5, 19.5], [16.5, 27.5]] {
             let want = t.sample(map.st_at(p).unwrap());

@@ -66,17 +66,18 @@ pub(crate) struct Band {
 }
 
 /// The largest difference of one channel between neighbouring texels (horizontally or
-/// vertically, wrapping included), in [0, 1].
+/// vertically, wrapping included), in [0, 1]; alpha is a channel where it is drawn.
 pub(crate) fn max_step(t: &Texture) -> f64 {
     let (w, h) = (t.width() as usize, t.height() as usize);
     let px = t.rgba();
     let at = |i: usize, j: usize| 4 * (j * w + i);
+    let channels = if t.is_opaque() { 3 } else { 4 };
     let mut worst = 0u8;
     for j in 0..h {
         for i in 0..w {
             let p = at(i, j);
             for q in [at((i + 1) % w, j), at(i, (j + 1) % h)] {
-                for k in 0..3 {
+                for k in 0..channels {
                     worst = worst.max(px[p + k].abs_diff(px[q + k]));
                 }
             }

@@ -178,7 +178,7 @@ impl FaceTexture {
                 let mut map = TextureMap {
                     texture: 0,
                     screen_to_st,
-                    see_through: !texture.is_opaque(),
+                    alpha: texture.alpha(),
                 };
                 let page_samples = baked
                     .then(|| bake(&texture, &map, page, REACH_PX))
@@ -356,7 +356,7 @@ mod tests {
         let map = TextureMap {
             texture: 0,
             screen_to_st: h,
-            see_through: false,
+            alpha: TextureAlpha::Opaque,
         };
         for i in 0..3 {
             let got = map.st_at(view.project(w[i])).unwrap();
