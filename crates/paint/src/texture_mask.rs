@@ -111,7 +111,7 @@ mod tests {
             rects,
             vec![
                 [0.0, 0.0, 0.5, 2.0 / 3.0],
-                [0.75, 2.0 / 3.0, 0.25, 1.0 / 3.0]
+                [0.75, 2.0 / 3.0, 0.25, 1.0 - 2.0 / 3.0]
             ]
         );
         // Every texel centre is inside a rectangle exactly when its texel shows.
