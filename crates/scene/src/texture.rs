@@ -193,10 +193,10 @@ impl Texture {
                         n += 1;
                     }
                 }
-                if n > 0 {
-                    let k = at(i, j);
-                    for c in 0..3 {
-                        self.rgba[k + c] = ((sum[c] + n / 2) / n) as u8;
+                let k = at(i, j);
+                for (v, s) in self.rgba[k..k + 3].iter_mut().zip(sum) {
+                    if let Some(mean) = (s + n / 2).checked_div(n) {
+                        *v = mean as u8;
                     }
                 }
             }
