@@ -41,14 +41,24 @@ pub fn losses(
     if ps.approximated > 0 {
         let what = match format {
             Format::Eps => {
-                "translucent fills or outlines, or smoothly lit textured fragments: EPS \
-                            has no opacity and no blend modes, so translucent ones are \
-                            blended with the background instead and a lit texture is \
-                            multiplied by its fragment's mean lit colour"
+                "translucent fills or outlines, smoothly lit textured fragments, or \
+                            fragments with a blended texture alpha: EPS has no opacity and \
+                            no blend modes, so translucent ones are blended with the \
+                            background instead, a lit texture is multiplied by its \
+                            fragment's mean lit colour, and a texture's alpha (glTF \
+                            alphaMode BLEND) is not drawn (cut-outs, MASK, are)"
             }
             Format::Tikz => {
                 "smoothly shaded fragments: TikZ has no triangle-mesh shading, so each \
                             is filled with the mean of its corner colours"
+            }
+            Format::Svg | Format::Pdf => {
+                "fragments the format can only approximate (textures reaching too many \
+                            repetitions filled with their mean colour; translucent textured \
+                            fragments; smoothly lit fragments whose texture shows what is \
+                            behind, glTF alphaMode MASK or BLEND, drawn with their mean \
+                            lit colour; in PDF, a blended texture's fill colour also \
+                            multiplies what shows through it)"
             }
             _ => "fragments the format can only approximate",
         };

@@ -107,6 +107,7 @@ mod texture_bake;
 mod texture_collapse;
 mod texture_images;
 mod texture_levels;
+mod texture_mask;
 mod texture_patches;
 mod texture_pieces;
 mod texturing;
@@ -123,7 +124,7 @@ pub use format::Format;
 pub use hidden_line::{hidden_line_picture, HiddenLineStyle};
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
-    Outline, PaintFragment, Picture, Texture, TextureMap,
+    Outline, PaintFragment, Picture, Texture, TextureAlpha, TextureMap,
 };
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};
