@@ -193,6 +193,7 @@ pub fn picture(case: &Case) -> Picture {
                         [m[3].value(), m[4].value(), m[5].value()],
                         [m[6].value(), m[7].value(), m[8].value()],
                     ],
+                    alpha: limn_paint::TextureAlpha::Opaque,
                 })
             }),
             flap: false,

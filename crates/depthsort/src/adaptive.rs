@@ -4,7 +4,7 @@
 
 use limn_kernel::Kernel;
 
-use crate::broad::{box_pairs, estimated_box_pairs};
+use crate::broad::{box_pairs, estimated_box_pairs, Found};
 use crate::bsp::{push_parts_as, Task};
 use crate::components::Components;
 use crate::detached::order_apart;
@@ -41,7 +41,8 @@ const SMALL_SET: usize = 16;
 #[derive(Default)]
 struct Workspace {
     boxes: Vec<Box2>,
-    tested: Vec<(u32, u32, Pair)>,
+    /// The candidate pairs tested, and those of them that are not free.
+    tested: Found<(u32, u32, Pair)>,
     edges: Vec<(u32, u32)>,
     start: Vec<u32>,
     fill: Vec<u32>,
@@ -65,11 +66,18 @@ fn order_set<K: Kernel>(
     // a visit on one thread whatever the number of threads.
     let shared: &Ctx<'_, K> = ctx;
     let margin = shared.margin;
-    let test = |i: usize, j: usize, out: &mut Vec<(u32, u32, Pair)>| {
+    // A candidate pair is counted; only a constraint is kept.
+    let found = |i: usize, j: usize, pair: Pair, out: &mut Found<(u32, u32, Pair)>| {
+        out.counted += 1;
+        if pair != Pair::Free {
+            out.kept.push((i as u32, j as u32, pair));
+        }
+    };
+    let test = |i: usize, j: usize, out: &mut Found<(u32, u32, Pair)>| {
         let (p, q) = (set[i], set[j]);
         let (pp, qq) = (&shared.pieces[p as usize], &shared.pieces[q as usize]);
         if !shared.apart_by_construction(p, q) && !convex_disjoint(&pp.pts, &qq.pts, margin) {
-            out.push((i as u32, j as u32, shared.pair(p, q)));
+            found(i, j, shared.pair(p, q), out);
         }
     };
     if n <= SMALL_SET {
@@ -93,19 +101,19 @@ fn order_set<K: Kernel>(
                 .map(|&p| shared.pieces[p as usize].pts.as_slice()),
             margin,
         );
-        ws.tested = box_pairs(shared, &set, |i, j, out: &mut Vec<(u32, u32, Pair)>| {
+        ws.tested = box_pairs(shared, &set, |i, j, out: &mut Found<(u32, u32, Pair)>| {
             let (p, q) = (set[i], set[j]);
             // The axes first: they are read from one table, the pieces from all over.
             if !axes.disjoint(i, j) && !shared.apart_by_construction(p, q) {
-                out.push((i as u32, j as u32, shared.pair(p, q)));
+                found(i, j, shared.pair(p, q), out);
             }
         });
     } else {
         ws.tested = box_pairs(shared, &set, test);
     }
-    ctx.stats.candidate_pairs += ws.tested.len();
+    ctx.stats.candidate_pairs += ws.tested.counted;
     ws.edges.clear();
-    for &(i, j, pair) in &ws.tested {
+    for &(i, j, pair) in &ws.tested.kept {
         match pair {
             Pair::Free => {}
             Pair::FirstBefore => ws.edges.push((i, j)),

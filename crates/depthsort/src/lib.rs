@@ -259,7 +259,16 @@ fn ordered<K: Kernel>(
         Some(parts)
     };
     let (fragments, polys) = match parts {
-        None => fragments(&ctx, &order, with_polygons),
+        None => {
+            // The pieces' projected points are not read again (a fragment's are computed
+            // again from its corners): released first, their memory is taken again by
+            // the fragments' (a million-face ordering's peak was reached here).
+            ctx.pieces
+                .par_iter_mut()
+                .with_min_len(FRAGMENTS_PER_TASK)
+                .for_each(|p| p.pts = Vec::new());
+            fragments(&ctx, &order, with_polygons)
+        }
         Some((parts, complete)) => {
             let mut items: Vec<(u32, (u32, hiding::Parts<K::Polygon>))> = order
                 .iter()
@@ -316,7 +325,7 @@ fn fragments<K: Kernel>(
         .with_min_len(FRAGMENTS_PER_TASK)
         .map(|&id| {
             let p = &ctx.pieces[id as usize];
-            let mut world = Vec::with_capacity(p.pts.len());
+            let mut world = Vec::with_capacity(ctx.k.vertex_count(&p.poly));
             ctx.k.vertices_world(&p.poly, &mut world);
             // The piece's projected points, computed again as `Ctx::piece` computed
             // them (the same bits) instead of copied.

@@ -6,6 +6,7 @@ use std::borrow::Cow;
 use smallvec::SmallVec;
 
 use crate::filter::PlaneF;
+use crate::interval::Interval;
 use crate::plane::Plane;
 use crate::predicates;
 use crate::side::{PolygonSide, Side};
@@ -230,18 +231,31 @@ impl ExactPolygon {
         (v > coarse) as i8 - (v < -coarse) as i8
     }
 
-    /// The side of vertex `i` after the coarse filter failed: the per-vertex filter, then
-    /// the exact evaluation (counted in `fallbacks`).
+    /// The side of vertex `i` after the coarse filter failed: the per-vertex filter and
+    /// the combinatorial shortcuts, then (counted in `fallbacks`) planes known to
+    /// coincide, the filter at the vertex's exact intersection rounded to f64, and the
+    /// exact evaluation.
     #[inline]
     fn fine_side(&self, i: usize, h: &Plane, hf: &PlaneF, fallbacks: &mut u64) -> Side {
         if let Some(s) = self.filtered_side(i, h, hf) {
             return s;
+        }
+        let c = &self.corners[i];
+        if c.err != 0.0 {
+            if let Some((a, b)) = self.stored_edges_at(i) {
+                if let Some(s) = side_along_common_line(h, [&self.support, a, b], c) {
+                    return s;
+                }
+            }
         }
         *fallbacks += 1;
         if self.corners[i].err != 0.0 {
             if let Some((a, b)) = self.stored_edges_at(i) {
                 if [&self.support, a, b].into_iter().any(|x| h.is_within(x)) {
                     return Side::On;
+                }
+                if let Some(s) = side_at_rounded([&self.support, a, b], hf) {
+                    return s;
                 }
             }
         }
@@ -630,6 +644,68 @@ fn on_common_line(h: &Plane, planes: [&Plane; 3]) -> bool {
         }
     }
     false
+}
+
+/// The side of `h` at the vertex of corner `c` (the intersection of `planes`) when two of
+/// the planes meet in a line through two input points `p`, `q` of which exactly one lies
+/// on `h`, and the cached position tells on which side of that point along the line the
+/// vertex lies: `None` otherwise.
+///
+/// The vertex is `v = p + t·(q − p)` and `h`'s equation is affine along the line, so
+/// with `h(p) = 0` its value at `v` is `t·h(q)`: the side of `q`, kept when `t > 0` and
+/// reversed when `t < 0`. The sign of `t` is that of `(v − p)·(q − p)`, told by interval
+/// arithmetic on the cached position and its error bound (undecided near `t = 0`, where
+/// only exact evaluation can tell). So the side at an implicit vertex costs one exact
+/// side of an input point instead of a degree-nine polynomial in the input: the usual
+/// case, seen from the eye, of a corner's shadow on a receiver (the line from the eye
+/// through an occluder's corner) tested against a side plane of a neighbouring occluder
+/// through the eye and an edge away from that corner.
+fn side_along_common_line(h: &Plane, planes: [&Plane; 3], c: &Corner) -> Option<Side> {
+    for (x, y) in [(0, 1), (0, 2), (1, 2)] {
+        let Some((p, q)) = planes[x].common_line(planes[y]) else {
+            continue;
+        };
+        let (on, other, toward) = match (h.side_of(p), h.side_of(q)) {
+            (Side::On, Side::On) => return Some(Side::On),
+            (Side::On, s) => (p, s, q),
+            (s, Side::On) => (q, s, p),
+            _ => continue,
+        };
+        let err = c.err as f64;
+        let w = [0, 1, 2].map(|k| Interval::around(c.pos[k], err) - Interval::exactly(on[k]));
+        let d = [0, 1, 2].map(|k| Interval::exactly(toward[k]) - Interval::exactly(on[k]));
+        match Interval::dot(w, d).sign() {
+            Some(std::cmp::Ordering::Greater) => return Some(other),
+            Some(std::cmp::Ordering::Less) => return Some(other.flip()),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Bounds of the magnitudes at which [`predicates::rounded_intersection`] is within
+/// `2⁻⁵⁰` of each coordinate relative to the largest (its quotient keeps 64 bits and is
+/// scaled by powers of two that neither overflow nor underflow there): `2⁻⁹⁰⁰..2⁹⁰⁰`.
+const ROUNDED_MIN: f64 = 1.2e-271;
+const ROUNDED_MAX: f64 = 8.4e270;
+
+/// The filter at the exact intersection of `planes` rounded to f64 (remembered per
+/// vertex): a second, tighter filter than the cached Cramer approximation, whose bound
+/// grows with how nearly the planes meet in a line (as side planes through the eye and
+/// two short edges far from it do). The rounded coordinates are within `2⁻⁵⁰` of the
+/// largest one's magnitude of the exact ones (see [`ROUNDED_MIN`]); `None` when the
+/// filter cannot decide there, or the coordinates lie outside that range.
+fn side_at_rounded(planes: [&Plane; 3], hf: &PlaneF) -> Option<Side> {
+    let [s, a, b] = planes;
+    let pos = vertex_memo::rounded(planes, || predicates::rounded_intersection(s, a, b))?;
+    let scale = pos[0].abs().max(pos[1].abs()).max(pos[2].abs());
+    let usable = pos
+        .iter()
+        .all(|x| *x == 0.0 || (ROUNDED_MIN..=ROUNDED_MAX).contains(&x.abs()));
+    if !usable || scale == 0.0 {
+        return None;
+    }
+    hf.side(&pos, scale * f64::powi(2.0, -50))
 }
 
 /// The corner at the same vertex whose outgoing edge is a cut (not original).

@@ -351,3 +351,112 @@ fn corners_on_a_shared_shadow_ray_lie_on_every_plane_along_it() {
         "the shared ray's corner needed exact arithmetic"
     );
 }
+
+/// The ground cut by two planes through the eye and an occluder's corner `c` (the corner
+/// seen on the ground) has a corner on the line from the eye through `c`. A plane
+/// through the eye that misses `c` by an ulp passes that close to the corner: the
+/// filter cannot tell its side, the kernel tells it from the side of `c` (the eye lies
+/// on the plane) without exact arithmetic, and agrees with the exact evaluation.
+#[test]
+fn a_corner_on_a_line_through_the_eye_takes_the_side_of_the_line_point_off_the_plane() {
+    let ground = [
+        glam::DVec3::new(-2.0, 0.0, -2.0),
+        glam::DVec3::new(-2.0, 0.0, 2.0),
+        glam::DVec3::new(2.0, 0.0, 2.0),
+        glam::DVec3::new(2.0, 0.0, -2.0),
+    ];
+    let eye = glam::DVec3::new(0.1, 4.0, 0.05);
+    let c = glam::DVec3::new(0.3, 1.0, 0.2);
+    let wedges = |k: &ExactKernel| {
+        let poly = k.face_polygons(&ground).unwrap().remove(0);
+        let a = k
+            .plane_through_points(eye, c, glam::DVec3::new(1.1, 1.0, 0.7))
+            .unwrap();
+        let b = k
+            .plane_through_points(eye, c, glam::DVec3::new(-0.6, 1.0, 0.9))
+            .unwrap();
+        let (fa, ba) = k.split(&poly, &a);
+        let mut wedges = Vec::new();
+        for half in [fa.unwrap(), ba.unwrap()] {
+            let (f, g) = k.split(&half, &b);
+            wedges.extend(f);
+            wedges.extend(g);
+        }
+        assert_eq!(wedges.len(), 4, "the corner lies inside the square");
+        wedges
+    };
+    for nudge in [f64::next_up, f64::next_down] {
+        let near = glam::DVec3::new(c.x, c.y, nudge(c.z));
+        let sides = |k: &ExactKernel| {
+            let h = k
+                .plane_through_points(eye, near, glam::DVec3::new(0.4, 1.0, -1.3))
+                .unwrap();
+            let wedges = wedges(k);
+            let undecided = wedges
+                .iter()
+                .filter(|w| k.classify_if_cheap(w, &h).is_none())
+                .count();
+            let before = k.fallbacks();
+            let sides: Vec<PolygonSide> = wedges.iter().map(|w| k.classify(w, &h)).collect();
+            (sides, undecided, k.fallbacks() - before)
+        };
+        let (filtered, undecided, fallbacks) = sides(&ExactKernel::new());
+        let (exact, ..) = sides(&ExactKernel::new().without_filter());
+        assert_eq!(filtered, exact);
+        assert!(undecided > 0, "the filter alone decided every wedge");
+        assert_eq!(fallbacks, 0, "the corner needed exact arithmetic");
+    }
+}
+
+/// Corners where two planes through the eye and nearly parallel edges far away meet the
+/// ground (intersections the cached approximation knows only loosely), classified
+/// against planes through the eye passing within a few ulps of them: the same sides
+/// with the filters (the cached position's, then the rounded exact corner's) as with
+/// exact evaluation alone.
+#[test]
+fn ill_conditioned_corners_get_their_exact_sides() {
+    let ground = [
+        glam::DVec3::new(-2.0, 0.0, -2.0),
+        glam::DVec3::new(-2.0, 0.0, 2.0),
+        glam::DVec3::new(2.0, 0.0, 2.0),
+        glam::DVec3::new(2.0, 0.0, -2.0),
+    ];
+    let eye = glam::DVec3::new(0.1, 40.0, 0.05);
+    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+    let mut unit = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+    };
+    let mut compared = 0;
+    for _ in 0..200 {
+        // Two short edges meeting at `c`, nearly parallel seen from the eye.
+        let c = glam::DVec3::new(unit() * 0.5, 1.0 + unit() * 0.1, unit() * 0.5);
+        let p = c + glam::DVec3::new(1e-3, unit() * 1e-6, 1e-3 * (1.0 + unit() * 1e-4));
+        let q = c + glam::DVec3::new(-1e-3, unit() * 1e-6, -1e-3 * (1.0 + unit() * 1e-4));
+        // A plane through the eye and two points a few ulps off the line eye–c.
+        let off = |v: f64, n: u32| (0..n).fold(v, |v, _| v.next_up());
+        let r = glam::DVec3::new(off(c.x, 1), c.y, off(c.z, 3));
+        let far = eye + (r - eye) * 1.5;
+        let sides = |k: &ExactKernel| -> Option<Vec<PolygonSide>> {
+            let poly = k.face_polygons(&ground).unwrap().remove(0);
+            let a = k.plane_through_points(eye, c, p).ok()?;
+            let b = k.plane_through_points(eye, c, q).ok()?;
+            let h = k.plane_through_points(eye, r, far + glam::DVec3::X).ok()?;
+            let (fa, ba) = k.split(&poly, &a);
+            let mut wedges = Vec::new();
+            for half in fa.into_iter().chain(ba) {
+                let (f, g) = k.split(&half, &b);
+                wedges.extend(f);
+                wedges.extend(g);
+            }
+            Some(wedges.iter().map(|w| k.classify(w, &h)).collect())
+        };
+        let filtered = sides(&ExactKernel::new());
+        let exact = sides(&ExactKernel::new().without_filter());
+        assert_eq!(filtered, exact);
+        compared += filtered.map_or(0, |s| s.len());
+    }
+    assert!(compared > 400, "{compared} wedges compared");
+}

@@ -3,14 +3,13 @@
 
 use limn_depthsort::Ordered;
 use limn_paint::{Format, PaintStats};
-use limn_scene::Scene;
 
 /// The warnings of one painter's run, after ordering and writing.
 ///
-/// `near_given` says whether the near plane came from the user (flag or scene file): an
-/// automatic one gets advice to set `--near`.
+/// `faces` is the scene's count of faces; `near_given` says whether the near plane came
+/// from the user (flag or scene file): an automatic one gets advice to set `--near`.
 pub fn losses(
-    scene: &Scene,
+    faces: usize,
     ordered: &Ordered,
     ps: &PaintStats,
     format: Format,
@@ -42,14 +41,24 @@ pub fn losses(
     if ps.approximated > 0 {
         let what = match format {
             Format::Eps => {
-                "translucent fills or outlines, or smoothly lit textured fragments: EPS \
-                            has no opacity and no blend modes, so translucent ones are \
-                            blended with the background instead and a lit texture is \
-                            multiplied by its fragment's mean lit colour"
+                "translucent fills or outlines, smoothly lit textured fragments, or \
+                            fragments with a blended texture alpha: EPS has no opacity and \
+                            no blend modes, so translucent ones are blended with the \
+                            background instead, a lit texture is multiplied by its \
+                            fragment's mean lit colour, and a texture's alpha (glTF \
+                            alphaMode BLEND) is not drawn (cut-outs, MASK, are)"
             }
             Format::Tikz => {
                 "smoothly shaded fragments: TikZ has no triangle-mesh shading, so each \
                             is filled with the mean of its corner colours"
+            }
+            Format::Svg | Format::Pdf => {
+                "fragments the format can only approximate (textures reaching too many \
+                            repetitions filled with their mean colour; translucent textured \
+                            fragments; smoothly lit fragments whose texture shows what is \
+                            behind, glTF alphaMode MASK or BLEND, drawn with their mean \
+                            lit colour; in PDF, a blended texture's fill colour also \
+                            multiplies what shows through it)"
             }
             _ => "fragments the format can only approximate",
         };
@@ -73,7 +82,7 @@ pub fn losses(
         ));
     }
     let marks_painted = ps.lines + ps.markers + ps.labels > 0;
-    if ordered.stats.fragments_out == 0 && !(marks_painted && scene.faces.is_empty()) {
+    if ordered.stats.fragments_out == 0 && !(marks_painted && faces == 0) {
         let what = if marks_painted {
             "no face is drawn"
         } else {
@@ -82,10 +91,7 @@ pub fn losses(
         out.push(format!(
             "{what}: of {} faces, {} are back faces or edge-on, {} degenerate, \
              {} outside the view or behind the near plane",
-            scene.faces.len(),
-            s.faces_culled,
-            s.faces_degenerate,
-            s.faces_clipped
+            faces, s.faces_culled, s.faces_degenerate, s.faces_clipped
         ));
     }
     out

@@ -8,10 +8,10 @@ use std::time::Instant;
 
 use limn_depthsort::{order, order_with_marks, OrderError, OrderOptions, Ordered, VisibleMarks};
 use limn_paint::{
-    hidden_line_picture, painter_for, picture_with_marks, Format, Painter, Picture, SvgOptions,
-    SvgPainter, TikzOptions, TikzPainter,
+    add_seam_flaps, hidden_line_picture, painter_for, picture_with_marks_unflapped, Format,
+    Painter, Picture, SvgOptions, SvgPainter, TikzOptions, TikzPainter,
 };
-use limn_scene::{Camera, Scene};
+use limn_scene::{Camera, Effects, Scene};
 
 use crate::error::Error;
 use crate::events::Events;
@@ -48,9 +48,10 @@ pub struct Rendered<'a> {
     pub stats: Option<RenderStats>,
     /// Every warning of the render, loading and drawing.
     pub warnings: Vec<String>,
-    /// The scene, the order and the picture, kept so that a caller about to exit can
-    /// leave them to the system instead of freeing millions of allocations one by one
-    /// (`std::mem::forget` on the whole result).
+    /// The scene (a loaded one without its faces and vertex data, released once the
+    /// picture was composed), the order and the picture, kept so that a caller about to
+    /// exit can leave them to the system instead of freeing millions of allocations one
+    /// by one (`std::mem::forget` on the whole result).
     _scene: Cow<'a, Scene>,
     parts: Option<Box<Parts>>,
 }
@@ -142,7 +143,7 @@ fn run<'a>(
         events,
         warnings: Vec::new(),
     };
-    let loaded = load(&req.input, &o.view, &mut ev)?;
+    let mut loaded = load(&req.input, &o.view, &mut ev)?;
     let scene: &Scene = &loaded.scene;
     let name = &loaded.name;
     let cam = settings::camera(scene, &o.view, loaded.settings.size, name)?;
@@ -184,6 +185,10 @@ fn run<'a>(
     }
     let t1 = Instant::now();
     ev.phase("ordering");
+    // What the statistics and warnings need of the scene, which may be released before.
+    let faces = scene.faces.len();
+    let effects = Effects::of(scene);
+    let files = scene.files.clone();
     let hidden_line = settings::hidden_line_style(o, &loaded.settings);
     let background = settings::background(o, &loaded.settings);
     let drawn_scene = hidden_line.as_ref().map(|h| {
@@ -201,7 +206,12 @@ fn run<'a>(
         (Some(h), Some((s, first))) => {
             hidden_line_picture(s, &mut ordered, &marks, *first, h, &style)
         }
-        _ => picture_with_marks(ordered_scene, &mut ordered, &marks, &style),
+        _ => {
+            let mut pic = picture_with_marks_unflapped(scene, &mut ordered, &marks, &style);
+            release_faces(&mut loaded.scene);
+            add_seam_flaps(&mut pic, &style);
+            pic
+        }
     };
     let painter: Box<dyn Painter> = match format {
         Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
@@ -216,15 +226,15 @@ fn run<'a>(
     };
     let ps = match out {
         Some(w) => painter.paint(&pic, w)?,
-        None => write_atomic(&output, &scene.files, |w| Ok(painter.paint(&pic, w)?))?,
+        None => write_atomic(&output, &files, |w| Ok(painter.paint(&pic, w)?))?,
     };
     let t3 = Instant::now();
-    for w in losses(scene, &ordered, &ps, format, cam.near.is_some()) {
+    for w in losses(faces, &ordered, &ps, format, cam.near.is_some()) {
         ev.warning(&w);
     }
     let timing = [ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t0, Instant::now())];
     let stats = RenderStats::new(
-        scene,
+        effects,
         &ordered,
         &oo,
         (&ps, &marks.stats),
@@ -233,7 +243,7 @@ fn run<'a>(
     );
     if let Some(path) = &o.stats {
         let text = stats.to_json_text();
-        write_atomic(path, &scene.files, |w| {
+        write_atomic(path, &files, |w| {
             w.write_all(text.as_bytes())
                 .map_err(|source| crate::output::OutputError::Write {
                     path: path.clone(),
@@ -258,6 +268,19 @@ fn run<'a>(
         _scene: loaded.scene,
         parts: Some(Box::new(parts)),
     })
+}
+
+/// Releases a loaded scene's faces and vertex data, which a composed picture no longer
+/// needs (a million-face scene's were about 150 MB, held while the seam flaps were put
+/// in and the picture written); a scene borrowed from the caller stays as it is.
+fn release_faces(scene: &mut Cow<'_, Scene>) {
+    if let Cow::Owned(s) = scene {
+        s.faces = Vec::new();
+        s.vertices = Vec::new();
+        s.normals = Vec::new();
+        s.texcoords = Vec::new();
+        s.colors = Vec::new();
+    }
 }
 
 /// Orders `scene` and hides its lines, markers and labels. A scene without any is only

@@ -3,7 +3,7 @@
 
 use limn_depthsort::{MarkStats, OrderOptions, Ordered};
 use limn_paint::PaintStats;
-use limn_scene::{Effects, Scene};
+use limn_scene::Effects;
 use serde::Serialize;
 
 /// Milliseconds spent per stage of a render.
@@ -120,10 +120,11 @@ pub struct RenderStats {
 }
 
 impl RenderStats {
-    /// The statistics of a render of `scene` ordered into `ordered` with `oo`, painted
-    /// with `paint`, its marks hidden with `marks`.
+    /// The statistics of a render of a scene calling for `effects` (see
+    /// [`Effects::of`]) ordered into `ordered` with `oo`, painted with `paint`, its marks
+    /// hidden with `marks`.
     pub fn new(
-        scene: &Scene,
+        effects: Effects,
         ordered: &Ordered,
         oo: &OrderOptions,
         (paint, marks): (&PaintStats, &MarkStats),
@@ -131,7 +132,7 @@ impl RenderStats {
         warnings: Vec<String>,
     ) -> RenderStats {
         let s = &ordered.stats;
-        let mut effects: Vec<&'static str> = Effects::of(scene).names();
+        let mut effects: Vec<&'static str> = effects.names();
         if s.faces_culled > 0 {
             effects.push("backface-culling");
         }

@@ -31,8 +31,22 @@ pub fn marker_stroke(size: f64) -> f64 {
 /// The ordered fragments are released once composed (`ordered.fragments` is left empty;
 /// [`limn_depthsort::Stats::fragments_out`] still counts them): the seam flaps are put in
 /// without them beside the picture (a million-face picture's ordered fragments were
-/// 110 MB of its peak).
+/// 110 MB of its peak). It is [`picture_with_marks_unflapped`] then [`add_seam_flaps`].
 pub fn picture_with_marks(
+    scene: &Scene,
+    ordered: &mut Ordered,
+    visible: &VisibleMarks,
+    style: &Style,
+) -> Picture {
+    let mut pic = picture_with_marks_unflapped(scene, ordered, visible, style);
+    add_seam_flaps(&mut pic, style);
+    pic
+}
+
+/// [`picture_with_marks`] without its seam flaps, which [`add_seam_flaps`] puts in: the
+/// scene is not needed for them, and a caller that holds it only for this picture can
+/// release it first (a million-face scene's faces are about 150 MB).
+pub fn picture_with_marks_unflapped(
     scene: &Scene,
     ordered: &mut Ordered,
     visible: &VisibleMarks,
@@ -45,18 +59,8 @@ pub fn picture_with_marks(
     let mut pic = picture(scene, ordered, &plain);
     let count = ordered.fragments.len();
     ordered.fragments = Vec::new();
-    let mut at: Vec<usize> = (0..count).collect();
-    if style.seams.is_finite() && style.seams > 0.0 {
-        let (frags, idx) = seam_flaps_indexed(
-            std::mem::take(&mut pic.fragments),
-            style.seams,
-            style.flap_join(),
-        );
-        pic.fragments = frags;
-        at = idx;
-    }
     let total = pic.fragments.len();
-    let place = |before: usize| at.get(before).copied().unwrap_or(total);
+    let place = |before: usize| if before < count { before } else { total };
     let mut marks = Vec::new();
     let mut pieces: Vec<(usize, LinePiece)> = visible
         .pieces
@@ -155,4 +159,23 @@ pub fn picture_with_marks(
     marks.sort_by_key(|m| m.before);
     pic.marks = marks;
     pic
+}
+
+/// Puts the seam flaps `style` asks for into a picture of [`picture_with_marks_unflapped`]
+/// (see [`crate::seam_flaps`]), its marks moved with the fragments they follow.
+pub fn add_seam_flaps(pic: &mut Picture, style: &Style) {
+    if !(style.seams.is_finite() && style.seams > 0.0) {
+        return;
+    }
+    let (frags, at) = seam_flaps_indexed(
+        std::mem::take(&mut pic.fragments),
+        style.seams,
+        style.flap_join(),
+    );
+    pic.fragments = frags;
+    let total = pic.fragments.len();
+    for m in &mut pic.marks {
+        m.before = at.get(m.before).copied().unwrap_or(total);
+    }
+    pic.marks.sort_by_key(|m| m.before);
 }

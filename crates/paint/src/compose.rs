@@ -279,8 +279,12 @@ fn flat_fragment(
 ) -> (PaintFragment, bool) {
     let face = &scene.faces[f.face as usize];
     // An opaque face's first piece is painted as the whole polygon (see `covers`);
-    // translucent faces must not be painted twice.
-    let use_cover = fill[3] >= 1.0 && style.seamless && cover.is_some();
+    // translucent faces (and those whose texture shows through) must not be painted
+    // twice.
+    let use_cover = fill[3] >= 1.0
+        && scene.materials[face.material as usize].is_opaque()
+        && style.seamless
+        && cover.is_some();
     let (points, original_edges) = match cover {
         Some(c) if use_cover => (c.clone(), vec![true; c.len()]),
         _ => (f.points.clone(), f.original_edges.clone()),

@@ -58,7 +58,10 @@ use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint,
 use super::pdf::push_ps_string;
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over};
-use super::{eps_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
+use super::{
+    eps_texture, texture_images, texture_mask, Label, PaintError, PaintStats, Painter, Picture,
+};
+use limn_scene::TextureAlpha;
 
 /// Options for [`EpsPainter`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -259,9 +262,11 @@ impl Writer {
         // Under the pieces, the whole run (fragments and seam flaps) under one affine
         // map, the first fan triangle's: the edges between pieces then show nearly the
         // same texels. In clips of at most MAX_POINTS_PER_FILL points.
+        // (Not under a cut-out: it would show where the pieces' boundaries cut.)
         let whole = run
             .iter()
             .find_map(|f| f.src.texture.as_deref().copied())
+            .filter(|map| !map.see_through())
             .and_then(|map| {
                 affine_pieces(&run[0].points, &map, f64::INFINITY)
                     .into_iter()
@@ -369,7 +374,8 @@ impl Painter for EpsPainter {
         }
         for (k, t) in picture.textures.iter().enumerate() {
             let (rgb, tw, th) = texture_images::rgb_rows(t);
-            eps_texture::write_definition(b, k as u32, &rgb, tw, th);
+            let mask = texture_mask::shown_rects_y_up(t);
+            eps_texture::write_definition(b, k as u32, &rgb, (tw, th), mask.as_deref());
         }
         if w.seams {
             // Fill, then stroke the same path in the fill colour (closing seams).
@@ -438,6 +444,10 @@ impl Painter for EpsPainter {
                     let decode = (w.quantise(lo), w.quantise(hi));
                     let mean = w.quantise(mean);
                     stats.approximated += w.textured_run(b, run, k, decode, mean);
+                    // A blended texture's alpha: not drawn (no soft alpha).
+                    if picture.textures[k as usize].alpha() == TextureAlpha::Blend {
+                        stats.approximated += run.len();
+                    }
                     // Smoothly lit: each fragment in the mean of its corners' colours
                     // (PostScript has no blend mode to multiply a shading over an
                     // image).

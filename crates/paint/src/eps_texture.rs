@@ -25,7 +25,9 @@
 //! flattening flat fills get (and counted as approximated likewise).
 //!
 //! The image carries a wrapped border (see `texture_images.rs`); each repetition is
-//! clipped to its unit square grown by half a texel, as in PDF.
+//! clipped to its unit square grown by half a texel, as in PDF, or a cut-out's to its
+//! shown texels (`[x y w h …] rectclip`, see `texture_mask.rs`). PostScript has no soft
+//! alpha: a blended texture is drawn opaque (counted as approximated).
 
 use super::number::{push_num, push_uint};
 use super::texture_images::unit_square_placement;
@@ -34,7 +36,15 @@ use super::texture_pieces::{push_flipped_outline, AffinePiece};
 /// Writes the prolog's definitions for texture `k`: its padded RGB rows `rgb` (`w` ×
 /// `h`, rows top to bottom) as `/tdK` and the drawing procedure `/TK` (see the module
 /// docs). `/TK` takes the matrix from the unit square of one repetition to the page.
-pub(crate) fn write_definition(buf: &mut Vec<u8>, k: u32, rgb: &[u8], w: u32, h: u32) {
+/// A cut-out's shown texels `mask` (see `texture_mask.rs`) are its clip instead of the
+/// unit square.
+pub(crate) fn write_definition(
+    buf: &mut Vec<u8>,
+    k: u32,
+    rgb: &[u8],
+    (w, h): (u32, u32),
+    mask: Option<&[[f64; 4]]>,
+) {
     const HEX: &[u8; 16] = b"0123456789abcdef";
     buf.extend_from_slice(b"/td");
     push_uint(buf, k.into());
@@ -56,10 +66,28 @@ pub(crate) fn write_definition(buf: &mut Vec<u8>, k: u32, rgb: &[u8], w: u32, h:
     buf.extend_from_slice(b"/T");
     push_uint(buf, k.into());
     buf.extend_from_slice(b"{gsave concat ");
-    // The unit square grown by half a texel, then the padded image around it.
-    for v in clip {
-        push_num(buf, v, 9);
-        buf.push(b' ');
+    // The unit square grown by half a texel (a cut-out: its shown texels, as an array
+    // of rectangles), then the padded image around it.
+    match mask {
+        None => {
+            for v in clip {
+                push_num(buf, v, 9);
+                buf.push(b' ');
+            }
+        }
+        Some(rects) => {
+            buf.push(b'[');
+            for (i, v) in rects.iter().flatten().enumerate() {
+                if i > 0 {
+                    buf.push(if i % 16 == 0 { b'\n' } else { b' ' });
+                }
+                push_num(buf, *v, 9);
+            }
+            if rects.is_empty() {
+                buf.extend_from_slice(b"0 0 0 0");
+            }
+            buf.extend_from_slice(b"] ");
+        }
     }
     buf.extend_from_slice(b"rectclip [");
     for v in place {
@@ -119,7 +147,7 @@ mod tests {
     fn rows_are_hex_strings_and_the_procedure_names_the_texture() {
         let rgb: Vec<u8> = (0..2 * 3 * 3).map(|v| v as u8 * 15).collect();
         let mut b = Vec::new();
-        write_definition(&mut b, 4, &rgb, 3, 2);
+        write_definition(&mut b, 4, &rgb, (3, 2), None);
         let s = String::from_utf8(b).unwrap();
         assert!(s.starts_with("/td4 [\n<000f1e2d3c4b5a6978>\n<8796a5b4c3d2e1f0ff>\n] def\n"));
         assert!(s.contains("/T4{gsave concat"));

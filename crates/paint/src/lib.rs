@@ -92,6 +92,7 @@ mod model;
 mod number;
 mod painter;
 mod pdf;
+mod pdf_objects;
 mod pdf_texture;
 pub mod phong;
 mod png;
@@ -107,12 +108,15 @@ mod texture_bake;
 mod texture_collapse;
 mod texture_images;
 mod texture_levels;
+mod texture_mask;
 mod texture_patches;
 mod texture_pieces;
 mod texturing;
 mod tikz;
 
-pub use annotate::{head_length, marker_stroke, picture_with_marks};
+pub use annotate::{
+    add_seam_flaps, head_length, marker_stroke, picture_with_marks, picture_with_marks_unflapped,
+};
 pub use compose::{picture, Style};
 pub use covers::covers;
 pub use eps::{EpsOptions, EpsPainter};
@@ -121,7 +125,7 @@ pub use format::Format;
 pub use hidden_line::{hidden_line_picture, HiddenLineStyle};
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
-    Outline, PaintFragment, Picture, Texture, TextureMap,
+    Outline, PaintFragment, Picture, Texture, TextureAlpha, TextureMap,
 };
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};

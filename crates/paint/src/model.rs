@@ -3,7 +3,7 @@
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
-pub use limn_scene::{LabelAnchor, MarkerShape, Texture};
+pub use limn_scene::{LabelAnchor, MarkerShape, Texture, TextureAlpha};
 
 /// One convex (or at least simple) polygon to paint, in pixel coordinates (x right, y down).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -47,9 +47,17 @@ pub struct TextureMap {
     pub texture: u32,
     /// Rows of the 3 × 3 matrix `H`: `(s·q, t·q, q) = H · (x, y, 1)`.
     pub screen_to_st: [[f64; 3]; 3],
+    /// How the texture's alpha is drawn (see [`limn_scene::TextureAlpha`]).
+    pub alpha: TextureAlpha,
 }
 
 impl TextureMap {
+    /// Whether the texture's alpha is drawn (a cut-out or blended texture): what is
+    /// behind the fragment may show through it.
+    pub fn see_through(&self) -> bool {
+        self.alpha != TextureAlpha::Opaque
+    }
+
     /// The texture coordinates at pixel point `p`; `None` where the map is undefined
     /// (on the horizon of the fragment's plane).
     pub fn st_at(&self, p: [f64; 2]) -> Option<[f64; 2]> {
@@ -72,6 +80,12 @@ impl TextureMap {
 }
 
 impl PaintFragment {
+    /// Whether the fragment hides what is behind it wherever it lies: opacity 1 and no
+    /// texture whose alpha is drawn.
+    pub fn is_opaque(&self) -> bool {
+        self.fill[3] >= 1.0 && self.texture.as_ref().is_none_or(|t| !t.see_through())
+    }
+
     /// A flat-coloured fragment of face 0 and object 0 whose edges are all original.
     pub fn new(points: Vec<[f64; 2]>, fill: [f64; 4]) -> Self {
         let original_edges = vec![true; points.len()];
@@ -177,14 +191,22 @@ impl Picture {
 
     /// The picture with every textured fragment filled with its fill (or its vertex
     /// colours) times its texture's mean colour, and no textures: what the writers that draw no images
-    /// paint (they report it as approximated).
+    /// paint (they report it as approximated). A texture whose alpha is drawn also
+    /// multiplies the opacity by its mean alpha.
     pub fn textures_flattened(&self) -> Picture {
-        let means: Vec<[f64; 3]> = self.textures.iter().map(|t| t.mean()).collect();
+        let means: Vec<[f64; 4]> = self
+            .textures
+            .iter()
+            .map(|t| {
+                let [r, g, b] = t.mean();
+                [r, g, b, t.mean_alpha()]
+            })
+            .collect();
         let mut out = self.clone();
         out.textures.clear();
         for f in &mut out.fragments {
             if let Some(t) = f.texture.take() {
-                let m = means.get(t.texture as usize).copied().unwrap_or([1.0; 3]);
+                let m = means.get(t.texture as usize).copied().unwrap_or([1.0; 4]);
                 for (c, m) in f.fill.iter_mut().zip(m) {
                     *c *= m;
                 }

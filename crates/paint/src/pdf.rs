@@ -22,7 +22,9 @@
 //!   opaque whatever the fill opacity, and ghostscript blends the shared edges of a
 //!   mesh's triangles twice; a group is blended once.
 //! - Textured fragments: each texture is one image XObject `/ImK` (RGB, 8 bits,
-//!   Flate-compressed, `/Interpolate true`). A fragment is drawn inside `q … Q` as
+//!   Flate-compressed, `/Interpolate true`; a blended texture's with an `/SMask` of its
+//!   alpha; a cut-out's repetitions clipped to its shown texels, see `texture_mask.rs`,
+//!   the fill multiplied inside that clip). A fragment is drawn inside `q … Q` as
 //!   affine triangles within [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact
 //!   projective map, each clipped to its triangle with the image placed by `cm` (once
 //!   per repetition of the texture the triangle reaches; a triangle reaching more than
@@ -47,15 +49,20 @@ use std::cell::RefCell;
 use std::collections::BTreeSet;
 use std::io::Write;
 
-use pdf_writer::{Name, Pdf, Rect, Ref};
+use pdf_writer::writers::Catalog;
+use pdf_writer::{Name, Rect, Ref};
 
 use super::layers::Layers;
 use super::marks::{ascii_text, circle_beziers, paint_mark, MarkSink};
 use super::merge;
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
+use super::pdf_objects::ObjectWriter;
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over};
-use super::{pdf_texture, texture_images, Label, PaintError, PaintStats, Painter, Picture};
+use super::{
+    pdf_texture, svg_texture, texture_images, texture_mask, Label, PaintError, PaintStats, Painter,
+    Picture,
+};
 
 /// Options for [`PdfPainter`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -131,6 +138,10 @@ struct Content {
     font: bool,
     /// The textures (padded RGB rows, width, height) as image XObjects `/Im0`, …
     images: Vec<(Vec<u8>, u32, u32)>,
+    /// Per texture: a blended one's padded alpha rows, its image's soft mask.
+    image_alphas: Vec<Option<Vec<u8>>>,
+    /// Per texture: a cut-out's shown texels, the clip of each repetition.
+    image_masks: Vec<Option<Vec<[f64; 4]>>>,
     /// Whether `/Mul` (blend mode Multiply) is used.
     multiply: bool,
 }
@@ -237,12 +248,33 @@ impl Content {
             c.buf.extend_from_slice(b"f\n");
         };
         let mut approximated = 0;
+        let see_through = svg_texture::see_through(run);
+        if see_through && run.iter().any(|f| f.colors.is_some()) {
+            // Smoothly lit: its mean lit colour multiplies the texture (a lit mesh
+            // multiplied over it would colour its transparent parts).
+            approximated += run.len();
+        }
+        let white = self.quantise([1.0; 3]);
+        // A cut-out's fill multiplies each repetition inside its clip (its shown texels).
+        let mask = self.image_masks[k as usize].take();
+        let multiply_inside = match rgb {
+            Some(rgb) if mask.is_some() && rgb != white => {
+                let mut m = Vec::new();
+                std::mem::swap(&mut m, &mut self.buf);
+                self.color(rgb, b"rg /Mul gs 0 0 1 1 re f");
+                std::mem::swap(&mut m, &mut self.buf);
+                self.multiply = true;
+                Some(m)
+            }
+            _ => None,
+        };
         self.buf.extend_from_slice(b"q\n");
         // Under the pieces, the whole run (fragments and seam flaps: one clip) under one
         // affine map, the first fan triangle's: the anti-aliased edges between pieces
-        // then show nearly the same texels.
+        // then show nearly the same texels. Not under a texture that shows through: it
+        // would show twice.
         let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
-        let whole = source.as_ref().and_then(|map| {
+        let whole = source.as_ref().filter(|_| !see_through).and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
                 .into_iter()
                 .next()
@@ -254,6 +286,8 @@ impl Content {
                 whole,
                 k,
                 size,
+                mask.as_deref(),
+                multiply_inside.as_deref(),
                 self.height,
                 self.d,
             ) {
@@ -271,6 +305,8 @@ impl Content {
                     &p,
                     k,
                     size,
+                    mask.as_deref(),
+                    multiply_inside.as_deref(),
                     self.height,
                     self.d,
                 ) {
@@ -280,14 +316,19 @@ impl Content {
             }
             approximated += usize::from(flat);
         }
-        let white = self.quantise([1.0; 3]);
+        self.image_masks[k as usize] = mask;
         let Some(rgb) = rgb else {
             // Smoothly lit: the caller multiplies the lit colours over the texture
             // (`lit_layer`).
             self.buf.extend_from_slice(b"Q\n");
             return approximated;
         };
-        if rgb != white {
+        if rgb != white && multiply_inside.is_none() {
+            if see_through {
+                // A blended texture: the fill is multiplied over what shows through
+                // its transparent parts too.
+                approximated += run.len();
+            }
             self.buf.extend_from_slice(b"/Mul gs ");
             self.multiply = true;
             self.color(rgb, b"rg\n");
@@ -469,6 +510,16 @@ impl Painter for PdfPainter {
                 .iter()
                 .map(|t| texture_images::rgb_rows(t))
                 .collect(),
+            image_alphas: picture
+                .textures
+                .iter()
+                .map(|t| texture_images::alpha_rows(t))
+                .collect(),
+            image_masks: picture
+                .textures
+                .iter()
+                .map(|t| texture_mask::shown_rects_y_up(t))
+                .collect(),
             multiply: false,
         };
         let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
@@ -508,9 +559,11 @@ impl Painter for PdfPainter {
         let key = |f: &Frag<'_>| {
             let a = alpha_milli(f.alpha());
             if let Some(t) = &f.src.texture {
+                // A smoothly lit run whose texture shows through takes its mean lit
+                // colour (see `textured_run`).
                 let fill = match f.colors {
-                    Some(_) => None,
-                    None => Some(f.flat_rgb().map(|v| channel_fixed(v, cd))),
+                    Some(_) if !t.see_through() => None,
+                    _ => Some(f.flat_rgb().map(|v| channel_fixed(v, cd))),
                 };
                 return Style::Textured(t.texture, fill, a);
             }
@@ -617,27 +670,17 @@ impl Painter for PdfPainter {
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;
 
-        let bytes = c.document(w, h);
-        out.write_all(&bytes)?;
-        out.flush()?;
-        stats.bytes = bytes.len() as u64;
+        stats.bytes = c.write_document(w, h, out)?;
         Ok(stats)
     }
 }
 
 impl Content {
-    /// Wraps the content stream into a complete document.
-    fn document(self, w: f64, h: f64) -> Vec<u8> {
-        // One allocation for the whole file in the usual case.
-        let capacity = self.buf.len()
-            + self
-                .meshes
-                .iter()
-                .map(|m| m.data.len() + 400)
-                .sum::<usize>()
-            + 100 * (self.fill_alphas.len() + self.stroke_alphas.len())
-            + 2048;
-        let mut pdf = Pdf::with_capacity(capacity);
+    /// Wraps the content stream into a complete document written to `out` object by
+    /// object (never whole in memory: a million-face picture's was 188 MB); returns its
+    /// length in bytes.
+    fn write_document(self, w: f64, h: f64, out: &mut dyn Write) -> std::io::Result<u64> {
+        let mut pdf = ObjectWriter::new(out)?;
         let catalog = Ref::new(1);
         let pages = Ref::new(2);
         let page = Ref::new(3);
@@ -667,11 +710,19 @@ impl Content {
             .map(|i| (format!("Im{i}").into_bytes(), alloc()))
             .collect();
         let multiply = self.multiply.then(&mut alloc);
+        let soft_masks: Vec<Option<Ref>> = self
+            .image_alphas
+            .iter()
+            .map(|a| a.as_ref().map(|_| alloc()))
+            .collect();
 
-        pdf.catalog(catalog).pages(pages);
-        pdf.pages(pages).kids([page]).count(1);
+        pdf.object(catalog)?
+            .indirect(catalog)
+            .start::<Catalog>()
+            .pages(pages);
+        pdf.object(pages)?.pages(pages).kids([page]).count(1);
         {
-            let mut p = pdf.page(page);
+            let mut p = pdf.object(page)?.page(page);
             p.media_box(Rect::new(0.0, 0.0, w as f32, h as f32));
             p.parent(pages);
             p.contents(content);
@@ -705,36 +756,57 @@ impl Content {
             }
         }
         if let Some(f) = font {
-            pdf.type1_font(f)
+            pdf.object(f)?
+                .type1_font(f)
                 .base_font(Name(b"Helvetica"))
                 .encoding_predefined(Name(b"WinAnsiEncoding"));
         }
-        pdf.stream(content, &self.buf);
-        // The copy is in the document now; give the memory back before the rest is written.
+        pdf.object(content)?.stream(content, &self.buf);
+        // The copy is on its way out now; give the memory back before the rest is written.
         let Content {
             buf,
             meshes,
             images: pixels,
+            image_alphas,
             ..
         } = self;
         drop(buf);
-        for ((_, r), (rgb, iw, ih)) in images.iter().zip(&pixels) {
+        for (((_, r), (rgb, iw, ih)), soft_mask) in images.iter().zip(&pixels).zip(&soft_masks) {
             let data = miniz_oxide::deflate::compress_to_vec_zlib(rgb, 6);
-            let mut x = pdf.image_xobject(*r, &data);
+            let mut x = pdf.object(*r)?.image_xobject(*r, &data);
             x.filter(pdf_writer::Filter::FlateDecode);
             x.width(*iw as i32);
             x.height(*ih as i32);
             x.color_space().device_rgb();
             x.bits_per_component(8);
             x.interpolate(true);
+            if let Some(m) = soft_mask {
+                x.s_mask(*m);
+            }
+        }
+        // Blended textures' alpha: a grey image of the same size, interpolated as the
+        // colours are.
+        for ((alpha, m), (_, iw, ih)) in image_alphas.iter().zip(&soft_masks).zip(&pixels) {
+            let (Some(alpha), Some(m)) = (alpha, m) else {
+                continue;
+            };
+            let data = miniz_oxide::deflate::compress_to_vec_zlib(alpha, 6);
+            let mut x = pdf.object(*m)?.image_xobject(*m, &data);
+            x.filter(pdf_writer::Filter::FlateDecode);
+            x.width(*iw as i32);
+            x.height(*ih as i32);
+            x.color_space().device_gray();
+            x.bits_per_component(8);
+            x.interpolate(true);
         }
         if let Some(r) = multiply {
-            pdf.ext_graphics(r)
+            pdf.object(r)?
+                .ext_graphics(r)
                 .blend_mode(pdf_writer::types::BlendMode::Multiply);
         }
         for (_, r, stroke, m) in &states {
             let a = f32::from(*m) / 1000.0;
-            let mut gs = pdf.ext_graphics(*r);
+            let mut gs = pdf.object(*r)?.ext_graphics(*r);
             if *stroke {
                 gs.stroking_alpha(a);
             } else {
@@ -747,15 +819,17 @@ impl Content {
             let mut content = b"/Pattern cs /P scn\n".to_vec();
             content.extend_from_slice(meshes[*i].group.as_deref().unwrap_or_default());
             content.extend_from_slice(b"f\n");
-            let mut form = pdf.form_xobject(*r, &content);
+            let mut form = pdf.object(*r)?.form_xobject(*r, &content);
             form.bbox(Rect::new(0.0, 0.0, w as f32, h as f32));
             form.group().transparency();
             form.resources().patterns().pair(Name(b"P"), *pattern);
             drop(form);
-            pdf.shading_pattern(*pattern).shading_ref(shadings[*i].1);
+            pdf.object(*pattern)?
+                .shading_pattern(*pattern)
+                .shading_ref(shadings[*i].1);
         }
-        for ((_, r), mesh) in shadings.iter().zip(&meshes) {
-            let mut s = pdf.stream_shading(*r, &mesh.data);
+        for ((_, r), mesh) in shadings.iter().zip(meshes) {
+            let mut s = pdf.object(*r)?.stream_shading(*r, &mesh.data);
             // `StreamShadingType` is not exported by pdf-writer 0.14: write the number.
             s.pair(Name(b"ShadingType"), 4);
             s.color_space().device_rgb();
@@ -765,7 +839,7 @@ impl Content {
             let [x0, x1, y0, y1] = mesh.decode.map(|v| v as f32);
             s.decode([x0, x1, y0, y1, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0]);
         }
-        pdf.finish()
+        pdf.finish(catalog)
     }
 }
 

@@ -13,13 +13,18 @@ use super::texture_pieces::{push_flipped_outline, AffinePiece};
 /// textured under `piece`'s map: `q`, the polygons as the clip (non-zero rule), one `cm /ImK Do` per texture repetition it reaches, `Q`.
 /// Returns `false`, writing nothing, when it reaches too many repetitions (see
 /// [`AffinePiece::repetitions`]).
-/// `padded` is the size of the embedded (padded) image.
+/// `padded` is the size of the embedded (padded) image; `mask` a cut-out's shown
+/// texels (see `texture_mask.rs`), each repetition's clip instead of its unit square;
+/// `multiply` what paints the fill multiplied over each repetition inside that clip.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn write_clipped(
     buf: &mut Vec<u8>,
     polys: &[Vec<[f64; 2]>],
     piece: &AffinePiece,
     k: u32,
     padded: (u32, u32),
+    mask: Option<&[[f64; 4]]>,
+    multiply: Option<&[u8]>,
     height: f64,
     d: u8,
 ) -> bool {
@@ -34,19 +39,33 @@ pub(crate) fn write_clipped(
         buf.extend_from_slice(b"q ");
         AffinePiece::push_tile_matrix(buf, piece.flipped_tile_matrix(tile, height), d);
         buf.extend_from_slice(b" cm ");
-        // The unit square grown by half a texel, then the padded image around it.
-        for v in clip {
-            push_num(buf, v, 9);
-            buf.push(b' ');
+        // The unit square grown by half a texel (a cut-out: its shown texels, an empty
+        // rectangle when none shows), then the padded image around it.
+        let rects = match mask {
+            None => std::slice::from_ref(&clip),
+            Some([]) => &[[0.0; 4]],
+            Some(m) => m,
+        };
+        for r in rects {
+            for v in r {
+                push_num(buf, *v, 9);
+                buf.push(b' ');
+            }
+            buf.extend_from_slice(b"re ");
         }
-        buf.extend_from_slice(b"re W n ");
+        buf.extend_from_slice(b"W n ");
         for v in place {
             push_num(buf, v, 9);
             buf.push(b' ');
         }
         buf.extend_from_slice(b"cm /Im");
         push_uint(buf, k.into());
-        buf.extend_from_slice(b" Do Q\n");
+        buf.extend_from_slice(b" Do");
+        if let Some(m) = multiply {
+            buf.push(b' ');
+            buf.extend_from_slice(m);
+        }
+        buf.extend_from_slice(b" Q\n");
     }
     buf.extend_from_slice(b"Q\n");
     true

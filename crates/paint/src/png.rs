@@ -22,6 +22,10 @@
 //! above) times the texture sampled at the texture coordinates of
 //! the pixel's centre under the fragment's projective map (perspective-correct, bilinear,
 //! repeating). With supersampling, each sample is textured and the samples averaged.
+//! A texture's alpha, where drawn ([`limn_scene::TextureAlpha`]), multiplies the
+//! opacity at each sample: a cut-out's sample shows its colour wholly when the texel
+//! holding it shows, else nothing; a blended texture's alpha is sampled bilinearly on
+//! premultiplied texels.
 
 use std::borrow::Cow;
 use std::cell::RefCell;
@@ -519,18 +523,19 @@ fn textured(
                     c
                 }
             };
-            let c = match &maps[best.1] {
+            // The texture's alpha (1 unless drawn) multiplies the opacity.
+            let (c, ta) = match &maps[best.1] {
                 Some(map) => {
                     let tex = &textures[map.texture as usize];
-                    let t = match map.st_at([px, py]) {
-                        Some(st) => tex.sample(st),
-                        None => tex.mean(),
-                    };
-                    [0, 1, 2].map(|k| (fill[k] * t[k]).clamp(0.0, 1.0))
+                    let t = tex.sample_rgba(map.st_at([px, py]).unwrap_or([f64::NAN; 2]));
+                    ([0, 1, 2].map(|k| (fill[k] * t[k]).clamp(0.0, 1.0)), t[3])
                 }
-                None => [0, 1, 2].map(|k| fill[k].clamp(0.0, 1.0)),
+                None => ([0, 1, 2].map(|k| fill[k].clamp(0.0, 1.0)), 1.0),
             };
-            let a = alpha * f64::from(m) / 255.0;
+            if ta <= 0.0 {
+                continue;
+            }
+            let a = alpha * f64::from(m) / 255.0 * ta;
             let at = j as usize * stride + i as usize * 4;
             let px = &mut data[at..at + 4];
             let out_a = a * 255.0 + f64::from(px[3]) * (1.0 - a);

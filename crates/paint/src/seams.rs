@@ -388,8 +388,15 @@ fn along(a: [f64; 2], b: [f64; 2], ca: [f64; 4], cb: [f64; 4], p: [f64; 2]) -> [
     [0, 1, 2, 3].map(|k| ca[k] + t * (cb[k] - ca[k]))
 }
 
+/// Whether `f` takes part in seam flaps: opaque, or a cut-out (its flap is drawn with
+/// its texture and cut by the same texels as the fragment beyond the edge wherever the
+/// texture runs on across it). Blended textures, as translucent fills, are not flapped:
+/// a flap would blend twice.
 fn opaque(f: &PaintFragment) -> bool {
     f.fill[3] >= 1.0
+        && f.texture
+            .as_ref()
+            .is_none_or(|t| t.alpha != limn_scene::TextureAlpha::Blend)
 }
 
 /// For every edge of every opaque fragment, the first opaque fragment of another face

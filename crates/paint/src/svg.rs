@@ -36,7 +36,8 @@
 //! `<image id="texK">` filling the unit square of texture space (with a wrapped border
 //! of one texel outside it, see `texture_images.rs`; `image-rendering:smooth` asks for
 //! bilinear interpolation, as limn samples), with a `<clipPath id="unitK">`: that square
-//! grown by half a texel. A textured fragment is drawn as triangles within
+//! grown by half a texel (a cut-out texture's: the rectangles of its shown texels, see
+//! `texture_mask.rs`; a blended texture's PNG carries its alpha). A textured fragment is drawn as triangles within
 //! [`crate::MAX_PERSPECTIVE_ERROR`] pixels of the exact projective map (see
 //! `texture_pieces.rs`), each a `<clipPath id="tcN">` of its own and a
 //! `<g clip-path="url(#tcN)">` holding one `<use href="#texK" transform="matrix(…)"
@@ -283,7 +284,8 @@ impl Painter for SvgPainter {
             let (rgb, alpha, smooth, texture) = *key;
             let mut sink = sink.borrow_mut();
             let mut stats = stats.borrow_mut();
-            let lit_run = smooth && texture.is_some() && alpha >= 1000;
+            let lit_run =
+                smooth && texture.is_some() && alpha >= 1000 && !svg_texture::see_through(run);
             // Anything else written first: the waiting lit fills go out before it.
             if !lit_run
                 || !batch.borrow().is_empty()

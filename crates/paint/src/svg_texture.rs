@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use super::number::{push_hex_color, push_num, push_uint, rgb_u8};
 use super::runs::{reversals, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over, AffinePiece};
-use super::{svg_smooth_run, texture_images, PaintError, Texture};
+use super::{svg_smooth_run, texture_images, texture_mask, PaintError, Texture};
 
 /// Ids handed out while writing: clip paths and colour filters.
 #[derive(Default)]
@@ -46,12 +46,40 @@ pub(crate) fn write_defs(
         b.extend_from_slice(uri.as_bytes());
         b.extend_from_slice(b"\"/>\n<clipPath id=\"unit");
         push_uint(b, k as u64);
-        b.extend_from_slice(b"\"><rect");
-        rect_attrs(b, [-0.5 / tw, -0.5 / th, 1.0 + 1.0 / tw, 1.0 + 1.0 / th]);
-        b.extend_from_slice(b"/></clipPath>\n");
+        match texture_mask::shown_rects(t) {
+            // A cut-out: its shown texels, edge to edge.
+            Some(rects) => {
+                b.extend_from_slice(b"\"><path d=\"");
+                for [x, y, w, h] in rects {
+                    b.push(b'M');
+                    push_num(b, x, 9);
+                    b.push(b' ');
+                    push_num(b, y, 9);
+                    b.push(b'h');
+                    push_num(b, w, 9);
+                    b.push(b'v');
+                    push_num(b, h, 9);
+                    b.push(b'h');
+                    push_num(b, -w, 9);
+                    b.push(b'Z');
+                }
+                b.extend_from_slice(b"\"/></clipPath>\n");
+            }
+            None => {
+                b.extend_from_slice(b"\"><rect");
+                rect_attrs(b, [-0.5 / tw, -0.5 / th, 1.0 + 1.0 / tw, 1.0 + 1.0 / th]);
+                b.extend_from_slice(b"/></clipPath>\n");
+            }
+        }
     }
     b.extend_from_slice(b"</defs>\n");
     Ok(())
+}
+
+/// Whether a run's texture lets what is behind show through (its alpha is drawn).
+pub(crate) fn see_through(run: &[Frag<'_>]) -> bool {
+    run.iter()
+        .any(|f| f.src.texture.as_ref().is_some_and(|t| t.see_through()))
 }
 
 /// ` x="…" y="…" width="…" height="…"`.
@@ -86,9 +114,15 @@ impl SvgTextures {
     ) -> usize {
         let rgb = rgb_u8(run[0].flat_rgb());
         // Fill times texture: a colour matrix over the group (exact at every pixel,
-        // edges included).
+        // edges included, and the alpha kept). A smoothly lit run whose texture lets
+        // what is behind show through takes its mean lit colour so (a multiplied smooth
+        // fill would colour its transparent parts): counted as approximated.
         let smooth = run.iter().any(|f| f.colors.is_some());
-        let filter = (rgb != [255; 3] && !smooth).then(|| {
+        let see_through = see_through(run);
+        if smooth && see_through {
+            self.approximated += run.len();
+        }
+        let filter = (rgb != [255; 3] && (!smooth || see_through)).then(|| {
             let next = self.filters.len();
             let id = *self.filters.entry(rgb).or_insert(next);
             if id == next {
@@ -136,7 +170,8 @@ impl SvgTextures {
             .map(|(f, reverse)| f.oriented(reverse).collect())
             .collect();
         let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
-        let whole = source.as_ref().and_then(|map| {
+        // (Not under a texture that shows through: it would show twice.)
+        let whole = source.as_ref().filter(|_| !see_through).and_then(|map| {
             affine_pieces(&run[0].points, map, f64::INFINITY)
                 .into_iter()
                 .next()
@@ -150,7 +185,7 @@ impl SvgTextures {
                 drawn += self.clipped(b, std::slice::from_ref(&p.points), &p, k, mean, d);
             }
         }
-        if let Some((tolerance, gradients)) = lit {
+        if let Some((tolerance, gradients)) = lit.filter(|_| !see_through) {
             // The lit colours as the untextured face's smooth fill, multiplied over the
             // texture inside the group (blended once with the opacity).
             b.extend_from_slice(b"<g style=\"mix-blend-mode:multiply\">\n");

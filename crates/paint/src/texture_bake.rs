@@ -6,8 +6,9 @@
 //! clipping it: a 14 × 14-texel patch whose texels cover 200 pixels each costs them
 //! 2,800 × 2,800 pixels for a face of five (poppler spent most of a Duck's time there).
 //! The page-aligned image holds the face's texture sampled at the centre of each page
-//! pixel around it (as the PNG painter samples: perspective-correct, bilinear), so its
-//! pixels are those of the texture and the viewer's cost is the face's size.
+//! pixel around it (as the PNG painter samples: perspective-correct, bilinear, alpha
+//! included), so its pixels are those of the texture and the viewer's cost is the
+//! face's size. Cut-out textures are not baked: their boundary follows their texels.
 
 use limn_scene::Texture;
 
@@ -64,13 +65,16 @@ pub(crate) fn bake(
     for j in 0..h {
         for i in 0..w {
             let st = map.st_at([x0 + f64::from(i) + 0.5, y0 + f64::from(j) + 0.5])?;
-            let c = texture.sample(st);
+            let c = texture.sample_rgba(st);
             rgba.extend(c.map(|v| (v * 255.0).round() as u8));
-            rgba.push(255);
         }
     }
     let name = format!("{} (page samples)", texture.name());
-    let baked = Texture::new(&name, w, h, rgba).ok()?;
+    // A blended texture's alpha is sampled with its colour (cut-outs are not baked:
+    // their boundary stays on their texels).
+    let baked = Texture::new(&name, w, h, rgba)
+        .ok()?
+        .with_alpha(texture.alpha());
     let (fw, fh) = (f64::from(w), f64::from(h));
     let to_image = [
         [1.0 / fw, 0.0, -x0 / fw],
@@ -83,6 +87,7 @@ pub(crate) fn bake(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::TextureAlpha;
 
     #[test]
     fn a_baked_image_holds_the_texture_at_pixel_centres() {
@@ -94,6 +99,7 @@ mod tests {
         let map = TextureMap {
             texture: 0,
             screen_to_st: [[0.05, 0.01, 0.0], [0.0, 0.002, 0.1], [0.0, 0.0, 1.0]],
+            alpha: TextureAlpha::Opaque,
         };
         let page = [[10.2, 20.5], [14.7, 21.0], [12.0, 25.9]];
         let (baked, to_image) = bake(&t, &map, page, 2.0).unwrap();
@@ -101,6 +107,7 @@ mod tests {
         let moved = TextureMap {
             texture: 0,
             screen_to_st: to_image,
+            alpha: TextureAlpha::Opaque,
         };
         for p in [[12.5, 22.5], [9.5, 19.5], [16.5, 27.5]] {
             let want = t.sample(map.st_at(p).unwrap());

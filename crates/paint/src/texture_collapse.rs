@@ -66,17 +66,18 @@ pub(crate) struct Band {
 }
 
 /// The largest difference of one channel between neighbouring texels (horizontally or
-/// vertically, wrapping included), in [0, 1].
+/// vertically, wrapping included), in [0, 1]; alpha is a channel where it is drawn.
 pub(crate) fn max_step(t: &Texture) -> f64 {
     let (w, h) = (t.width() as usize, t.height() as usize);
     let px = t.rgba();
     let at = |i: usize, j: usize| 4 * (j * w + i);
+    let channels = if t.is_opaque() { 3 } else { 4 };
     let mut worst = 0u8;
     for j in 0..h {
         for i in 0..w {
             let p = at(i, j);
             for q in [at((i + 1) % w, j), at(i, (j + 1) % h)] {
-                for k in 0..3 {
+                for k in 0..channels {
                     worst = worst.max(px[p + k].abs_diff(px[q + k]));
                 }
             }
@@ -248,14 +249,17 @@ impl Strips {
                     for k in 0..n + 2 {
                         let l = (k.clamp(1, n) - 1) as f64 / (n - 1) as f64;
                         let st = [0, 1].map(|q| from[q] + (to[q] - from[q]) * l + across[q] * mu);
-                        let c = t.sample(st);
+                        // Colour and alpha (a cut-out's: whether the texel holding
+                        // the sample shows).
+                        let c = t.sample_rgba(st);
                         rgba.extend(c.map(|v| (v * 255.0).round().clamp(0.0, 255.0) as u8));
-                        rgba.push(255);
                     }
                 }
                 let name = format!("{} (band)", t.name());
                 // At most MAX_STRIP_SAMPLES + 2 by MAX_BAND_ROWS + 2 texels: a valid size.
-                Arc::new(Texture::new(&name, (n + 2) as u32, rows as u32, rgba).expect("band size"))
+                let band =
+                    Texture::new(&name, (n + 2) as u32, rows as u32, rgba).expect("band size");
+                Arc::new(band.with_alpha(t.alpha()))
             })
             .clone();
         let (tw, th) = (f64::from(texture.width()), f64::from(texture.height()));

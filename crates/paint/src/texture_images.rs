@@ -1,6 +1,8 @@
 //! Texture images as the vector formats embed them: PNG for SVG `data:` URIs, raw RGB
-//! rows for PDF image XObjects (which compress them themselves). Texture alpha is not
-//! drawn (see [`limn_scene::texture`]), so both carry RGB only.
+//! rows for PDF image XObjects (which compress them themselves). Only a blended
+//! texture ([`limn_scene::TextureAlpha::Blend`]) carries its alpha: an RGBA PNG, a PDF
+//! soft mask of its alpha rows; every other texture is embedded opaque, RGB only (a
+//! cut-out's texels are clipped instead, see `texture_mask.rs`).
 //!
 //! **Padding.** Viewers interpolate an image only within itself: near its border they
 //! clamp (or fade to transparent), where limn's repeating sampler blends with the
@@ -10,14 +12,16 @@
 //! samples.
 
 use base64::Engine as _;
-use limn_scene::Texture;
+use limn_scene::{Texture, TextureAlpha};
 use tiny_skia::{IntSize, Pixmap};
 
 /// Texels of wrapped border around each embedded image.
 pub(crate) const PAD: u32 = 1;
 
-/// The texture with its wrapped border (see the module docs), opaque RGBA, and its size.
+/// The texture with its wrapped border (see the module docs), RGBA (opaque unless the
+/// texture is blended), and its size.
 fn padded(t: &Texture) -> (Vec<u8>, u32, u32) {
+    let keep_alpha = t.alpha() == TextureAlpha::Blend;
     let (w, h) = (t.width(), t.height());
     let (pw, ph) = (w + 2 * PAD, h + 2 * PAD);
     let src = t.rgba();
@@ -27,7 +31,8 @@ fn padded(t: &Texture) -> (Vec<u8>, u32, u32) {
         for i in 0..pw {
             let si = (i64::from(i) - i64::from(PAD)).rem_euclid(i64::from(w)) as usize;
             let at = 4 * (sj * w as usize + si);
-            out.extend_from_slice(&[src[at], src[at + 1], src[at + 2], 255]);
+            let a = if keep_alpha { src[at + 3] } else { 255 };
+            out.extend_from_slice(&[src[at], src[at + 1], src[at + 2], a]);
         }
     }
     (out, pw, ph)
@@ -48,15 +53,41 @@ pub(crate) fn unit_square_placement(w: u32, h: u32) -> ([f64; 4], [f64; 6]) {
     )
 }
 
-/// The padded texture as a `data:image/png;base64,…` URI (opaque); `None` if it cannot
-/// be encoded.
+/// The padded texture as a `data:image/png;base64,…` URI (opaque, or RGBA for a
+/// blended texture); `None` if it cannot be encoded.
 pub(crate) fn png_data_uri(t: &Texture) -> Option<String> {
     let (rgba, w, h) = padded(t);
-    let size = IntSize::from_wh(w, h)?;
-    let png = Pixmap::from_vec(rgba, size)?.encode_png().ok()?;
+    let png = if t.alpha() == TextureAlpha::Blend {
+        rgba_png(&rgba, w, h)?
+    } else {
+        let size = IntSize::from_wh(w, h)?;
+        Pixmap::from_vec(rgba, size)?.encode_png().ok()?
+    };
     let mut uri = String::from("data:image/png;base64,");
     base64::engine::general_purpose::STANDARD.encode_string(png, &mut uri);
     Some(uri)
+}
+
+/// `rgba` (`w` × `h`, straight alpha) as a PNG file.
+fn rgba_png(rgba: &[u8], w: u32, h: u32) -> Option<Vec<u8>> {
+    let mut out = Vec::new();
+    let mut encoder = png::Encoder::new(&mut out, w, h);
+    encoder.set_color(png::ColorType::Rgba);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().ok()?;
+    writer.write_image_data(rgba).ok()?;
+    writer.finish().ok()?;
+    Some(out)
+}
+
+/// The padded alpha of a blended texture, rows top to bottom (a PDF soft mask);
+/// `None` for every other texture.
+pub(crate) fn alpha_rows(t: &Texture) -> Option<Vec<u8>> {
+    if t.alpha() != TextureAlpha::Blend {
+        return None;
+    }
+    let (rgba, _, _) = padded(t);
+    Some(rgba.chunks_exact(4).map(|p| p[3]).collect())
 }
 
 /// The padded texture's RGB bytes, rows top to bottom, and its size.

@@ -8,7 +8,10 @@
 //! pixel along it: box filters over exact areas, the texture's unit square unchanged,
 //! so texture coordinates stay as they are. Faces that spread fewer than two texels
 //! over a pixel keep the texture itself. Boundaries are not touched: only the colours
-//! inside a face are the average of what its pixels cover rather than samples.
+//! inside a face are the average of what its pixels cover rather than samples. A
+//! blended texture's alpha is averaged with its colours, these weighted by it
+//! (premultiplied, as it is sampled); a cut-out is never averaged (its texels decide
+//! its boundary).
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -64,12 +67,20 @@ fn averaged(t: &Texture, factors: [u32; 2]) -> Texture {
     // Rows first (w → nw), then columns (h → nh), four channels each.
     let mut rows = vec![0.0f32; 4 * nw * h];
     let row_boxes = boxes(w, nw);
+    // Colours weighted by alpha where the alpha is drawn (1 elsewhere).
+    let blended = !t.is_opaque();
     for (j, row) in t.rgba().chunks_exact(4 * w).enumerate() {
         let out = &mut rows[4 * nw * j..4 * nw * (j + 1)];
         for &(o, i, weight) in &row_boxes {
-            for c in 0..4 {
-                out[4 * o + c] += weight * f32::from(row[4 * i + c]);
+            let a = if blended {
+                f32::from(row[4 * i + 3]) / 255.0
+            } else {
+                1.0
+            };
+            for c in 0..3 {
+                out[4 * o + c] += weight * a * f32::from(row[4 * i + c]);
             }
+            out[4 * o + 3] += weight * f32::from(row[4 * i + 3]);
         }
     }
     let mut out = vec![0.0f32; 4 * nw * nh];
@@ -79,13 +90,23 @@ fn averaged(t: &Texture, factors: [u32; 2]) -> Texture {
             *v += weight * f;
         }
     }
+    if blended {
+        // Back from premultiplied: each colour over its texel's mean alpha.
+        for px in out.chunks_exact_mut(4) {
+            let a = px[3] / 255.0;
+            for c in &mut px[..3] {
+                *c = if a > 0.0 { *c / a } else { 0.0 };
+            }
+        }
+    }
     let rgba = out
         .iter()
         .map(|v| v.round().clamp(0.0, 255.0) as u8)
         .collect();
     let name = format!("{} (averaged)", t.name());
     // No larger than the texture: a valid size.
-    Texture::new(&name, nw as u32, nh as u32, rgba).expect("level size")
+    let level = Texture::new(&name, nw as u32, nh as u32, rgba).expect("level size");
+    level.with_alpha(t.alpha())
 }
 
 /// The boxes of `m` samples averaging a line of `n` (`m ≤ n`): `(output, input,

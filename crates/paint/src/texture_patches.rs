@@ -101,12 +101,14 @@ impl Patches {
                     for i in range[0][0]..=range[0][1] {
                         let c = t.texel(i, j);
                         rgba.extend(c.map(|v| (v * 255.0).round() as u8));
-                        rgba.push(255);
+                        rgba.push((t.texel_alpha(i, j) * 255.0).round() as u8);
                     }
                 }
                 let name = format!("{} (patch)", t.name());
-                // Smaller than the texture: a valid size.
-                Arc::new(Texture::new(&name, w as u32, h as u32, rgba).expect("patch size"))
+                // Smaller than the texture: a valid size. Its texels are the texture's,
+                // alpha included.
+                let patch = Texture::new(&name, w as u32, h as u32, rgba).expect("patch size");
+                Arc::new(patch.with_alpha(t.alpha()))
             })
             .clone();
         let moved = texel.map(|p| {

@@ -469,12 +469,14 @@ pub(crate) fn perspective_error(t: &[[f64; 2]; 3], map: &TextureMap, affine: &[f
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::TextureAlpha;
 
     /// The map of a unit square seen in perspective: a pure projective map.
     fn grazing() -> TextureMap {
         TextureMap {
             texture: 0,
             screen_to_st: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.004, 0.0, 1.0]],
+            alpha: TextureAlpha::Opaque,
         }
     }
 

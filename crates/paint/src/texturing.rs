@@ -8,7 +8,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use glam::{DMat3, DMat4, DVec3};
-use limn_scene::{polygon_normal, Camera, FaceTexcoords, Texture};
+use limn_scene::{polygon_normal, Camera, FaceTexcoords, Texture, TextureAlpha};
 
 use crate::texture_bake::{bake, worth_baking};
 use crate::texture_collapse::{classify, linear_part, max_step, stretch, Collapse, Strips};
@@ -56,9 +56,9 @@ impl TextureTable {
 enum FanPaint {
     /// A texture (the face's, or a strip of it) under a projective map.
     Map(TextureMap),
-    /// One colour, multiplying the fill: the texture's at the point its coordinates
-    /// collapse to.
-    Flat([f64; 3]),
+    /// One colour and alpha, multiplying the fill: the texture's at the point its
+    /// coordinates collapse to.
+    Flat([f64; 4]),
     /// The flat fill alone: the map is undefined (the face seen edge-on).
     Fill,
 }
@@ -74,7 +74,7 @@ impl FanPaint {
                 for (v, c) in f.fill.iter_mut().zip(c) {
                     *v *= c;
                 }
-                return (f, c);
+                return (f, [c[0], c[1], c[2]]);
             }
             FanPaint::Fill => f.texture = None,
         }
@@ -132,7 +132,12 @@ impl FaceTexture {
                             st.map(|p| [p[0] * f64::from(size.0), p[1] * f64::from(size.1)]);
                         let per_px = linear_part(page, texel)
                             .map_or([f64::INFINITY; 2], |[a, b, c, d]| [a.hypot(b), c.hypot(d)]);
-                        let level = table.levels.level(tex, factors(per_px, size));
+                        // A cut-out keeps its texels: each shows wholly or not.
+                        let by = match tex.alpha() {
+                            TextureAlpha::Mask => [1, 1],
+                            _ => factors(per_px, size),
+                        };
+                        let level = table.levels.level(tex, by);
                         // Texels per page pixel, at most, to know how far flaps read.
                         let (lw, lh) = (f64::from(level.width()), f64::from(level.height()));
                         let texel = st.map(|p| [p[0] * lw, p[1] * lh]);
@@ -148,12 +153,19 @@ impl FaceTexture {
                                 p[1] * f64::from(image.height()),
                             ]
                         });
-                        baked = linear_part(texel, page).is_some_and(|to_page| {
-                            worth_baking(page, (image.width(), image.height()), to_page, REACH_PX)
-                        });
+                        // Page samples would move a cut-out's boundary off its texels.
+                        baked = tex.alpha() != TextureAlpha::Mask
+                            && linear_part(texel, page).is_some_and(|to_page| {
+                                worth_baking(
+                                    page,
+                                    (image.width(), image.height()),
+                                    to_page,
+                                    REACH_PX,
+                                )
+                            });
                         (image, st)
                     }
-                    Collapse::Point(p) => return FanPaint::Flat(tex.sample(p)),
+                    Collapse::Point(p) => return FanPaint::Flat(tex.sample_rgba(p)),
                     Collapse::Band(band) => {
                         let strip = table.strips.strip(tex, &band);
                         let st = strip.corner_st(&band);
@@ -166,6 +178,7 @@ impl FaceTexture {
                 let mut map = TextureMap {
                     texture: 0,
                     screen_to_st,
+                    alpha: texture.alpha(),
                 };
                 let page_samples = baked
                     .then(|| bake(&texture, &map, page, REACH_PX))
@@ -343,6 +356,7 @@ mod tests {
         let map = TextureMap {
             texture: 0,
             screen_to_st: h,
+            alpha: TextureAlpha::Opaque,
         };
         for i in 0..3 {
             let got = map.st_at(view.project(w[i])).unwrap();

@@ -44,5 +44,5 @@ pub use shade::{
     shade_face_tinted, shade_in_scene, shade_point, shade_sided, shade_sided_in_scene,
     shade_sided_in_shadow, shade_tinted_in_shadow, Effects, FaceNormals, Rgb,
 };
-pub use texture::{FaceTexcoords, Texture, TextureError};
+pub use texture::{FaceTexcoords, Texture, TextureAlpha, TextureError};
 pub use texture_wrap::{wrap_material_texture, Wrap, WrapError};

@@ -161,9 +161,10 @@ impl Material {
         Material::diffuse("default", [0.7, 0.7, 0.7])
     }
 
-    /// Whether this material is fully opaque.
+    /// Whether this material is fully opaque: opacity 1 and no texture whose alpha is
+    /// drawn (a cut-out or blended texture lets what is behind show through).
     pub fn is_opaque(&self) -> bool {
-        self.opacity >= 1.0
+        self.opacity >= 1.0 && self.texture.as_ref().is_none_or(|t| t.is_opaque())
     }
 }
 

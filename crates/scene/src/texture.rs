@@ -10,9 +10,15 @@
 //! having its centre at `((i + ½)/W, (j + ½)/H)`, and wraps by repetition in both
 //! directions (the default of OBJ and glTF): coordinates are taken modulo 1, and the
 //! neighbours of a texel on the last column or row are those of the first. Other wrap
-//! modes become repetition of a larger texture (see [`crate::texture_wrap`]). The texture's
-//! alpha channel is kept but not drawn: textured faces take their opacity from the
-//! material.
+//! modes become repetition of a larger texture (see [`crate::texture_wrap`]).
+//!
+//! **Alpha** is drawn as the texture's [`TextureAlpha`] says (glTF's `alphaMode`; other
+//! formats' textures are [`TextureAlpha::Opaque`]): not at all; as opacity sampled like
+//! the colour but on premultiplied texels (so a transparent texel's colour never shows),
+//! multiplying the face's; or as a cut-out decided per texel: a point of the face shows
+//! exactly when the texel it lies in does (the texel holding the sample point, not a
+//! mix of neighbours), so the boundary runs along texel edges in every output, and the
+//! colour there is sampled as for an opaque texture.
 
 use std::fmt;
 use std::sync::Arc;
@@ -54,6 +60,19 @@ pub enum TextureError {
     },
 }
 
+/// How a texture's alpha channel is drawn (see the module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TextureAlpha {
+    /// Not drawn: every texel is opaque (OBJ's `map_Kd`, glTF `OPAQUE`, and every
+    /// texture whose alpha is 255 throughout).
+    #[default]
+    Opaque,
+    /// Opacity: the alpha sampled bilinearly multiplies the face's opacity.
+    Blend,
+    /// A cut-out: each texel is shown (alpha 255) or not (alpha 0), wholly.
+    Mask,
+}
+
 /// A decoded texture image (RGBA, 8 bits per channel, rows top to bottom).
 #[derive(Clone, PartialEq, Eq)]
 pub struct Texture {
@@ -61,6 +80,7 @@ pub struct Texture {
     width: u32,
     height: u32,
     rgba: Vec<u8>,
+    alpha: TextureAlpha,
 }
 
 impl fmt::Debug for Texture {
@@ -69,6 +89,7 @@ impl fmt::Debug for Texture {
             .field("name", &self.name)
             .field("width", &self.width)
             .field("height", &self.height)
+            .field("alpha", &self.alpha)
             .finish_non_exhaustive()
     }
 }
@@ -104,7 +125,92 @@ impl Texture {
             width,
             height,
             rgba,
+            alpha: TextureAlpha::Opaque,
         })
+    }
+
+    /// How the alpha channel is drawn.
+    pub fn alpha(&self) -> TextureAlpha {
+        self.alpha
+    }
+
+    /// Whether every point of the texture is drawn opaque (its alpha is not drawn, or
+    /// is 255 throughout).
+    pub fn is_opaque(&self) -> bool {
+        self.alpha == TextureAlpha::Opaque
+    }
+
+    /// The texture with its alpha drawn as `mode`: under [`TextureAlpha::Mask`] a texel
+    /// shows when its alpha is at least 128 (the alpha becomes 255, else 0; a loader
+    /// decides which texels show with [`Texture::masked`]). A texture whose alpha is
+    /// then 255 throughout is [`TextureAlpha::Opaque`]: drawn as it was.
+    pub fn with_alpha(mut self, mode: TextureAlpha) -> Texture {
+        if mode == TextureAlpha::Mask {
+            for px in self.rgba.chunks_exact_mut(4) {
+                px[3] = if px[3] >= 128 { 255 } else { 0 };
+            }
+            self.bleed_into_hidden();
+        }
+        let all_opaque = self.rgba.chunks_exact(4).all(|px| px[3] == 255);
+        self.alpha = if all_opaque {
+            TextureAlpha::Opaque
+        } else {
+            mode
+        };
+        self
+    }
+
+    /// Gives each hidden texel (alpha 0) of a cut-out next to shown ones (the eight
+    /// around it, repeating) their mean colour: the colour is sampled bilinearly as an
+    /// opaque texture's, and near the cut-out's edge it then mixes only shown colours,
+    /// in every output alike. Shown texels do not change, so doing it twice changes
+    /// nothing.
+    fn bleed_into_hidden(&mut self) {
+        let (w, h) = (i64::from(self.width), i64::from(self.height));
+        let src = self.rgba.clone();
+        let at = |i: i64, j: i64| 4 * (j.rem_euclid(h) * w + i.rem_euclid(w)) as usize;
+        for j in 0..h {
+            for i in 0..w {
+                if src[at(i, j) + 3] != 0 {
+                    continue;
+                }
+                let (mut sum, mut n) = ([0u32; 3], 0u32);
+                for (di, dj) in [
+                    (-1, -1),
+                    (0, -1),
+                    (1, -1),
+                    (-1, 0),
+                    (1, 0),
+                    (-1, 1),
+                    (0, 1),
+                    (1, 1),
+                ] {
+                    let k = at(i + di, j + dj);
+                    if src[k + 3] != 0 {
+                        for c in 0..3 {
+                            sum[c] += u32::from(src[k + c]);
+                        }
+                        n += 1;
+                    }
+                }
+                let k = at(i, j);
+                for (v, s) in self.rgba[k..k + 3].iter_mut().zip(sum) {
+                    if let Some(mean) = (s + n / 2).checked_div(n) {
+                        *v = mean as u8;
+                    }
+                }
+            }
+        }
+    }
+
+    /// The texture as a cut-out ([`TextureAlpha::Mask`]) in which the texels for which
+    /// `shows(alpha)` holds are shown and the others are not (glTF: the base colour
+    /// factor's alpha times the texel's at least `alphaCutoff`).
+    pub fn masked(mut self, shows: impl Fn(u8) -> bool) -> Texture {
+        for px in self.rgba.chunks_exact_mut(4) {
+            px[3] = if shows(px[3]) { 255 } else { 0 };
+        }
+        self.with_alpha(TextureAlpha::Mask)
     }
 
     /// Where the texture came from.
@@ -134,6 +240,79 @@ impl Texture {
         let at = 4 * (j * self.width as usize + i);
         let px = &self.rgba[at..at + 3];
         [px[0], px[1], px[2]].map(|v| f64::from(v) / 255.0)
+    }
+
+    /// Texel `(i, j)`'s alpha in [0, 1] (indices taken modulo the size; 1 when the
+    /// alpha is not drawn).
+    pub fn texel_alpha(&self, i: i64, j: i64) -> f64 {
+        if self.alpha == TextureAlpha::Opaque {
+            return 1.0;
+        }
+        let i = i.rem_euclid(i64::from(self.width)) as usize;
+        let j = j.rem_euclid(i64::from(self.height)) as usize;
+        f64::from(self.rgba[4 * (j * self.width as usize + i) + 3]) / 255.0
+    }
+
+    /// The colour and alpha at texture coordinates `st`, RGBA in [0, 1] (see the module
+    /// docs): opaque, the colour of [`Texture::sample`], for [`TextureAlpha::Opaque`];
+    /// under [`TextureAlpha::Mask`] the same colour with alpha 1 or 0 as the texel
+    /// holding `st` shows or not; under [`TextureAlpha::Blend`] bilinear on
+    /// premultiplied texels (the colour of a point of alpha 0 is [`Texture::sample`]'s).
+    /// Non-finite coordinates give the means.
+    pub fn sample_rgba(&self, st: [f64; 2]) -> [f64; 4] {
+        let finite = st[0].is_finite() && st[1].is_finite();
+        match self.alpha {
+            TextureAlpha::Opaque => {
+                let [r, g, b] = self.sample(st);
+                [r, g, b, 1.0]
+            }
+            _ if !finite => {
+                let [r, g, b] = self.mean();
+                [r, g, b, self.mean_alpha()]
+            }
+            TextureAlpha::Mask => {
+                let [r, g, b] = self.sample(st);
+                let i = (st[0].rem_euclid(1.0) * f64::from(self.width)).floor() as i64;
+                let j = (st[1].rem_euclid(1.0) * f64::from(self.height)).floor() as i64;
+                [r, g, b, self.texel_alpha(i, j)]
+            }
+            TextureAlpha::Blend => {
+                let x = st[0].rem_euclid(1.0) * f64::from(self.width) - 0.5;
+                let y = st[1].rem_euclid(1.0) * f64::from(self.height) - 0.5;
+                let (fx, fy) = (x.floor(), y.floor());
+                let (ax, ay) = (x - fx, y - fy);
+                let (i, j) = (fx as i64, fy as i64);
+                let mut sum = [0.0; 4];
+                for (di, dj, w) in [
+                    (0, 0, (1.0 - ax) * (1.0 - ay)),
+                    (1, 0, ax * (1.0 - ay)),
+                    (0, 1, (1.0 - ax) * ay),
+                    (1, 1, ax * ay),
+                ] {
+                    let c = self.texel(i + di, j + dj);
+                    let a = self.texel_alpha(i + di, j + dj);
+                    for k in 0..3 {
+                        sum[k] += w * a * c[k];
+                    }
+                    sum[3] += w * a;
+                }
+                if sum[3] > 0.0 {
+                    [0, 1, 2, 3].map(|k| if k < 3 { sum[k] / sum[3] } else { sum[3] })
+                } else {
+                    let [r, g, b] = self.sample(st);
+                    [r, g, b, 0.0]
+                }
+            }
+        }
+    }
+
+    /// The mean alpha of all texels in [0, 1] (1 when the alpha is not drawn).
+    pub fn mean_alpha(&self) -> f64 {
+        if self.alpha == TextureAlpha::Opaque {
+            return 1.0;
+        }
+        let sum: u64 = self.rgba.chunks_exact(4).map(|p| u64::from(p[3])).sum();
+        sum as f64 / ((self.rgba.len() / 4).max(1) as f64 * 255.0)
     }
 
     /// The colour at texture coordinates `st` (see the module docs: bilinear, repeating);
@@ -230,6 +409,13 @@ impl FaceTexcoords {
             None => self.texture.mean(),
         }
     }
+
+    /// The texture's colour and alpha at world point `p` ([`Texture::sample_rgba`]; the
+    /// means on a degenerate face).
+    pub fn rgba_at(&self, p: DVec3) -> [f64; 4] {
+        let st = self.st_at(p).unwrap_or([f64::NAN; 2]);
+        self.texture.sample_rgba(st)
+    }
 }
 
 #[cfg(test)]
@@ -256,6 +442,39 @@ mod tests {
         assert_eq!(t.sample([1.25, -0.75]), [0.0; 3]);
         assert_eq!(t.sample([0.0, 0.25]), [0.5; 3]);
         assert_eq!(t.mean(), [0.5; 3]);
+    }
+
+    /// 2 × 1: an opaque red texel left of a transparent blue one.
+    fn half_transparent(mode: TextureAlpha) -> Texture {
+        let rgba = vec![255, 0, 0, 255, 0, 0, 255, 0];
+        Texture::new("h", 2, 1, rgba).unwrap().with_alpha(mode)
+    }
+
+    #[test]
+    fn a_mask_shows_whole_texels_and_blend_mixes_premultiplied() {
+        let m = half_transparent(TextureAlpha::Mask);
+        assert_eq!(m.alpha(), TextureAlpha::Mask);
+        // Up to the texels' shared edge at s = 0.5 the red texel shows, beyond it
+        // nothing, whatever the bilinear colour there.
+        assert_eq!(m.sample_rgba([0.49, 0.5])[3], 1.0);
+        assert_eq!(m.sample_rgba([0.5, 0.5])[3], 0.0);
+        assert_eq!(m.sample_rgba([0.999, 0.5])[3], 0.0);
+        assert_eq!(m.sample_rgba([0.25, 0.5]), [1.0, 0.0, 0.0, 1.0]);
+        // The hidden texel took its shown neighbour's colour: the bilinear colour at the
+        // edge is the shown texel's.
+        assert_eq!(m.sample_rgba([0.49, 0.5]), [1.0, 0.0, 0.0, 1.0]);
+        let b = half_transparent(TextureAlpha::Blend);
+        // Half-way between the texel centres: half as opaque, and red (the transparent
+        // texel's blue does not show).
+        assert_eq!(b.sample_rgba([0.5, 0.5]), [1.0, 0.0, 0.0, 0.5]);
+        assert_eq!(b.sample_rgba([0.75, 0.5])[3], 0.0);
+        assert_eq!(b.mean_alpha(), 0.5);
+        // Not drawn: opaque, the colour as before.
+        let o = half_transparent(TextureAlpha::Opaque);
+        assert_eq!(o.sample_rgba([0.5, 0.5]), [0.5, 0.0, 0.5, 1.0]);
+        assert!(o.is_opaque() && !b.is_opaque() && !m.is_opaque());
+        // Alpha 255 throughout is opaque whatever the mode.
+        assert!(checker().with_alpha(TextureAlpha::Blend).is_opaque());
     }
 
     #[test]

@@ -162,7 +162,9 @@ pub fn repeating_form(
             rgba.extend_from_slice(&src[at..at + 4]);
         }
     }
-    let t = Texture::new(texture.name(), nw, nh, rgba).map_err(|_| too_large)?;
+    let t = Texture::new(texture.name(), nw, nh, rgba)
+        .map_err(|_| too_large)?
+        .with_alpha(texture.alpha());
     Ok(Some((t, [xs.map, ys.map])))
 }
 

@@ -160,16 +160,43 @@ impl Extent {
     }
 }
 
-/// Occluders binned by their box on the light's screen; those without one (a corner
-/// at depth zero or less in a central view) are candidates of every receiver.
+/// One occluder as a cell of a grid level lists it: its number, the first cell of its
+/// box on that level (so that a query reports it once, in the first cell both boxes
+/// cover) and its extent, held in the cell so that a query reads the cell's memory in
+/// order.
+#[derive(Debug, Clone, Copy)]
+struct Entry {
+    index: u32,
+    first: [u16; 2],
+    lo: [f64; 2],
+    hi: [f64; 2],
+    near: f64,
+}
+
+/// One level of the grid: `n × n` cells over the occluders' screen box.
+struct Level {
+    n: usize,
+    cell: [f64; 2],
+    /// Where each cell's entries start in `entries` (one more offset than cells).
+    starts: Vec<u32>,
+    /// The cells' entries, cell after cell, each cell's in increasing number.
+    entries: Vec<Entry>,
+}
+
+/// Occluders binned by their box on the light's screen, in levels of cells of doubling
+/// size, each occluder on the finest level where its box (with the margin) covers at
+/// most two cells across each way (so that a large occluder is not listed in, and read
+/// from, hundreds of cells); those without a box (a corner at depth zero or less in a
+/// central view) are candidates of every receiver.
 pub(crate) struct Grid {
     extents: Vec<Option<Extent>>,
     /// The occluders without an extent.
     everywhere: Vec<u32>,
     lo: [f64; 2],
-    cell: [f64; 2],
-    n: usize,
-    cells: Vec<Vec<u32>>,
+    levels: Vec<Level>,
+    /// Whether the occluders are numbered nearest first (their `near` never decreases
+    /// with the number): then a cell's walk stops at the first one beyond a receiver.
+    nearest_first: bool,
     /// Screen and depth margins.
     margin: f64,
     dmargin: f64,
@@ -199,49 +226,125 @@ impl Grid {
         };
         let margin = 1e-9 * span(lo[0], hi[0]).max(span(lo[1], hi[1])) + 1e-300;
         let dmargin = 1e-9 * span(dlo, dhi) + 1e-300;
-        let n = ((extents.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
+        let finest = ((extents.len() as f64).sqrt().ceil() as usize).clamp(1, 1024);
         let everywhere = (0..extents.len() as u32)
             .filter(|&i| extents[i as usize].is_none())
             .collect();
-        let size = |i: usize| {
-            let s = (hi[i] - lo[i]) / n as f64;
-            if s.is_finite() && s > 0.0 {
-                s
-            } else {
-                1.0
-            }
-        };
-        let cell = [size(0), size(1)];
+        let nearest_first = extents
+            .iter()
+            .flatten()
+            .zip(extents.iter().flatten().skip(1))
+            .all(|(a, b)| a.near <= b.near);
         let mut grid = Grid {
             extents,
             everywhere,
             lo,
-            cell,
-            n,
-            cells: vec![Vec::new(); n * n],
+            levels: Vec::new(),
+            nearest_first,
             margin,
             dmargin,
         };
-        for (i, e) in grid.extents.iter().enumerate() {
-            let Some(e) = e else { continue };
-            let (x0, x1, y0, y1) = grid.range(e);
-            for y in y0..=y1 {
-                for x in x0..=x1 {
-                    grid.cells[y * n + x].push(i as u32);
+        // Cells per side halve from level to level, down to one cell.
+        let mut n = finest;
+        loop {
+            let size = |i: usize| {
+                let s = (hi[i] - lo[i]) / n as f64;
+                if s.is_finite() && s > 0.0 {
+                    s
+                } else {
+                    1.0
+                }
+            };
+            grid.levels.push(Level {
+                n,
+                cell: [size(0), size(1)],
+                starts: Vec::new(),
+                entries: Vec::new(),
+            });
+            if n == 1 {
+                break;
+            }
+            n = n.div_ceil(2);
+        }
+        // Each occluder's level: the finest where it covers at most two cells each way.
+        let level_of: Vec<usize> = grid
+            .extents
+            .iter()
+            .map(|e| match e {
+                Some(e) => (0..grid.levels.len())
+                    .find(|&l| {
+                        let (x0, x1, y0, y1) = grid.range(l, e);
+                        x1 - x0 <= 1 && y1 - y0 <= 1
+                    })
+                    .unwrap_or(grid.levels.len() - 1),
+                None => 0,
+            })
+            .collect();
+        for l in 0..grid.levels.len() {
+            let n = grid.levels[l].n;
+            // Count per cell, then place (in increasing number within each cell).
+            let mut starts = vec![0u32; n * n + 1];
+            let on_level = || {
+                grid.extents
+                    .iter()
+                    .enumerate()
+                    .filter_map(|(i, e)| e.filter(|_| level_of[i] == l).map(|e| (i, e)))
+            };
+            for (_, e) in on_level() {
+                let (x0, x1, y0, y1) = grid.range(l, &e);
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        starts[y * n + x + 1] += 1;
+                    }
                 }
             }
+            for c in 1..starts.len() {
+                starts[c] += starts[c - 1];
+            }
+            let mut next = starts.clone();
+            let mut entries = Vec::with_capacity(starts[n * n] as usize);
+            entries.resize(
+                starts[n * n] as usize,
+                Entry {
+                    index: 0,
+                    first: [0; 2],
+                    lo: [0.0; 2],
+                    hi: [0.0; 2],
+                    near: 0.0,
+                },
+            );
+            for (i, e) in on_level() {
+                let (x0, x1, y0, y1) = grid.range(l, &e);
+                let entry = Entry {
+                    index: i as u32,
+                    first: [x0 as u16, y0 as u16],
+                    lo: e.lo,
+                    hi: e.hi,
+                    near: e.near,
+                };
+                for y in y0..=y1 {
+                    for x in x0..=x1 {
+                        let slot = &mut next[y * n + x];
+                        entries[*slot as usize] = entry;
+                        *slot += 1;
+                    }
+                }
+            }
+            grid.levels[l].starts = starts;
+            grid.levels[l].entries = entries;
         }
         grid
     }
 
-    /// The cells a box (widened by the margin) covers.
-    fn range(&self, e: &Extent) -> (usize, usize, usize, usize) {
+    /// The cells of level `l` a box (widened by the margin) covers.
+    fn range(&self, l: usize, e: &Extent) -> (usize, usize, usize, usize) {
+        let level = &self.levels[l];
         let at = |v: f64, i: usize| {
-            let c = ((v - self.lo[i]) / self.cell[i]).floor();
+            let c = ((v - self.lo[i]) / level.cell[i]).floor();
             if c.is_nan() {
                 0
             } else {
-                c.clamp(0.0, (self.n - 1) as f64) as usize
+                c.clamp(0.0, (level.n - 1) as f64) as usize
             }
         };
         let m = self.margin;
@@ -262,12 +365,14 @@ impl Grid {
     /// the occluder reaches nearer to the light than the part's farthest point, within
     /// the margins).
     pub fn may_hide(&self, o: Extent, r: &Extent) -> bool {
+        self.boxes_meet(o.lo, o.hi, r) && o.near <= r.far + self.dmargin
+    }
+
+    /// Whether the screen box `lo..hi` meets `r`'s, within the margin.
+    #[inline]
+    fn boxes_meet(&self, lo: [f64; 2], hi: [f64; 2], r: &Extent) -> bool {
         let m = self.margin;
-        o.lo[0] <= r.hi[0] + m
-            && r.lo[0] <= o.hi[0] + m
-            && o.lo[1] <= r.hi[1] + m
-            && r.lo[1] <= o.hi[1] + m
-            && o.near <= r.far + self.dmargin
+        lo[0] <= r.hi[0] + m && r.lo[0] <= hi[0] + m && lo[1] <= r.hi[1] + m && r.lo[1] <= hi[1] + m
     }
 
     /// Whether an occluder of extent `o` may hide all of a part of extent `r`: every
@@ -283,33 +388,39 @@ impl Grid {
     }
 
     /// The occluders whose box meets `r`'s and which reach nearer to the light than
-    /// `r`'s farthest point, each once, in increasing index order (`seen` is working
-    /// space of one flag per occluder, left all `false`).
-    pub fn candidates(&self, r: &Extent, seen: &mut Vec<bool>, out: &mut Vec<u32>) {
+    /// `r`'s farthest point ([`Grid::may_hide`]), each once, in increasing index order.
+    ///
+    /// On each level, an occluder is looked at only in the first cell that both its
+    /// cells and `r`'s cover (so once, without marks); occluders numbered nearest first
+    /// are looked at only up to the first one in a cell that reaches no nearer than
+    /// `r`'s farthest point.
+    pub fn candidates(&self, r: &Extent, out: &mut Vec<u32>) {
         out.clear();
-        seen.resize(self.extents.len(), false);
-        let (x0, x1, y0, y1) = self.range(r);
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                for &i in &self.cells[y * self.n + x] {
-                    if seen[i as usize] {
-                        continue;
-                    }
-                    seen[i as usize] = true;
-                    if self.extents[i as usize].is_some_and(|e| self.may_hide(e, r)) {
-                        out.push(i);
-                    }
-                }
+        let far = r.far + self.dmargin;
+        for (l, level) in self.levels.iter().enumerate() {
+            if level.entries.is_empty() {
+                continue;
             }
-        }
-        for &i in out.iter() {
-            seen[i as usize] = false;
-        }
-        // Reset the flags of the rejected ones too.
-        for y in y0..=y1 {
-            for x in x0..=x1 {
-                for &i in &self.cells[y * self.n + x] {
-                    seen[i as usize] = false;
+            let (x0, x1, y0, y1) = self.range(l, r);
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    let c = y * level.n + x;
+                    let cell =
+                        &level.entries[level.starts[c] as usize..level.starts[c + 1] as usize];
+                    for e in cell {
+                        let reaches = e.near <= far;
+                        if !reaches {
+                            if self.nearest_first {
+                                break;
+                            }
+                            continue;
+                        }
+                        let first = (e.first[0] as usize).max(x0) == x
+                            && (e.first[1] as usize).max(y0) == y;
+                        if first && self.boxes_meet(e.lo, e.hi, r) {
+                            out.push(e.index);
+                        }
+                    }
                 }
             }
         }

@@ -173,8 +173,8 @@ pub(crate) fn hidden_parts<K: Kernel>(
         .par_iter()
         .enumerate()
         .map_init(
-            || (Vec::new(), Vec::new(), Vec::new()),
-            |(seen, cand, corners), (pos, &id)| {
+            || (Vec::new(), Vec::new()),
+            |(cand, corners), (pos, &id)| {
                 let piece = &ctx.pieces[id as usize];
                 let seen_side = if piece.eye_front {
                     Side::Front
@@ -211,7 +211,7 @@ pub(crate) fn hidden_parts<K: Kernel>(
                         c,
                         (piece.face, &piece.poly, &painted_after),
                         &mut node,
-                        (seen, cand, corners),
+                        (cand, corners),
                     );
                 }
                 let mut parts = Vec::new();
@@ -238,7 +238,7 @@ fn cast<K: Kernel>(
     c: &Caster<K>,
     (face, whole, may_hide): (u32, &K::Polygon, MayHide<'_, K::Plane>),
     node: &mut Node<K::Polygon>,
-    (seen, cand, corners): (&mut Vec<bool>, &mut Vec<u32>, &mut Vec<(DVec3, f64)>),
+    (cand, corners): (&mut Vec<u32>, &mut Vec<(DVec3, f64)>),
 ) {
     // The extent of a part from its corners' proven boxes where the kernel's cached
     // positions are that close (a prefilter needs no rounded corners); the corners
@@ -269,7 +269,7 @@ fn cast<K: Kernel>(
     });
     let all = extent(whole, corners);
     match all {
-        Some(e) => c.grid.candidates(&e, seen, cand),
+        Some(e) => c.grid.candidates(&e, cand),
         None => {
             cand.clear();
             cand.extend(0..c.volumes.len() as u32);

@@ -220,7 +220,7 @@ fn has_marks(scene: &Scene) -> bool {
 
 fn face_opaque(scene: &Scene, face: u32) -> bool {
     let m = scene.faces[face as usize].material;
-    scene.materials[m as usize].opacity >= 1.0
+    scene.materials[m as usize].is_opaque()
 }
 
 fn view_projection(ordered: &Ordered) -> DMat4 {

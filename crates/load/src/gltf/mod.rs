@@ -13,9 +13,11 @@
 //! Materials: `baseColorFactor` RGB becomes `Kd`; its alpha becomes the opacity when
 //! `alphaMode` is `BLEND`. Under `MASK`, a factor alpha below `alphaCutoff` (default
 //! 0.5) cuts the whole primitive away (its faces are not drawn, with a warning); a
-//! base-colour texture whose alpha would cut parts away is drawn whole, with a warning
-//! (as is a `BLEND` texture's alpha: the opacity is the factor's). `OPAQUE` ignores
-//! alpha, as the specification says. Materials with `KHR_materials_unlit` are unlit
+//! base-colour texture's alpha is drawn: under `MASK` as a cut-out in which a texel
+//! shows when the factor's alpha times its own is at least `alphaCutoff`
+//! ([`limn_scene::TextureAlpha::Mask`]), under `BLEND` as opacity multiplying the
+//! factor's ([`limn_scene::TextureAlpha::Blend`]). `OPAQUE` ignores alpha, as the
+//! specification says. Materials with `KHR_materials_unlit` are unlit
 //! (`illum 0`), others diffusely lit (`illum 1`). Primitives without a material get
 //! [`Material::default_grey`]. A `baseColorTexture` becomes the material's texture,
 //! for primitives that have its `TEXCOORD_n` (see [`textures`]); other textures
@@ -47,7 +49,7 @@ use glam::DMat4;
 use limn_scene::Wrap;
 
 use super::{check_u32, transform, LoadError, LoadOptions, Location};
-use limn_scene::{Face, Material, Scene, Texture};
+use limn_scene::{Face, Material, Scene, Texture, TextureAlpha};
 
 /// Extensions a file may require and still be drawn correctly (they only add material
 /// or texture detail that limn does not use).
@@ -160,7 +162,7 @@ pub(crate) fn parse(bytes: &[u8], path: &Path, opts: &LoadOptions) -> Result<Sce
         vertex_alpha_warned: false,
         camera_tried: false,
         masked: Default::default(),
-        alpha_warned: Default::default(),
+        alpha_textures: HashMap::new(),
         wraps: Default::default(),
     };
     b.walk(&doc)?;
@@ -278,8 +280,9 @@ struct Builder<'a, 'b> {
     camera_tried: bool,
     /// Per glTF material cut away by `MASK`: the faces not drawn.
     masked: std::collections::BTreeMap<Option<usize>, usize>,
-    /// glTF materials whose texture alpha was warned about.
-    alpha_warned: std::collections::BTreeSet<Option<usize>>,
+    /// Textures with their alpha drawn as a material's `alphaMode` says, by glTF image
+    /// and material (made once).
+    alpha_textures: HashMap<(usize, Option<usize>), Arc<Texture>>,
     /// Scene materials whose texture is sampled other than by repetition: the sampler
     /// and its wrap modes (drawn once every primitive is read, see
     /// [`limn_scene::texture_wrap`]).
@@ -580,7 +583,7 @@ impl Builder<'_, '_> {
                 t
             }
         };
-        self.texture_alpha(prim, &t);
+        let t = self.drawn_alpha(prim, image, t);
         let sampler = texture.sampler();
         let wrap = [sampler.wrap_s(), sampler.wrap_t()].map(|m| match m {
             WrappingMode::Repeat => Wrap::Repeat,
@@ -594,37 +597,32 @@ impl Builder<'_, '_> {
         Ok(Some(st))
     }
 
-    /// Warns (once per material) when the alpha of a `MASK` or `BLEND` material's
-    /// texture would show and is not drawn.
-    fn texture_alpha(&mut self, prim: &::gltf::Primitive, t: &Texture) {
+    /// Texture `t` (glTF image `image`) with its alpha drawn as the primitive's
+    /// material's `alphaMode` says (see the module docs).
+    fn drawn_alpha(
+        &mut self,
+        prim: &::gltf::Primitive,
+        image: usize,
+        t: Arc<Texture>,
+    ) -> Arc<Texture> {
         let m = prim.material();
         let mode = m.alpha_mode();
-        if mode == AlphaMode::Opaque || self.alpha_warned.contains(&m.index()) {
-            return;
+        if mode == AlphaMode::Opaque || t.rgba().chunks_exact(4).all(|p| p[3] == 255) {
+            return t;
         }
-        let factor = f64::from(m.pbr_metallic_roughness().base_color_factor()[3]);
-        let what = if mode == AlphaMode::Mask {
-            let cutoff = f64::from(m.alpha_cutoff().unwrap_or(0.5));
-            let cut = t
-                .rgba()
-                .chunks_exact(4)
-                .any(|p| factor * f64::from(p[3]) / 255.0 < cutoff);
-            if !cut {
-                return;
-            }
-            "the texture's alpha cut-out (alphaMode MASK) is not drawn: its faces are drawn whole"
-        } else {
-            if t.rgba().chunks_exact(4).all(|p| p[3] == 255) {
-                return;
-            }
-            "the texture's alpha (alphaMode BLEND) is not drawn: the opacity is the base colour factor's"
-        };
-        self.alpha_warned.insert(m.index());
-        self.scene.warnings.push(format!(
-            "{} (material {}): {what}",
-            self.path.display(),
-            m.index().map_or("default".to_string(), |i| i.to_string())
-        ));
+        self.alpha_textures
+            .entry((image, m.index()))
+            .or_insert_with(|| {
+                let t = Texture::clone(&t);
+                Arc::new(if mode == AlphaMode::Mask {
+                    let factor = f64::from(m.pbr_metallic_roughness().base_color_factor()[3]);
+                    let cutoff = f64::from(m.alpha_cutoff().unwrap_or(0.5));
+                    t.masked(|a| factor * f64::from(a) / 255.0 >= cutoff)
+                } else {
+                    t.with_alpha(TextureAlpha::Blend)
+                })
+            })
+            .clone()
     }
 
     fn material(&mut self, m: ::gltf::Material) -> u32 {
