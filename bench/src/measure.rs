@@ -79,5 +79,7 @@ pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style)
         marks: Vec::new(),
         textures: Vec::new(),
         merge_pieces: ordered.visible,
+        // Translucent runs are layered by their fragments' own corners alone.
+        face_outlines: Default::default(),
     }
 }

@@ -269,8 +269,8 @@ fn ordered<K: Kernel>(
                 .for_each(|p| p.pts = Vec::new());
             fragments(&ctx, &order, with_polygons)
         }
-        Some((parts, complete)) => {
-            let mut items: Vec<(u32, (u32, hiding::Parts<K::Polygon>))> = order
+        Some(hiding::Split { parts, complete }) => {
+            let mut items: Vec<PieceParts<K::Polygon>> = order
                 .iter()
                 .zip(parts)
                 .map(|(&id, parts)| (ctx.pieces[id as usize].face, (id, parts)))
@@ -359,6 +359,9 @@ fn fragments<K: Kernel>(
     (fragments, polys)
 }
 
+/// A piece's face, and the piece's id with its parts.
+type PieceParts<P> = (u32, (u32, hiding::Parts<P>));
+
 /// Fragments built by one parallel task at least (smaller tasks cost more to hand out
 /// than they save).
 const FRAGMENTS_PER_TASK: usize = 1024;
@@ -368,7 +371,7 @@ const FRAGMENTS_PER_TASK: usize = 1024;
 /// the lights they are in the shadow of.
 fn part_fragments<K: Kernel>(
     ctx: &mut Ctx<'_, K>,
-    items: Vec<(u32, (u32, hiding::Parts<K::Polygon>))>,
+    items: Vec<PieceParts<K::Polygon>>,
     whole_faces: &mut [bool],
 ) -> (Vec<Fragment>, Vec<K::Polygon>) {
     let mut fragments = Vec::with_capacity(items.len());

@@ -109,6 +109,16 @@ impl<K: Kernel> Caster<K> {
 /// hidden from.
 pub(crate) type Parts<P> = Vec<(P, Hidden)>;
 
+/// What [`hidden_parts`] returns.
+pub(crate) struct Split<P> {
+    /// One list of parts per piece, in order.
+    pub parts: Vec<Parts<P>>,
+    /// Whether every polygon the painter draws of an opaque face hid from the eye
+    /// (`false` when one cut by the near plane in view hid nothing; `true` without the
+    /// eye).
+    pub complete: bool,
+}
+
 /// How a receiver's cuts are kept until they are joined again.
 enum Node<P> {
     /// A part, what it is hidden from, and its extent seen from the source being cast
@@ -124,16 +134,13 @@ enum Node<P> {
 /// Splits every piece of `order` along what hides it: from the eye when `sight` is
 /// given (every piece, or only translucent ones when it says so), and the shadows of
 /// the lights that ask for them (faces of `illum 0` materials keep their colour and are
-/// not split by shadows; parts the eye cannot see are not split further). Returns one
-/// list of parts per piece, in order, and whether every polygon the painter draws of an
-/// opaque face hid from the eye (`false` when one cut by the near plane in view hid
-/// nothing; `true` without `sight`).
+/// not split by shadows; parts the eye cannot see are not split further).
 pub(crate) fn hidden_parts<K: Kernel>(
     ctx: &Ctx<'_, K>,
     scene: &Scene,
     order: &[u32],
     sight: Option<&Sight>,
-) -> Result<(Vec<Parts<K::Polygon>>, bool), OrderError> {
+) -> Result<Split<K::Polygon>, OrderError> {
     let mut complete = true;
     let mut casters = match sight {
         Some(s) => {
@@ -220,7 +227,7 @@ pub(crate) fn hidden_parts<K: Kernel>(
             },
         )
         .collect::<Result<Vec<_>, _>>()
-        .map(|parts| (parts, complete))
+        .map(|parts| Split { parts, complete })
 }
 
 /// The largest half-width, relative to the largest coordinate, of the boxes a part's
