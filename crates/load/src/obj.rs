@@ -219,8 +219,9 @@ fn parse_with(
         ("normals", obj.undefined_normals),
     ] {
         if let Some((line, count)) = seen {
+            let faces = if count == 1 { "face" } else { "faces" };
             obj.scene.warnings.push(format!(
-                "{}:{line}: faces name {what} the file had not defined ({count} faces): \
+                "{}:{line}: faces name {what} the file had not defined ({count} {faces}): \
                  drawn without them",
                 path.display()
             ));
