@@ -482,7 +482,10 @@ impl PyScene {
         self.scene.validate().map_err(value_error)?;
         let cam =
             limn::camera(&self.scene, &view, self.settings.size, &self.name).map_err(raise)?;
-        let oo = limn::order_options(&view, &self.settings).map_err(raise)?;
+        let mut oo = limn::order_options(&view, &self.settings).map_err(raise)?;
+        // The bridge draws a translucent polygon whole where its fragments follow one
+        // another: its parts behind opaque faces must stay in their places.
+        oo.translucent_last = false;
         let (mut ordered, marks) = py
             .detach(|| order_with_marks(&self.scene, &cam, &oo))
             .map_err(value_error)?;

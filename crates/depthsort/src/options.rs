@@ -151,6 +151,12 @@ pub struct OrderOptions {
     /// and leave out the hidden parts, so that each point of the picture is painted by
     /// one opaque fragment (and the translucent ones in front of it). Default: false.
     pub visible: bool,
+    /// Cut translucent fragments exactly along what opaque faces hide and paint their
+    /// visible parts after every opaque fragment (the same picture; one glass surface's
+    /// fragments then follow one another, so writers can blend them as one layer; see
+    /// `translucent_last.rs`). Off for callers that draw a translucent polygon whole
+    /// wherever its fragments follow one another (the matplotlib bridge). Default: true.
+    pub translucent_last: bool,
 }
 
 /// The default fragment limit for a scene of `faces` faces: 50 per face plus 200,000,
@@ -171,6 +177,7 @@ impl Default for OrderOptions {
             merge: true,
             max_fragments: None,
             visible: false,
+            translucent_last: true,
         }
     }
 }

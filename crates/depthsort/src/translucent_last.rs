@@ -36,7 +36,8 @@ use crate::options::{Arith, OrderOptions, SortMode};
 /// face, whether it may hide a part of a translucent piece (an opaque face with a piece
 /// painted after the first translucent one: in an exact order, a face painted wholly
 /// before a piece lies nowhere in front of it). `None` when nothing would move (no
-/// opaque piece is painted after a translucent one) or the order is not exact.
+/// opaque piece is painted after a translucent one), the order is not exact, or
+/// [`OrderOptions::translucent_last`] is off.
 ///
 /// Under `visible` the occluders are every opaque face (the visible map cuts every
 /// piece); then only whether something would move is asked.
@@ -47,7 +48,7 @@ pub(crate) fn occluders(
     order: &[u32],
 ) -> Option<Vec<bool>> {
     let exact = opts.arith == Arith::Exact && (opts.visible || opts.sort != SortMode::Simple);
-    if !exact {
+    if !exact || !opts.translucent_last {
         return None;
     }
     let opaque = |face: u32| {
