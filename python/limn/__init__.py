@@ -489,7 +489,12 @@ class Scene:
         return self._s.paint(sort=sort, arith=arith, seams=seams)
 
     def paint_with_marks(
-        self, *, sort: Optional[str] = None, arith: Optional[str] = None, seams: float = 1.0
+        self,
+        *,
+        sort: Optional[str] = None,
+        arith: Optional[str] = None,
+        seams: float = 1.0,
+        join: Any = None,
     ) -> Tuple[list, list]:
         """``paint()``'s polygons and the visible lines, markers, labels and arrow heads
         as dicts in paint order. Each has ``before`` (paint it before that polygon; the
@@ -498,5 +503,14 @@ class Scene:
         ``shape``, ``size``, ``color``, ``stroke``), ``"label"`` (``at``, ``offset``,
         ``anchor``, ``text``, ``size``, ``color``) or ``"head"`` (``points (3, 2)``,
         ``color``); ``index`` is the input line, point (over all ``add_points`` calls) or
-        label it shows, ``None`` for heads. Pixels, y down."""
-        return self._s.paint_with_marks(sort=sort, arith=arith, seams=seams)
+        label it shows, ``None`` for heads. Pixels, y down.
+
+        ``join``: a boolean per face (an array of ``face_count``). The flat fragments of a
+        flagged face painted one after another in one fill, with no mark between them,
+        then come as one polygon whose points are a list of rings (each (k, 2)): the
+        outline of their union (what they fill together under the nonzero rule, on a
+        grid of a millionth of a pixel), outer rings turned one way and holes the other,
+        with no original edges."""
+        if join is not None:
+            join = np.ascontiguousarray(join, dtype=bool).reshape(-1)
+        return self._s.paint_with_marks(sort=sort, arith=arith, seams=seams, join=join)

@@ -328,6 +328,17 @@ class Polygons:
         # Per polygon, which of its edges are the artist's own (``None``: all; the
         # faces of filled paths have bridges to their holes, see ``_regions``).
         self.own: List[Any] = []
+        # Per polygon, the tiling it belongs to: polygons of one tiling never overlap
+        # (the faces filling one path: a contour level, a patch), so their fragments
+        # painted one after another may be drawn as one path; every other polygon is a
+        # tiling of its own.
+        self.tiling: List[int] = []
+        self._tilings = 0
+
+    def _new_tiling(self, count: int = 1) -> int:
+        """The first of ``count`` new tiling numbers."""
+        self._tilings += count
+        return self._tilings - count
 
     def add_collection(self, coll: Any) -> None:
         """A ``Poly3DCollection``'s polygons with their colours and edge widths."""
@@ -339,6 +350,8 @@ class Polygons:
         self.clip += [clip_of(coll)] * len(p)
         self.background += [False] * len(p)
         self.own += [None] * len(p)
+        start = self._new_tiling(len(p))
+        self.tiling += range(start, start + len(p))
 
     def add_patch(self, patch: Any) -> None:
         """A filled ``Patch3D`` of one polygon (``ax.bar``): its outline, face and edge
@@ -355,6 +368,7 @@ class Polygons:
         self.clip.append(clip_of(patch))
         self.background.append(False)
         self.own.append(None)
+        self.tiling.append(self._new_tiling())
 
     def add_path_patch(self, patch: Any) -> None:
         """A filled ``PathPatch3D`` (``pathpatch_2d_to_3d``: a circle, a text's glyphs):
@@ -394,6 +408,7 @@ class Polygons:
     ) -> None:
         # A corner mplot3d leaves out (NaN) is left out of its outline.
         rings = [r[np.isfinite(r).all(axis=1)] for r in rings]
+        tiling = self._new_tiling()
         for face, own in region_faces(rings):
             self.corners.append(face)
             self._fill.append(np.asarray(fill, dtype=float).reshape(1, 4))
@@ -402,6 +417,7 @@ class Polygons:
             self.clip.append(clip)
             self.background.append(False)
             self.own.append(own)
+            self.tiling.append(tiling)
 
     def add_pane(self, pane: Pane) -> None:
         """A filled pane (its outline is a line of its own)."""
@@ -412,6 +428,7 @@ class Polygons:
         self.clip.append(None)
         self.background.append(True)
         self.own.append(None)
+        self.tiling.append(self._new_tiling())
 
     def styles(self) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Fill colours (N, 4), edge colours (N, 4) and edge widths (N,) in points."""

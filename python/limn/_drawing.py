@@ -106,29 +106,34 @@ def draw_polygon(
 
 def draw_polygons(
     renderer: Any,
-    disps: List[np.ndarray],
+    groups: List[List[np.ndarray]],
     fill: tuple,
     edges: Any,
     edge: tuple,
     width: float,
     clip: Any,
 ) -> None:
-    """Fragments painted one after another in one fill (display units), as one path of
-    several outlines, each turned the same way round so that the nonzero rule fills
-    every point any of them covers: viewers anti-alias a path as a whole, so no seam
-    shows between them. Then the edge segments ``edges`` ((s, 2, 2) display units, or
-    ``None``) in the edge colour and width (points), in one path."""
+    """Fragments painted one after another in one fill (display units), each a group of
+    rings (a polygon, or the outlines and holes of joined pieces, holes turned against
+    their outlines), as one path: each group turned so that its rings' signed areas sum
+    to a positive area, so that the nonzero rule fills every point any group fills
+    (viewers anti-alias a path as a whole: no seam shows between them). Then the edge
+    segments ``edges`` ((s, 2, 2) display units, or ``None``) in the edge colour and
+    width (points), in one path."""
     from matplotlib.path import Path
 
+    disps = [r for g in groups for r in g]
     lens = np.fromiter((len(d) for d in disps), dtype=np.intp, count=len(disps))
+    group_of = np.repeat(np.arange(len(groups)), [len(g) for g in groups])
     pts = np.concatenate(disps)
     starts = np.cumsum(lens) - lens
-    # Each ring's corner after each corner, and twice each ring's signed area.
+    # Each ring's corner after each corner, and twice each group's signed area.
     local = np.arange(len(pts)) - np.repeat(starts, lens)
     after = np.where(local + 1 == np.repeat(lens, lens), 0, local + 1) + np.repeat(starts, lens)
     cross = pts[:, 0] * pts[after, 1] - pts[after, 0] * pts[:, 1]
-    backwards = np.repeat(np.add.reduceat(cross, starts) < 0, lens)
-    # Corners of a ring turning the other way taken in reverse, then each ring closed.
+    area = np.bincount(group_of, weights=np.add.reduceat(cross, starts), minlength=len(groups))
+    backwards = np.repeat((area < 0)[group_of], lens)
+    # Corners of a group turning the other way taken in reverse, then each ring closed.
     order = np.repeat(starts, lens) + np.where(backwards, np.repeat(lens, lens) - 1 - local, local)
     closed = np.insert(order, starts + lens, order[starts])
     codes = np.full(len(closed), Path.LINETO, dtype=Path.code_type)

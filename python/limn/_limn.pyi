@@ -1,6 +1,6 @@
 """Type hints of the native module (the documented API is in ``limn/__init__.py``)."""
 
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -114,8 +114,19 @@ class Scene:
         self, sort: Optional[str] = ..., arith: Optional[str] = ..., seams: float = ...
     ) -> List[Tuple[int, npt.NDArray[np.float64], Tuple[float, float, float, float], List[bool]]]: ...
     def paint_with_marks(
-        self, sort: Optional[str] = ..., arith: Optional[str] = ..., seams: float = ...
+        self,
+        sort: Optional[str] = ...,
+        arith: Optional[str] = ...,
+        seams: float = ...,
+        join: Optional[npt.NDArray[np.bool_]] = ...,
     ) -> Tuple[
-        List[Tuple[int, npt.NDArray[np.float64], Tuple[float, float, float, float], List[bool]]],
+        List[
+            Tuple[
+                int,
+                Union[npt.NDArray[np.float64], List[npt.NDArray[np.float64]]],
+                Tuple[float, float, float, float],
+                List[bool],
+            ]
+        ],
         List[Dict[str, Any]],
     ]: ...

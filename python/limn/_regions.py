@@ -131,17 +131,21 @@ def region_faces(rings: List[np.ndarray]) -> List[Tuple[np.ndarray, np.ndarray]]
     in one plane) by the nonzero rule, with per face which of its edges (edge i from
     corner i to i + 1) are edges of an outline (the others are cuts).
 
-    Outlines that do not cross (those of contour sets on a plain grid, glyphs; touching
-    at corners is fine) give one face per region without holes, and trapezoids
-    (``_slabs``) for a region with holes. Outlines that cross (a filled contour set of a
-    folded mesh, ``contourf(..., zdir="x")`` of a surface that is not a function of y and
-    z) are filled by trapezoids all together.
+    Outlines that cross (a filled contour set of a folded mesh, ``contourf(...,
+    zdir="x")`` of a surface that is not a function of y and z) are first smoothed at
+    their crossings into outlines that only touch there (``_uncrossed``: the same
+    winding numbers). Then each region without holes is one face (touching at corners
+    is fine), a region with holes one face with cuts to its holes (``_keyhole``) or,
+    where no cut can be shown clear, trapezoids (``_slabs``); trapezoids fill all the
+    outlines together where the rounded crossing points still leave a crossing.
     Degenerate outlines (fewer than three corners, no area) are left out."""
     rings = [_clean(r) for r in rings]
     rings = [r for r in rings if len(r) >= 3 and np.isfinite(r).all()]
     if not rings:
         return []
     u, v = _plane_axes(rings)
+    rings, _ = _uncrossed(rings, [r[:, [u, v]] for r in rings])
+    rings = [c for c in (_clean(r) for r in rings) if len(c) >= 3]
     flat = [r[:, [u, v]] for r in rings]
     if _crossing(flat):
         return _slabs(rings, flat)
@@ -161,15 +165,27 @@ def region_faces(rings: List[np.ndarray]) -> List[Tuple[np.ndarray, np.ndarray]]
         while j >= 0:
             winding[i] += sign[j]
             j = parent[j]
-    holes: List[List[int]] = [[] for _ in range(n)]
+    children: List[List[int]] = [[] for _ in range(n)]
     for i in range(n):
         if parent[i] >= 0:
-            holes[parent[i]].append(i)
+            children[parent[i]].append(i)
     out: List[Tuple[np.ndarray, np.ndarray]] = []
     for i in range(n):
-        if winding[i] == 0:
+        # A region: an outline of nonzero winding number right inside one of winding
+        # zero (or nothing), less the outlines of winding zero within it. Outlines of
+        # nonzero winding within it are filled either way (nested outlines turned the
+        # same way, outlines touching where crossings were smoothed): not holes.
+        if winding[i] == 0 or (parent[i] >= 0 and winding[parent[i]] != 0):
             continue
-        if not holes[i]:
+        holes: List[int] = []
+        within = list(children[i])
+        while within:
+            c = within.pop()
+            if winding[c] == 0:
+                holes.append(c)
+            else:
+                within += children[c]
+        if not holes:
             out.append((rings[i], np.ones(len(rings[i]), dtype=bool)))
             continue
         # The outline counter-clockwise, its holes clockwise: winding one in the region.
@@ -177,7 +193,7 @@ def region_faces(rings: List[np.ndarray]) -> List[Tuple[np.ndarray, np.ndarray]]
             rings[k][::-1],
             flat[k][::-1],
         )
-        parts = [ccw(i, True)] + [ccw(h, False) for h in holes[i]]
+        parts = [ccw(i, True)] + [ccw(h, False) for h in sorted(holes)]
         face = _keyhole([r for r, _ in parts], [q for _, q in parts])
         if face is not None:
             out.append(face)
@@ -322,34 +338,115 @@ def _edges(flat: List[np.ndarray]) -> Tuple[np.ndarray, np.ndarray]:
     return a, b
 
 
-def _crossing(flat: List[np.ndarray]) -> bool:
-    """Whether two edges of the outlines cross properly (each one's ends strictly on
-    both sides of the other)."""
-    a, b = _edges(flat)
+def _crossing_pairs(a: np.ndarray, b: np.ndarray) -> Tuple[np.ndarray, np.ndarray]:
+    """The pairs ``i < j`` of edges ``a[i]``–``b[i]`` and ``a[j]``–``b[j]`` (each (E, 2))
+    that cross properly (each one's ends strictly on both sides of the other)."""
     lo, hi = np.minimum(a, b), np.maximum(a, b)
     order = np.argsort(lo[:, 0], kind="stable")
-    a, b, lo, hi = a[order], b[order], lo[order], hi[order]
+    sa, sb, slo, shi = a[order], b[order], lo[order], hi[order]
     e = len(a)
     step = max(1, 4_000_000 // max(e, 1))
+    found_i: List[np.ndarray] = []
+    found_j: List[np.ndarray] = []
     for s in range(0, e, step):
         i = np.arange(s, min(e, s + step))
         # Pairs j > i whose boxes meet (boxes sorted by left side: j's left side
         # before i's right side).
-        last = np.searchsorted(lo[:, 0], hi[i, 0], side="right")
+        last = np.searchsorted(slo[:, 0], shi[i, 0], side="right")
         counts = np.maximum(last - i - 1, 0)
         if not counts.any():
             continue
         ii = np.repeat(i, counts)
         jj = np.arange(len(ii)) - np.repeat(np.cumsum(counts) - counts, counts) + ii + 1
-        meet = (lo[jj, 1] <= hi[ii, 1]) & (hi[jj, 1] >= lo[ii, 1])
+        meet = (slo[jj, 1] <= shi[ii, 1]) & (shi[jj, 1] >= slo[ii, 1])
         ii, jj = ii[meet], jj[meet]
-        d1 = _side(a[ii], b[ii], a[jj])
-        d2 = _side(a[ii], b[ii], b[jj])
-        d3 = _side(a[jj], b[jj], a[ii])
-        d4 = _side(a[jj], b[jj], b[ii])
-        if ((d1 * d2 < 0) & (d3 * d4 < 0)).any():
-            return True
-    return False
+        d1 = _side(sa[ii], sb[ii], sa[jj])
+        d2 = _side(sa[ii], sb[ii], sb[jj])
+        d3 = _side(sa[jj], sb[jj], sa[ii])
+        d4 = _side(sa[jj], sb[jj], sb[ii])
+        x = (d1 * d2 < 0) & (d3 * d4 < 0)
+        found_i.append(order[ii[x]])
+        found_j.append(order[jj[x]])
+    if not found_i:
+        return np.zeros(0, np.intp), np.zeros(0, np.intp)
+    fi, fj = np.concatenate(found_i), np.concatenate(found_j)
+    return np.minimum(fi, fj), np.maximum(fi, fj)
+
+
+def _crossing(flat: List[np.ndarray]) -> bool:
+    """Whether two edges of the outlines cross properly."""
+    return len(_crossing_pairs(*_edges(flat))[0]) > 0
+
+
+def _where_crossing(
+    a: np.ndarray, b: np.ndarray, ii: np.ndarray, jj: np.ndarray
+) -> Tuple[np.ndarray, np.ndarray]:
+    """Where the crossing edges ``ii`` and ``jj`` meet: the fraction of the way along
+    each (from ``a`` to ``b``)."""
+    p, r = a[ii], b[ii] - a[ii]
+    q, sv = a[jj], b[jj] - a[jj]
+    den = r[:, 0] * sv[:, 1] - r[:, 1] * sv[:, 0]
+    t = ((q[:, 0] - p[:, 0]) * sv[:, 1] - (q[:, 1] - p[:, 1]) * sv[:, 0]) / den
+    u = ((q[:, 0] - p[:, 0]) * r[:, 1] - (q[:, 1] - p[:, 1]) * r[:, 0]) / den
+    return np.clip(t, 0.0, 1.0), np.clip(u, 0.0, 1.0)
+
+
+def _uncrossed(
+    rings: List[np.ndarray], flat: List[np.ndarray]
+) -> Tuple[List[np.ndarray], List[np.ndarray]]:
+    """Outlines with the same winding number everywhere off them as ``rings``, none of
+    which crosses another or itself: at each crossing, the outline arriving along one
+    edge leaves along the other (the crossing is smoothed the way both run, so every
+    point keeps its winding number). Smoothing a crossing of an outline with itself
+    splits it in two, of two outlines joins them; the new outlines touch at the
+    crossings. Their edges are pieces of the given ones."""
+    a, b = _edges(flat)
+    ii, jj = _crossing_pairs(a, b)
+    if not len(ii):
+        return rings, flat
+    t, u = _where_crossing(a, b, ii, jj)
+    a3 = np.concatenate(rings)
+    b3 = np.concatenate([np.roll(r, -1, axis=0) for r in rings])
+    x3 = a3[ii] + t[:, None] * (b3[ii] - a3[ii])
+    x2 = a[ii] + t[:, None] * (b[ii] - a[ii])
+    # The nodes of the walk along every outline: each corner, then the crossings on its
+    # edge in order along it, as (corner, -1) or (crossing, which of its two edges).
+    on_edge: dict = {}
+    for c in range(len(ii)):
+        on_edge.setdefault(int(ii[c]), []).append((float(t[c]), c, 0))
+        on_edge.setdefault(int(jj[c]), []).append((float(u[c]), c, 1))
+    seq: List[Tuple[int, int]] = []
+    after: List[int] = []  # the next node along the same outline
+    e = 0
+    for q in flat:
+        begin = len(seq)
+        for _ in range(len(q)):
+            seq.append((e, -1))
+            seq += [(c, side) for _, c, side in sorted(on_edge.get(e, ()))]
+            e += 1
+        after += list(range(begin + 1, len(seq))) + [begin]
+    visit = {node: k for k, node in enumerate(seq) if node[1] >= 0}
+    # Arriving at a crossing along one edge, the walk leaves along the other: the
+    # successor of each of its two visits is that of the other (a permutation still).
+    succ = list(after)
+    for c in range(len(ii)):
+        k0, k1 = visit[(c, 0)], visit[(c, 1)]
+        succ[k0], succ[k1] = after[k1], after[k0]
+    used = [False] * len(seq)
+    out3: List[np.ndarray] = []
+    out2: List[np.ndarray] = []
+    for k0 in range(len(seq)):
+        k, pts3, pts2 = k0, [], []
+        while not used[k]:
+            used[k] = True
+            node, side = seq[k]
+            pts3.append(a3[node] if side < 0 else x3[node])
+            pts2.append(a[node] if side < 0 else x2[node])
+            k = succ[k]
+        if pts3:
+            out3.append(np.array(pts3))
+            out2.append(np.array(pts2))
+    return out3, out2
 
 
 def _side(o: np.ndarray, a: np.ndarray, p: np.ndarray) -> np.ndarray:
@@ -417,28 +514,6 @@ def _slabs(rings: List[np.ndarray], flat: List[np.ndarray]) -> List[Tuple[np.nda
 
 def _crossing_heights(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """The heights (y) where two edges cross properly."""
-    lo, hi = np.minimum(a, b), np.maximum(a, b)
-    ys = []
-    e = len(a)
-    step = max(1, 2_000_000 // max(e, 1))
-    for s in range(0, e, step):
-        i = np.arange(s, min(e, s + step))
-        ii, jj = np.nonzero(
-            (lo[None, :, 0] <= hi[i, None, 0]) & (hi[None, :, 0] >= lo[i, None, 0])
-            & (lo[None, :, 1] <= hi[i, None, 1]) & (hi[None, :, 1] >= lo[i, None, 1])
-        )
-        ii = i[ii]
-        keep = jj > ii
-        ii, jj = ii[keep], jj[keep]
-        d1 = _side(a[ii], b[ii], a[jj])
-        d2 = _side(a[ii], b[ii], b[jj])
-        d3 = _side(a[jj], b[jj], a[ii])
-        d4 = _side(a[jj], b[jj], b[ii])
-        x = (d1 * d2 < 0) & (d3 * d4 < 0)
-        ii, jj = ii[x], jj[x]
-        p, r = a[ii], b[ii] - a[ii]
-        q, sv = a[jj], b[jj] - a[jj]
-        den = r[:, 0] * sv[:, 1] - r[:, 1] * sv[:, 0]
-        t = ((q[:, 0] - p[:, 0]) * sv[:, 1] - (q[:, 1] - p[:, 1]) * sv[:, 0]) / den
-        ys.append(p[:, 1] + t * r[:, 1])
-    return np.concatenate(ys) if ys else np.zeros(0)
+    ii, jj = _crossing_pairs(a, b)
+    t, _ = _where_crossing(a, b, ii, jj)
+    return a[ii, 1] + t * (b[ii, 1] - a[ii, 1])

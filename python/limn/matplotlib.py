@@ -274,7 +274,11 @@ class _Limn3D:
             scene.add_label(tuple(float(c) for c in at), "x")
         scene.set_camera(matrix=m, size=(wl, hl))
         sx, sy = W / wl, H / hl
-        polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith)
+        # Fragments of an unstroked face painted one after another come joined: the
+        # outline of their union, not one subpath per piece.
+        stroked = (lw > 0) & (ec[:, 3] > 0) if len(lw) else np.zeros(0, dtype=bool)
+        join = ~stroked[owner] if len(owner) else np.zeros(0, dtype=bool)
+        polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith, join=join)
         disp_of = lambda pts: np.c_[pts[:, 0] * sx, H - pts[:, 1] * sy]  # noqa: E731
         # Markers and texts between the same two polygons are painted far to near, as
         # mplot3d paints a scatter (limn's picture keeps them in input order).
@@ -325,9 +329,14 @@ class _Limn3D:
 
         first = np.concatenate([[0], np.cumsum(counts)])
         seen = _project(v, m)  # the faces' corners in limn's normalised coordinates
-        # Every fragment's points in display units at once.
-        ends = np.cumsum([0] + [len(p[1]) for p in polygons])
-        pts_all = np.concatenate([p[1] for p in polygons]) if polygons else np.zeros((0, 2))
+        # Every fragment's points in display units at once (a joined entry's rings one
+        # after another).
+        joined = [isinstance(p[1], list) for p in polygons]
+        ends = np.cumsum(
+            [0] + [sum(map(len, p[1])) if j else len(p[1]) for p, j in zip(polygons, joined)]
+        )
+        every = [r for p, j in zip(polygons, joined) for r in (p[1] if j else (p[1],))]
+        pts_all = np.concatenate(every) if every else np.zeros((0, 2))
         disp_all = np.column_stack([pts_all[:, 0] * sx, H - pts_all[:, 1] * sy])
         lead, skip = _whole_runs(polygons, owner, by_place, fc, ec, lw, len(polys.corners))
         for i, (face, pts, fill, orig) in enumerate(polygons):
@@ -375,16 +384,21 @@ class _Limn3D:
                 j = np.nonzero(flags)[0]
                 edges = np.stack([disp[j], disp[(j + 1) % len(disp)]], axis=1)
                 whole = bool(flags.all())
-            # Only fragments of one polygon join: they tile it (a translucent one is not
-            # blended twice), an edge keeps its place between the fills of other
-            # polygons, and the outlines limn joins with their seam flaps overlap only
-            # where flaps of one polygon meet.
-            key = (tuple(fill), k, polys.background[k], tuple(ec[k]), float(lw[k]))
+            # Only fragments of one tiling join (of one polygon, or of the faces filling
+            # one path): they do not overlap (a translucent one is not blended twice),
+            # an edge keeps its place between the fills of other polygons, and the
+            # outlines limn joins with their seam flaps overlap only where flaps of one
+            # tiling meet.
+            key = (tuple(fill), polys.tiling[k], polys.background[k], tuple(ec[k]), float(lw[k]))
             if run and (run[0].key != key or run[0].clip is not polys.clip[k]):
                 flush()
             if not run:
                 run.append(_Run(key, polys.clip[k], 0.5 * lw[k] * p2p))
-            run[0].add(disp, edges, edged, whole)
+            if joined[i]:
+                cuts = np.cumsum([len(r) for r in polygons[i][1]])[:-1]
+                run[0].add(np.split(disp, cuts), edges, edged, whole)
+            else:
+                run[0].add([disp], edges, edged, whole)
         flush()
         add_marks(len(polygons))
         return items
@@ -393,17 +407,18 @@ class _Limn3D:
 class _Run:
     """Fragments painted one after another with the same fill, edge style, clip and layer,
     drawn as one item: one path when there are several (no seam shows between them in a
-    viewer, and a figure of thousands of triangles of a few polygons is a few paths)."""
+    viewer, and a figure of thousands of triangles of a few polygons is a few paths).
+    Each fragment is a list of rings: one, or the outlines and holes of a joined run."""
 
     def __init__(self, key: tuple, clip: Any, pad: float) -> None:
         self.key, self.clip, self.pad = key, clip, pad
-        self.disps: List[np.ndarray] = []
+        self.groups: List[List[np.ndarray]] = []
         self.edges: List[np.ndarray] = []
         self.edged = False
         self.whole = False
 
-    def add(self, disp: np.ndarray, edges: Any, edged: bool, whole: bool) -> None:
-        self.disps.append(disp)
+    def add(self, rings: List[np.ndarray], edges: Any, edged: bool, whole: bool) -> None:
+        self.groups.append(rings)
         if edges is not None:
             self.edges.append(edges)
         self.edged |= edged
@@ -412,10 +427,11 @@ class _Run:
     def item(self) -> _Item:
         fill, _, background, edge, width = self.key
         pad = self.pad if self.edged else 0.0
-        if len(self.disps) == 1:
+        parts = [r for g in self.groups for r in g]
+        if len(parts) == 1:
             draw = partial(
                 draw_polygon,
-                disp=self.disps[0],
+                disp=parts[0],
                 fill=fill,
                 edges=self.edges[0] if self.edges else None,
                 edge=edge,
@@ -426,14 +442,14 @@ class _Run:
         else:
             draw = partial(
                 draw_polygons,
-                disps=self.disps,
+                groups=self.groups,
                 fill=fill,
                 edges=np.concatenate(self.edges) if self.edges else None,
                 edge=edge,
                 width=width,
                 clip=self.clip,
             )
-        return _Item(self.disps, pad, background, draw)
+        return _Item(parts, pad, background, draw)
 
 
 def _outline(disp: np.ndarray) -> np.ndarray:

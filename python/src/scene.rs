@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use glam::DVec3;
 use limn::{Collected, Input, Request, SceneOptions, ViewOptions};
 use limn_depthsort::order_with_marks;
-use limn_paint::{picture_with_marks, Mark, MarkKind, Style};
+use limn_paint::{picture_with_marks, Mark, MarkKind, PaintFragment, Style};
 use limn_scene::{Light, LightKind, Scene};
 use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
@@ -67,17 +67,125 @@ pub(crate) fn load(py: Python<'_>, path: PathBuf, allow_outside: bool) -> PyResu
 }
 
 /// A painted polygon: face, points `(n, 2)` in pixels, fill RGBA, original edges.
-type Painted<'py> = (
-    u32,
-    Bound<'py, PyArray2<f64>>,
-    (f64, f64, f64, f64),
-    Vec<bool>,
-);
+type Painted<'py> = (u32, Bound<'py, PyAny>, (f64, f64, f64, f64), Vec<bool>);
 
 /// Pixel points as an `(n, 2)` array.
 fn xy<'py>(py: Python<'py>, pts: &[[f64; 2]]) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let rows: Vec<Vec<f64>> = pts.iter().map(|p| p.to_vec()).collect();
     PyArray2::from_vec2(py, &rows).map_err(value_error)
+}
+
+/// One entry of `paint_with_marks`: a fragment, or a run of fragments joined.
+struct Entry {
+    /// The (first) fragment's index in the picture.
+    first: usize,
+    /// For a joined run, the rings of its union (outer rings and holes turned opposite
+    /// ways); `None` for a fragment given as it is.
+    rings: Option<Vec<Vec<[f64; 2]>>>,
+}
+
+/// Decimals of the grid a joined run is rounded to: a millionth of a pixel, fewer where
+/// the run reaches so far from the origin that the grid would leave the integer
+/// engine's range (`None` below a hundredth of a pixel: the run stays as it is).
+fn join_decimals(run: &[PaintFragment]) -> Option<u8> {
+    let reach = run
+        .iter()
+        .flat_map(|f| f.points.iter())
+        .fold(0.0f64, |m, p| m.max(p[0].abs()).max(p[1].abs()));
+    (2..=6u8)
+        .rev()
+        .find(|&d| reach * 10f64.powi(i32::from(d)) < f64::from(1u32 << 30) / 2.0)
+}
+
+/// The picture's fragments as entries: each maximal run of fragments of one face
+/// flagged in `join`, flat (no vertex colours, no texture) in one fill, with no mark
+/// painted between them and two or more pieces (fragments that are not seam flaps), as
+/// the union of its pieces (`limn_paint::union_of_polygons`: what their subpaths fill,
+/// on a grid of a millionth of a pixel) and its flaps, turned as the union's outer
+/// rings; every other fragment as it is. Also, per picture position (0 to the fragment count), the entry
+/// position it becomes, for the marks' `before`.
+fn joined(pic: &limn_paint::Picture, join: &[bool]) -> (Vec<Entry>, Vec<usize>) {
+    let frags = &pic.fragments;
+    let n = frags.len();
+    let mut mark_at = vec![false; n + 1];
+    for m in &pic.marks {
+        mark_at[m.before.min(n)] = true;
+    }
+    let joinable = |f: &PaintFragment| {
+        join.get(f.face as usize).copied().unwrap_or(false)
+            && f.vertex_colors.is_none()
+            && f.texture.is_none()
+    };
+    let mut entries = Vec::with_capacity(n);
+    let mut before = vec![0; n + 1];
+    let mut i = 0;
+    while i < n {
+        let mut j = i + 1;
+        if joinable(&frags[i]) {
+            while j < n
+                && !mark_at[j]
+                && joinable(&frags[j])
+                && frags[j].face == frags[i].face
+                && frags[j].fill == frags[i].fill
+            {
+                j += 1;
+            }
+        }
+        let run = &frags[i..j];
+        // The pieces tile the face's part: their union is cheap (shared edges, no
+        // crossings). Seam flaps overlap later fragments: they stay rings of their own.
+        let pieces: Vec<&[[f64; 2]]> = run
+            .iter()
+            .filter(|f| !f.flap)
+            .map(|f| f.points.as_slice())
+            .collect();
+        let union = (pieces.len() >= 2)
+            .then(|| join_decimals(run))
+            .flatten()
+            .and_then(|d| limn_paint::union_of_polygons(&pieces, d));
+        let start = entries.len();
+        match union {
+            Some(shapes) => {
+                let mut rings: Vec<Vec<[f64; 2]>> = shapes.into_iter().flatten().collect();
+                let outer = rings.first().map_or(0.0, |r| area2(r));
+                for f in run.iter().filter(|f| f.flap) {
+                    let mut ring = f.points.clone();
+                    if area2(&ring) * outer < 0.0 {
+                        ring.reverse();
+                    }
+                    rings.push(ring);
+                }
+                if !rings.is_empty() {
+                    entries.push(Entry {
+                        first: i,
+                        rings: Some(rings),
+                    });
+                }
+            }
+            None => entries.extend((i..j).map(|k| Entry {
+                first: k,
+                rings: None,
+            })),
+        }
+        // A mark is never painted inside a joined run: its fragments all map to the
+        // entry's place.
+        for (k, b) in before.iter_mut().enumerate().take(j).skip(i) {
+            *b = (start + k - i).min(entries.len());
+        }
+        i = j;
+    }
+    before[n] = entries.len();
+    (entries, before)
+}
+
+/// Twice the signed area of a polygon.
+fn area2(p: &[[f64; 2]]) -> f64 {
+    (0..p.len())
+        .map(|i| {
+            let (a, b) = (p[i], p[(i + 1) % p.len()]);
+            a[0] * b[1] - b[0] * a[1]
+        })
+        .sum()
 }
 
 /// One painted mark as a dict (see `paint_with_marks`).
@@ -458,7 +566,7 @@ impl PyScene {
         arith: Option<&str>,
         seams: f64,
     ) -> PyResult<Vec<Painted<'py>>> {
-        Ok(self.paint_with_marks(py, sort, arith, seams)?.0)
+        Ok(self.paint_with_marks(py, sort, arith, seams, None)?.0)
     }
 
     /// [`PyScene::paint`] and the visible marks: a list of dicts with `before` (the
@@ -467,13 +575,17 @@ impl PyScene {
     /// `"marker"`: `at`, `shape`, `size`, `color`, `stroke`; `index`: the input line,
     /// point or label (in the order they were added; `None` for heads); `"label"`: `at`, `offset`,
     /// `anchor`, `text`, `size`, `color`; `"head"`: `points (3, 2)`, `color`).
-    #[pyo3(signature = (sort=None, arith=None, seams=limn::DEFAULT_SEAMS))]
+    /// `join`, one flag per face: the flat fragments of a flagged face painted one
+    /// after another in one fill with no mark between them come as one entry whose
+    /// points are the rings of their union (see [`joined`]).
+    #[pyo3(signature = (sort=None, arith=None, seams=limn::DEFAULT_SEAMS, join=None))]
     fn paint_with_marks<'py>(
         &self,
         py: Python<'py>,
         sort: Option<&str>,
         arith: Option<&str>,
         seams: f64,
+        join: Option<PyReadonlyArray1<'py, bool>>,
     ) -> PyResult<(Vec<Painted<'py>>, Vec<Bound<'py, PyDict>>)> {
         let mut view = self.view.clone();
         order_names(&mut view, sort, arith, None)?;
@@ -493,14 +605,46 @@ impl PyScene {
             seams,
             ..Style::default()
         };
-        let pic = picture_with_marks(&self.scene, &mut ordered, &marks, &style);
-        let polys = pic
-            .fragments
+        let mut pic = picture_with_marks(&self.scene, &mut ordered, &marks, &style);
+        let join = match &join {
+            None => Vec::new(),
+            Some(flags) => {
+                let flags = flags.as_slice().map_err(value_error)?.to_vec();
+                if flags.len() != self.scene.faces.len() {
+                    return Err(value_error(format!(
+                        "join has {} flags for {} faces",
+                        flags.len(),
+                        self.scene.faces.len()
+                    )));
+                }
+                flags
+            }
+        };
+        let (runs, before) = joined(&pic, &join);
+        for m in &mut pic.marks {
+            m.before = before[m.before];
+        }
+        let polys = runs
             .into_iter()
-            .map(|f| {
-                let arr = xy(py, &f.points)?;
+            .map(|run| {
+                let f = &pic.fragments[run.first];
                 let [r, g, b, a] = f.fill;
-                Ok((f.face, arr, (r, g, b, a), f.original_edges))
+                let edges = if run.rings.is_some() {
+                    Vec::new()
+                } else {
+                    f.original_edges.clone()
+                };
+                let points = match run.rings {
+                    None => xy(py, &f.points)?.into_any(),
+                    Some(rings) => {
+                        let arrays = rings
+                            .iter()
+                            .map(|ring| xy(py, ring))
+                            .collect::<PyResult<Vec<_>>>()?;
+                        pyo3::types::PyList::new(py, arrays)?.into_any()
+                    }
+                };
+                Ok((f.face, points, (r, g, b, a), edges))
             })
             .collect::<PyResult<Vec<_>>>()?;
         // The picture's markers and labels carry no input index: they come in the order

@@ -80,6 +80,56 @@ def test_outlines_are_filled_by_the_nonzero_rule(rings, want, inside, outside):
         assert not covered(faces, xy), xy
 
 
+def winding(rings, xy):
+    """The winding number of the outlines ``rings`` around the point (x, y)."""
+    total = 0
+    for r in rings:
+        a, b = r[:, :2], np.roll(r[:, :2], -1, axis=0)
+        up = (a[:, 1] <= xy[1]) & (b[:, 1] > xy[1])
+        down = (a[:, 1] > xy[1]) & (b[:, 1] <= xy[1])
+        side = (b[:, 0] - a[:, 0]) * (xy[1] - a[:, 1]) - (xy[0] - a[:, 0]) * (b[:, 1] - a[:, 1])
+        total += int(np.sum(up & (side > 0)) - np.sum(down & (side < 0)))
+    return total
+
+
+def band(n=120, shift=0.0):
+    """One outline of two curves crossing twice, as a filled contour of a folded surface
+    gives (``contourf(..., zdir="x")``): out along one curve, back along the other."""
+    x = np.linspace(-3, 3, n)
+    lower = np.c_[x, np.sin(x) * 2 - 0.5 + shift, np.zeros(n)]
+    upper = np.c_[x, np.sin(x) + shift, np.zeros(n)][::-1]
+    return np.vstack([lower, upper])
+
+
+@pytest.mark.parametrize(
+    "rings",
+    [
+        [band()],
+        # Two rings crossing each other, one turned the other way: their overlap has
+        # winding number zero.
+        [square(0, 2), square(1, 3)[::-1]],
+        # A band and a square over it.
+        [band(), square(-1, 1)],
+        # A ring winding twice round its middle.
+        [np.array([(0, 0, 0), (4, 0, 0), (4, 4, 0), (1, 4, 0), (1, 1, 0), (3, 1, 0), (3, 3, 0), (0, 3, 0)], float)],
+    ],
+)
+def test_crossing_outlines_are_uncrossed_not_cut_into_trapezoids(rings):
+    faces = region_faces(rings)
+    # Every face lies where the outlines' winding number is not zero, and every such
+    # point is in exactly one face (probed on a grid that misses the outlines' corners).
+    lo = np.concatenate(rings)[:, :2].min(axis=0) - 0.5
+    hi = np.concatenate(rings)[:, :2].max(axis=0) + 0.5
+    for x in np.linspace(lo[0], hi[0], 41) + 1e-3:
+        for y in np.linspace(lo[1], hi[1], 37) + 2e-3:
+            inside = sum(Path(f[:, :2]).contains_point((x, y)) for f, _ in faces)
+            assert inside == (winding(rings, (x, y)) != 0), (x, y)
+    # Pieces of the given outlines, not slabs: few faces, few new corners.
+    corners = sum(len(r) for r in rings)
+    assert len(faces) <= 6
+    assert sum(len(f) for f, _ in faces) <= corners + 4 * len(faces) + 8
+
+
 def test_glyph_outlines_keep_their_holes():
     from matplotlib.text import TextPath
 

@@ -290,3 +290,39 @@ def test_the_triangles_of_a_polygon_are_one_path_in_the_bridge(tmp_path):
             p = np.asarray(centre) + 0.6 * star[k] * (1.0 if k % 2 else 0.5)
             assert near(colour_at(fig, ax, mine, tuple(p)), colour), (centre, k)
     plt.close(fig)
+
+
+def _shoelace(p):
+    x, y = p[:, 0], p[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def test_joined_pieces_of_a_face_are_the_outline_of_their_union():
+    # A translucent comb (one non-convex face: several convex pieces, painted as they
+    # are) and a square beside it.
+    comb = [(0, 0), (5, 0), (5, 3), (4, 3), (4, 1), (3, 1), (3, 3), (2, 3), (2, 1), (1, 1), (1, 3), (0, 3)]
+    v = np.array([(x, y, 0.0) for x, y in comb] + [(6, 0, 0), (7, 0, 0), (7, 1, 0), (6, 1, 0)], float)
+    counts = [len(comb), 4]
+    s = limn.Scene()
+    s.add_mesh(v, np.arange(len(v)), counts=counts, colors=np.array([[0.2, 0.4, 0.8, 0.5]] * 2))
+    s.set_camera(eye=(3.5, 1.5, 20.0), target=(3.5, 1.5, 0.0), size=(320, 160))
+    apart, _ = s.paint_with_marks(seams=0)
+    pieces = [p for p in apart if p[0] == 0]
+    assert len(pieces) > 1
+    together, marks = s.paint_with_marks(seams=0, join=np.array([True, False]))
+    assert marks == []
+    (entry,) = [p for p in together if p[0] == 0]
+    rings = entry[1]
+    assert isinstance(rings, list) and len(rings) == 1 and entry[3] == []
+    # The comb's own outline: its twelve corners, each a corner of the pieces rounded to
+    # a millionth of a pixel, enclosing the pieces' area.
+    assert len(rings[0]) == len(comb)
+    corners = np.concatenate([p[1] for p in pieces])
+    gap = np.abs(corners[None, :, :] - rings[0][:, None, :]).max(axis=2).min(axis=1)
+    assert gap.max() <= 0.5e-6
+    want = sum(abs(_shoelace(p[1])) for p in pieces)
+    assert abs(_shoelace(rings[0])) == pytest.approx(want, abs=1e-3)
+    # The square is not flagged: it comes as it is.
+    assert [type(p[1]) for p in together if p[0] == 1] == [np.ndarray]
+    with pytest.raises(ValueError, match="join has 1 flags for 2 faces"):
+        s.paint_with_marks(join=np.array([True]))

@@ -123,6 +123,7 @@ pub use eps::{EpsOptions, EpsPainter};
 pub use error::PaintError;
 pub use format::Format;
 pub use hidden_line::{hidden_line_picture, HiddenLineStyle};
+pub use merge::union_of_polygons;
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
     Outline, PaintFragment, Picture, Texture, TextureAlpha, TextureMap,

@@ -19,7 +19,7 @@ use i_overlay::core::overlay::IntOverlayOptions;
 use i_overlay::core::simplify::Simplify;
 use i_overlay::i_float::int::point::IntPoint;
 
-use crate::number::{push_scaled, round_scaled};
+use crate::number::{push_scaled, round_scaled, MAX_DECIMALS};
 use crate::runs::{reversals, Frag};
 
 /// A run's outline: shapes, each its outer ring then its holes (turned the other way),
@@ -44,11 +44,25 @@ pub(crate) fn union(
     if run.len() < 2 {
         return None;
     }
-    let mut contours: Vec<Vec<IntPoint<i32>>> = Vec::with_capacity(run.len());
-    for (f, reverse) in run.iter().zip(reversals(run)) {
-        let mut ring = Vec::with_capacity(f.points.len());
-        for p in f.oriented(reverse) {
-            let q = page(p);
+    union_of_rings(
+        run.iter()
+            .zip(reversals(run))
+            .map(|(f, reverse)| f.oriented(reverse).map(&page)),
+        decimals,
+    )
+}
+
+/// The union under the non-zero rule of `rings`, each corner rounded to the grid of
+/// `decimals` decimals; `None` when a coordinate is beyond the integer engine's range.
+fn union_of_rings<R, P>(rings: R, decimals: u8) -> Option<Shapes>
+where
+    R: Iterator<Item = P>,
+    P: Iterator<Item = [f64; 2]>,
+{
+    let mut contours: Vec<Vec<IntPoint<i32>>> = Vec::new();
+    for corners in rings {
+        let mut ring = Vec::new();
+        for q in corners {
             let x = round_scaled(q[0], decimals)?;
             let y = round_scaled(q[1], decimals)?;
             if x.abs() > MAX_GRID || y.abs() > MAX_GRID {
@@ -63,6 +77,55 @@ pub(crate) fn union(
         contours.push(ring);
     }
     Some(contours.simplify(FillRule::NonZero, IntOverlayOptions::default()))
+}
+
+/// The area polygons fill together, as few outlines as it takes: the union under the
+/// non-zero rule of `polygons`, each first turned the way the first one turns (as the
+/// vector writers turn the subpaths of one path) and its corners rounded to the grid of
+/// `decimals` decimals (half away from zero; at most 9). Returns shapes, each an outer ring and
+/// its holes (turned the other way), corners on that grid; collinear corners dropped.
+/// The outline is that of the rounded polygons, decided with exact integer predicates;
+/// only where two rounded edges cross is a corner rounded again, to the same grid.
+/// `None` when a coordinate times `10^decimals` is beyond ±2³⁰ (the integer engine's
+/// range). Polygons that fill nothing once rounded add nothing.
+pub fn union_of_polygons(
+    polygons: &[&[[f64; 2]]],
+    decimals: u8,
+) -> Option<Vec<Vec<Vec<[f64; 2]>>>> {
+    let decimals = decimals.min(MAX_DECIMALS);
+    let area2 = |p: &[[f64; 2]]| -> f64 {
+        (0..p.len())
+            .map(|i| {
+                let (a, b) = (p[i], p[(i + 1) % p.len()]);
+                a[0] * b[1] - b[0] * a[1]
+            })
+            .sum()
+    };
+    let first = polygons.first().map_or(0.0, |p| area2(p));
+    let shapes = union_of_rings(
+        polygons.iter().map(|p| {
+            let reverse = area2(p) * first < 0.0;
+            let n = p.len();
+            (0..n).map(move |k| p[if reverse { n - 1 - k } else { k }])
+        }),
+        decimals,
+    )?;
+    let unit = 10f64.powi(i32::from(decimals));
+    Some(
+        shapes
+            .into_iter()
+            .map(|shape| {
+                shape
+                    .into_iter()
+                    .map(|ring| {
+                        ring.into_iter()
+                            .map(|q| [f64::from(q.x) / unit, f64::from(q.y) / unit])
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect(),
+    )
 }
 
 /// Whether polygon `points`, mapped to the page by `page` and rounded to the grid of

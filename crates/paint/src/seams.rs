@@ -306,6 +306,20 @@ fn flaps_after(
         return;
     }
     let n = f.points.len();
+    // Later fragments already given whole as a flap of this one (see `flap`): a flap
+    // along another of their edges would add nothing (a non-convex cover shares many
+    // edges with its neighbour, and each such flap repeated all its corners).
+    let mut given_whole: Vec<usize> = Vec::new();
+    let mut once = |j: usize, points: &Vec<[f64; 2]>| {
+        if *points != fragments[j].points {
+            return true;
+        }
+        if given_whole.contains(&j) {
+            return false;
+        }
+        given_whole.push(j);
+        true
+    };
     for e in 0..n {
         let (a, b) = (f.points[e], f.points[(e + 1) % n]);
         // The first fragment of another face painted after this one.
@@ -316,7 +330,9 @@ fn flaps_after(
                 let q = &fragments[j].points;
                 let (u, v) = (q[k], q[(k + 1) % q.len()]);
                 if let Some(points) = flap(q, u, v, width) {
-                    out.push((i, flat_flap(f, points)));
+                    if once(j, &points) {
+                        out.push((i, flat_flap(f, points)));
+                    }
                 }
             }
             continue;
@@ -324,6 +340,9 @@ fn flaps_after(
         let Some(points) = flap(&fragments[j].points, a, b, width) else {
             continue;
         };
+        if !once(j, &points) {
+            continue;
+        }
         // A smooth fragment's flap takes the colours along the edge (its flat fill, the
         // colour half-way, stands for them where one colour is drawn).
         let (fill, vertex_colors) = match &f.vertex_colors {
@@ -851,6 +870,7 @@ mod tests {
                 continue;
             }
             let n = f.points.len();
+            let mut given_whole = Vec::new();
             for e in 0..n {
                 let (a, b) = (f.points[e], f.points[(e + 1) % n]);
                 let Some(js) = later.get(&edge_key(a, b)) else {
@@ -872,6 +892,12 @@ mod tests {
                     continue;
                 };
                 if let Some(flap) = flap(&fragments[j].points, a, b, width) {
+                    if flap == fragments[j].points {
+                        if given_whole.contains(&j) {
+                            continue;
+                        }
+                        given_whole.push(j);
+                    }
                     let (fill, colors) = match &f.vertex_colors {
                         Some(cs) if cs.len() == n => {
                             let (ca, cb) = (cs[e], cs[(e + 1) % n]);
@@ -1241,5 +1267,39 @@ mod tests {
             [572.0729321591807, 351.0551786280026],
         ];
         assert!(!is_convex(&rounded));
+    }
+
+    #[test]
+    fn a_later_fragment_given_whole_as_a_flap_is_given_once() {
+        // A thin band bent along a zigzag, painted after the fragment below it whose top
+        // is the same zigzag: every corner of the band lies within the flap's width of
+        // each shared edge and the band is not convex, so each shared edge's flap is the
+        // whole band. Once is enough: the band covers every shared edge.
+        let zig: Vec<[f64; 2]> = (0..7)
+            .map(|k| [10.0 * f64::from(k), if k % 2 == 0 { 0.0 } else { 3.0 }])
+            .collect();
+        let mut below = vec![[60.0, -20.0], [0.0, -20.0]];
+        below.extend(zig.iter().copied());
+        let mut band: Vec<[f64; 2]> = zig.iter().rev().copied().collect();
+        band.extend(zig.iter().map(|p| [p[0], p[1] + 0.5]));
+        let mut first = PaintFragment::new(below, [1.0, 0.0, 0.0, 1.0]);
+        first.face = 0;
+        let mut later = PaintFragment::new(band.clone(), [0.0, 0.0, 1.0, 1.0]);
+        later.face = 1;
+        let frags = vec![first, later];
+        for out in [
+            seam_flaps_indexed(frags.clone(), 1.0, FlapJoin::Separate).0,
+            seam_flaps_reference(frags.clone(), 1.0).0,
+        ] {
+            let whole = out.iter().filter(|f| f.flap && f.points == band).count();
+            assert_eq!(whole, 1);
+        }
+        // Joined into the fragment's outline: the band's corners once, not per edge.
+        let (joined, _) = seam_flaps_indexed(frags, 1.0, FlapJoin::Joined);
+        assert!(
+            joined[0].points.len() <= 8 + band.len(),
+            "{}",
+            joined[0].points.len()
+        );
     }
 }
