@@ -339,6 +339,28 @@ class _Limn3D:
         pts_all = np.concatenate(every) if every else np.zeros((0, 2))
         disp_all = np.column_stack([pts_all[:, 0] * sx, H - pts_all[:, 1] * sy])
         lead, skip = _whole_runs(polygons, owner, by_place, fc, ec, lw, len(polys.corners))
+        # Which edges of the fragments of triangles of polygons cut in the view lie on
+        # the polygon's own edges, all at once.
+        cut = [
+            i
+            for i, (face, _, _, orig) in enumerate(polygons)
+            if not skip[i]
+            and lead[i] < 0
+            and stroked[owner[face]]
+            and any(orig)
+            and not own[face].all()
+        ]
+        own_edges = _polygon_edges(
+            [disp_all[ends[i] : ends[i + 1]] for i in cut],
+            [polygons[i][3] for i in cut],
+            [polygons[i][0] for i in cut],
+            seen,
+            first,
+            own,
+            W,
+            H,
+        )
+        own_edges_of = dict(zip(cut, own_edges))
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
             k = int(owner[face])
@@ -373,10 +395,9 @@ class _Limn3D:
                 continue
             disp = disp_all[ends[i] : ends[i + 1]]
             edged = lw[k] > 0 and ec[k][3] > 0 and any(orig)
-            if edged and not own[face].all():
+            if edged and i in own_edges_of:
                 # A triangle of a polygon cut in the view: only the polygon's own edges.
-                corner = seen[first[face] : first[face + 1]]
-                orig = _polygon_edges(disp, orig, corner, own[face], W, H)
+                orig = own_edges_of[i]
                 edged = any(orig)
             edges, whole = None, False
             if edged:
@@ -518,25 +539,50 @@ def _project(p: np.ndarray, m: np.ndarray) -> np.ndarray:
 
 
 def _polygon_edges(
-    disp: np.ndarray, orig: Any, corner: np.ndarray, own: np.ndarray, W: float, H: float
-) -> List[bool]:
-    """Which edges of a painted fragment (display units) lie on an edge of its polygon:
-    the fragment of a triangle (corners in limn's normalised coordinates) whose edges
-    ``own`` are the polygon's; each edge limn marks original lies on one of the
-    triangle's edges, the nearest to its midpoint."""
-    c = (corner + 1) / 2 * np.array([W, H])
-    a, b = c, np.roll(c, -1, axis=0)
-    d = b - a
-    length = np.maximum(np.hypot(d[:, 0], d[:, 1]), 1e-300)
-    flags = np.asarray(orig, dtype=bool)
-    out = np.zeros(len(flags), dtype=bool)
-    j = np.nonzero(flags)[0]
-    if len(j):
-        q = (disp[j] + disp[(j + 1) % len(disp)]) / 2
-        dist = np.abs(d[None, :, 0] * (q[:, None, 1] - a[None, :, 1])
-                      - d[None, :, 1] * (q[:, None, 0] - a[None, :, 0])) / length[None, :]
-        out[j] = np.asarray(own, dtype=bool)[np.argmin(dist, axis=1)]
-    return out.tolist()
+    disps: List[np.ndarray],
+    origs: List[Any],
+    faces: List[int],
+    seen: np.ndarray,
+    first: np.ndarray,
+    own: List[np.ndarray],
+    W: float,
+    H: float,
+) -> List[List[bool]]:
+    """Per painted fragment (corners ``disps[i]`` in display units, its original edges
+    ``origs[i]``, of face ``faces[i]``), which of its edges lie on an edge of its polygon:
+    each edge limn marks original lies on one of the face's edges (face corners ``seen``
+    in limn's normalised coordinates, those of face ``f`` from ``first[f]`` on), the one
+    nearest to its midpoint, which is the polygon's own where ``own[f]`` says so.
+    Fragments of faces of the same corner count are taken together."""
+    out: List[List[bool]] = [[] for _ in disps]
+    groups: dict = {}
+    for i, f in enumerate(faces):
+        groups.setdefault(int(first[f + 1] - first[f]), []).append(i)
+    for n, members in groups.items():
+        fs = np.array([faces[i] for i in members], dtype=np.int64)
+        c = (seen[first[fs][:, None] + np.arange(n)] + 1) / 2 * np.array([W, H])  # (m, n, 2)
+        d = np.roll(c, -1, axis=1) - c
+        length = np.maximum(np.hypot(d[..., 0], d[..., 1]), 1e-300)
+        owns = np.array([np.asarray(own[f], dtype=bool) for f in fs]).reshape(len(fs), n)
+        pts = np.concatenate([disps[i] for i in members])
+        lens = np.array([len(disps[i]) for i in members])
+        starts = np.cumsum(lens) - lens
+        member = np.repeat(np.arange(len(members)), lens)
+        local = np.arange(len(pts)) - starts[member]
+        after = starts[member] + (local + 1) % lens[member]
+        flags = np.concatenate(
+            [np.resize(np.asarray(origs[i], dtype=bool), len(disps[i])) for i in members]
+        )
+        j = np.nonzero(flags)[0]
+        g = member[j]
+        q = (pts[j] + pts[after[j]]) / 2
+        a, dd = c[g], d[g]
+        dist = np.abs(dd[..., 0] * (q[:, None, 1] - a[..., 1]) - dd[..., 1] * (q[:, None, 0] - a[..., 0]))
+        res = np.zeros(len(pts), dtype=bool)
+        res[j] = owns[g, np.argmin(dist / length[g], axis=1)]
+        for m, i in enumerate(members):
+            out[i] = res[starts[m] : starts[m] + lens[m]].tolist()
+    return out
 
 
 def _is_polygon_patch(art: Any) -> bool:
