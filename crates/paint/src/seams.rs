@@ -308,18 +308,9 @@ fn flaps_after(
     let n = f.points.len();
     // Later fragments already given whole as a flap of this one (see `flap`): a flap
     // along another of their edges would add nothing (a non-convex cover shares many
-    // edges with its neighbour, and each such flap repeated all its corners).
+    // edges with its neighbour, and each such flap repeated all its corners). Nor is one
+    // computed: a flap of a large non-convex fragment costs the square of its corners.
     let mut given_whole: Vec<usize> = Vec::new();
-    let mut once = |j: usize, points: &Vec<[f64; 2]>| {
-        if *points != fragments[j].points {
-            return true;
-        }
-        if given_whole.contains(&j) {
-            return false;
-        }
-        given_whole.push(j);
-        true
-    };
     for e in 0..n {
         let (a, b) = (f.points[e], f.points[(e + 1) % n]);
         // The first fragment of another face painted after this one.
@@ -327,21 +318,28 @@ fn flaps_after(
             // Else later pieces of its own face and colour it meets at T-junctions: a
             // flap along their whole edge, in their (and its) colour.
             for (j, k) in across.of(i, e) {
+                if given_whole.contains(&j) {
+                    continue;
+                }
                 let q = &fragments[j].points;
                 let (u, v) = (q[k], q[(k + 1) % q.len()]);
                 if let Some(points) = flap(q, u, v, width) {
-                    if once(j, &points) {
-                        out.push((i, flat_flap(f, points)));
+                    if points == *q {
+                        given_whole.push(j);
                     }
+                    out.push((i, flat_flap(f, points)));
                 }
             }
             continue;
         };
+        if given_whole.contains(&j) {
+            continue;
+        }
         let Some(points) = flap(&fragments[j].points, a, b, width) else {
             continue;
         };
-        if !once(j, &points) {
-            continue;
+        if points == fragments[j].points {
+            given_whole.push(j);
         }
         // A smooth fragment's flap takes the colours along the edge (its flat fill, the
         // colour half-way, stands for them where one colour is drawn).
@@ -891,11 +889,11 @@ mod tests {
                 else {
                     continue;
                 };
+                if given_whole.contains(&j) {
+                    continue;
+                }
                 if let Some(flap) = flap(&fragments[j].points, a, b, width) {
                     if flap == fragments[j].points {
-                        if given_whole.contains(&j) {
-                            continue;
-                        }
                         given_whole.push(j);
                     }
                     let (fill, colors) = match &f.vertex_colors {
