@@ -93,7 +93,8 @@ fn markers_and_labels_show_iff_their_anchor_is_visible() {
 }
 
 /// Behind a translucent quad nothing is hidden, but the piece behind it is painted before
-/// it and the piece in front after it.
+/// it and the piece in front after it. The part outside the quad's cone may go either
+/// way: it joins the piece behind (one piece, painted before the quad).
 #[test]
 fn translucent_faces_hide_nothing_and_order_the_pieces() {
     let mut s = quad_scene(0.5);
@@ -103,13 +104,70 @@ fn translucent_faces_hide_nothing_and_order_the_pieces() {
     ]));
     let v = run(&s, Arith::Exact);
     let before: Vec<usize> = v.pieces.iter().map(|p| p.before).collect();
-    // Outside the quad's cone (end = 1 fragment), behind it (0), in front (1).
-    assert_eq!(before, vec![1, 0, 1], "{v:?}");
+    // Outside the quad's cone and behind it (0), in front of it (1: over the quad).
+    assert_eq!(before, vec![0, 1], "{v:?}");
     assert_eq!(
-        v.pieces[1].world[0],
-        DVec3::new(-10.0 / 9.0, 0.5, -5.0 / 9.0)
+        v.pieces[0].world,
+        vec![
+            DVec3::new(-2.0, 0.5, -1.0),
+            DVec3::new(-10.0 / 9.0, 0.5, -5.0 / 9.0),
+            DVec3::new(0.0, 0.5, 0.0)
+        ]
     );
-    assert_eq!(v.pieces[2].world[0], DVec3::new(0.0, 0.5, 0.0));
+    assert_eq!(v.pieces[1].world[0], DVec3::new(0.0, 0.5, 0.0));
+}
+
+/// A line seen through a translucent surface of many faces is one piece, painted before
+/// the surface; a line over the surface's faces is painted after them, however many
+/// translucent faces lie in front of its parts.
+#[test]
+fn a_line_behind_a_translucent_surface_stays_one_piece() {
+    let mut s = Scene::default();
+    let mut glass = Material::unlit("glass", [0.2, 0.4, 0.8]);
+    glass.opacity = 0.5;
+    let m = s.add_material(glass);
+    let o = s.add_object("strips");
+    // Ten strips side by side in the plane z = 0.
+    for k in 0..10 {
+        let x = -1.0 + 0.2 * f64::from(k);
+        s.add_polygon(
+            &[
+                DVec3::new(x, -1.0, 0.0),
+                DVec3::new(x + 0.2, -1.0, 0.0),
+                DVec3::new(x + 0.2, 1.0, 0.0),
+                DVec3::new(x, 1.0, 0.0),
+            ],
+            m,
+            o,
+        )
+        .unwrap();
+    }
+    // Behind the strips, across all of them; then in front of them, across all.
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-0.95, 0.0, -0.5),
+        DVec3::new(0.95, 0.1, -0.5),
+    ]));
+    s.lines.push(Polyline::new(vec![
+        DVec3::new(-0.95, 0.0, 0.5),
+        DVec3::new(0.95, 0.1, 0.5),
+    ]));
+    let v = run(&s, Arith::Exact);
+    let behind: Vec<usize> = v
+        .pieces
+        .iter()
+        .filter(|p| p.line == 0)
+        .map(|p| p.before)
+        .collect();
+    let front: Vec<usize> = v
+        .pieces
+        .iter()
+        .filter(|p| p.line == 1)
+        .map(|p| p.before)
+        .collect();
+    assert_eq!(behind.len(), 1, "{v:?}");
+    assert_eq!(front, vec![10], "{v:?}");
+    // Painted before every strip it lies behind: the first.
+    assert_eq!(behind[0], 0);
 }
 
 /// Geometry nearer than the near plane is clipped, as faces are.

@@ -203,6 +203,33 @@ pub(crate) fn segment_verdict(fa: &[Iv], fb: &[Iv]) -> Verdict {
     Verdict::Unknown
 }
 
+/// The first condition (`behind`) negated: the conditions of being drawn over the
+/// polygon (`behind ≤ 0`, walls ≥ 0) instead of hidden by it.
+pub(crate) fn negate_first(f: &mut [Iv]) {
+    if let Some(x) = f.first_mut() {
+        *x = x.neg();
+    }
+}
+
+/// [`segment_verdict`] for conditions that all hold where they are zero (`≥ 0`), the
+/// first one too.
+pub(crate) fn closed_segment_verdict(fa: &[Iv], fb: &[Iv]) -> Verdict {
+    if fa
+        .iter()
+        .zip(fb)
+        .any(|(x, y)| x.neg_strict() && y.neg_strict())
+    {
+        return Verdict::Nowhere;
+    }
+    if fa.iter().zip(fb).all(|(x, y)| x.nonneg() && y.nonneg()) {
+        return Verdict::Everywhere;
+    }
+    if certainly_empty(fa, fb) {
+        return Verdict::Nowhere;
+    }
+    Verdict::Unknown
+}
+
 /// The filter's verdict on a point from its conditions.
 pub(crate) fn point_verdict(f: &[Iv]) -> Verdict {
     if f[0].nonpos() || f[1..].iter().any(|x| x.neg_strict()) {

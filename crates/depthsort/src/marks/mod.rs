@@ -18,7 +18,11 @@
 //!   from it toward the eye meets a face;
 //! - translucent fragments hide nothing, but a visible piece is painted before the first
 //!   translucent fragment in front of it (pieces are split where they pass in and out of
-//!   a translucent fragment's cone, so that one position holds for the whole piece).
+//!   a translucent fragment's cone, so that one position holds for the whole piece);
+//!   consecutive pieces of a line are one piece again, painted at the earliest of their
+//!   positions, where no fragment behind a later one and over it in the picture is
+//!   painted between the positions (a line seen through a translucent surface stays
+//!   whole instead of passing in and out of each of its triangles).
 
 mod bins;
 mod cone;
@@ -165,7 +169,7 @@ pub fn hide_marks(
         .collect();
     let opaque = |o: &(ExactPolygon, usize, Box2)| face_opaque(scene, ordered.fragments[o.1].face);
     let flags: Vec<bool> = occ.iter().map(opaque).collect();
-    run(scene, ordered, occ, flags)
+    run(scene, ordered, occ, flags, true)
 }
 
 /// Hides the marks against exact polygons of the input faces (for orders made by the
@@ -209,7 +213,7 @@ fn hide_marks_by_face(scene: &Scene, ordered: &Ordered) -> Result<VisibleMarks, 
             flags.push(face_opaque(scene, fi as u32));
         }
     }
-    run(scene, ordered, occ, flags)
+    run(scene, ordered, occ, flags, false)
 }
 
 /// Whether the scene has anything to hide: without lines, markers or labels the
@@ -227,15 +231,19 @@ fn view_projection(ordered: &Ordered) -> DMat4 {
     ordered.camera.view_projection(ordered.near, ordered.far)
 }
 
-/// The shared work: bins, then every line, marker, label and head.
+/// The shared work: bins, then every line, marker, label and head. `fragments`: the
+/// occluders are the ordered fragments themselves (each one's position its index), so
+/// pieces of a line may be joined where one position suits them all (see
+/// `segment::Shared::join_across`).
 fn run(
     scene: &Scene,
     ordered: &Ordered,
     occ: Vec<(ExactPolygon, usize, Box2)>,
     opaque: Vec<bool>,
+    fragments: bool,
 ) -> Result<VisibleMarks, OrderError> {
     let t0 = std::time::Instant::now();
-    let shared = context(ordered, occ, opaque)?;
+    let shared = context(ordered, occ, opaque, fragments)?;
     let mut out = hide_all(scene, &shared);
     out.stats.ms = t0.elapsed().as_millis() as u64;
     Ok(out)
@@ -247,7 +255,9 @@ fn context(
     ordered: &Ordered,
     occ: Vec<(ExactPolygon, usize, Box2)>,
     opaque: Vec<bool>,
+    fragments: bool,
 ) -> Result<segment::Shared, OrderError> {
+    let join_across = fragments && opaque.iter().any(|&o| !o);
     let cam = &ordered.camera;
     let fwd = cam.forward();
     let eye = cam.eye;
@@ -286,6 +296,7 @@ fn context(
         vp: view_projection(ordered),
         end: ordered.fragments.len(),
         filter: true,
+        join_across,
     })
 }
 

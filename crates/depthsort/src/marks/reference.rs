@@ -301,7 +301,7 @@ mod tests {
                 Viewpoint::At(p) => Eye::Point(r3(p.to_array())),
                 Viewpoint::Toward(d) => Eye::Toward(r3(d.to_array())),
             };
-            let shared = context(&ordered, occ(), flags.clone()).unwrap();
+            let shared = context(&ordered, occ(), flags.clone(), true).unwrap();
             let mut ctx = shared.task();
             for line in &s.lines {
                 for w in line.points.windows(2) {
@@ -358,8 +358,8 @@ mod tests {
                     checked[2] += usize::from(want);
                 }
             }
-            let fast = hide_all(&s, &context(&ordered, occ(), flags.clone()).unwrap());
-            let mut slow_shared = context(&ordered, occ(), flags).unwrap();
+            let fast = hide_all(&s, &context(&ordered, occ(), flags.clone(), true).unwrap());
+            let mut slow_shared = context(&ordered, occ(), flags, true).unwrap();
             slow_shared.filter = false;
             let mut slow = hide_all(&s, &slow_shared);
             assert!(slow.stats.exact_tests >= fast.stats.exact_tests);

@@ -27,6 +27,14 @@ pub(super) struct Shared {
     /// Whether the float filter decides what it can (off: everything exactly, the
     /// reference the filter is tested against).
     pub(super) filter: bool,
+    /// Whether consecutive visible pieces of a line with different positions are joined
+    /// where one position suits both: each occluder is a fragment whose position is its
+    /// index, and some are translucent (only they give pieces different positions).
+    /// A piece must be painted after every fragment behind it that it is drawn over (the
+    /// parts of its cone in front of the fragment's plane, see [`Ctx::over_part`]) and
+    /// before every translucent one in front; a run of pieces whose bounds leave room
+    /// for one position is one piece at the earliest of their positions.
+    pub(super) join_across: bool,
 }
 
 impl Shared {
@@ -76,6 +84,9 @@ fn clip(fa: &Q, fb: &Q, lo: Quotient, hi: Quotient) -> Option<(Quotient, Quotien
 struct Open {
     world: Vec<DVec3>,
     before: usize,
+    /// The earliest position its parts allow: after every fragment drawn under them
+    /// (0 when not joining across positions).
+    after: usize,
     start: f64,
 }
 
@@ -169,6 +180,17 @@ impl Ctx<'_> {
                     }
                 }
             }
+            // Fragments behind the segment that it is drawn over, with the position
+            // after them (only to join pieces across positions).
+            let mut over: Vec<(Quotient, Quotient, usize)> = Vec::new();
+            if self.sh.join_across {
+                for i in self.sh.bins.query(&screen) {
+                    let pos = self.sh.occluders[i as usize].before + 1;
+                    if let Some((lo, hi)) = self.over_part(i, [a, b], [&qa, &qb], &u_lo, &u_hi) {
+                        over.push((lo, hi, pos));
+                    }
+                }
+            }
             // Elementary intervals between all break points.
             let mut cuts: Vec<Quotient> = vec![
                 Quotient::zero(),
@@ -204,6 +226,7 @@ impl Ctx<'_> {
                                 hopen = Some(Open {
                                     world: vec![p0, p1],
                                     before: self.sh.end,
+                                    after: 0,
                                     start: seg_start,
                                 });
                             }
@@ -218,11 +241,25 @@ impl Ctx<'_> {
                     .map(|c| c.2)
                     .min()
                     .unwrap_or(self.sh.end);
+                // Conservatively: every fragment drawn under some of the interval.
+                let after = over
+                    .iter()
+                    .filter(|(lo, hi, _)| lo < t1 && t0 < hi)
+                    .map(|c| c.2)
+                    .max()
+                    .unwrap_or(0);
                 let p0 = at[k];
                 let p1 = at[k + 1];
                 match &mut open {
-                    Some(o) if o.before == before && o.world.last() == Some(&p0) => {
-                        o.world.push(p1)
+                    Some(o)
+                        if o.world.last() == Some(&p0)
+                            && (o.before == before
+                                || (self.sh.join_across
+                                    && o.after.max(after) <= o.before.min(before))) =>
+                    {
+                        o.world.push(p1);
+                        o.before = o.before.min(before);
+                        o.after = o.after.max(after);
                     }
                     _ => {
                         close(&mut open, line, out, self, &mut hidden_open, false);
@@ -231,6 +268,7 @@ impl Ctx<'_> {
                         open = Some(Open {
                             world: vec![p0, p1],
                             before,
+                            after,
                             start: if start.is_finite() { start } else { 0.0 },
                         });
                     }
@@ -302,6 +340,61 @@ impl Ctx<'_> {
             // The segment lies in the occluder's plane: never hidden by it.
             return None;
         }
+        let mut iv = clip(&ba, &bb, u_lo.clone(), u_hi.clone());
+        for wall in &c.walls {
+            iv = iv.and_then(|(lo, hi)| clip(&wall.at(qa), &wall.at(qb), lo, hi));
+        }
+        iv.filter(|(lo, hi)| lo < hi)
+    }
+
+    /// The parameters in `[u_lo, u_hi]` of segment `AB` drawn over occluder `i`: in its
+    /// cone from the eye (every wall ≥ 0) and not behind its plane (`behind ≤ 0`), when
+    /// they form an interval of positive length. Decided by the float filter where it
+    /// can, exactly otherwise.
+    pub(super) fn over_part(
+        &mut self,
+        i: u32,
+        ends: [DVec3; 2],
+        [qa, qb]: [&[Q; 3]; 2],
+        u_lo: &Quotient,
+        u_hi: &Quotient,
+    ) -> Option<(Quotient, Quotient)> {
+        if self.sh.filter {
+            let o = &self.sh.occluders[i as usize];
+            let [a, b] = ends.map(|p| p.to_array());
+            let ok_a = filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.sh.eye_f,
+                a,
+                &mut self.fa,
+            );
+            let ok_b = filter::conditions(
+                &o.poly,
+                &o.support,
+                o.eye_side,
+                self.sh.eye_f,
+                b,
+                &mut self.fb,
+            );
+            if !(ok_a && ok_b) {
+                // The eye in the occluder's plane: it covers nothing.
+                return None;
+            }
+            filter::negate_first(&mut self.fa);
+            filter::negate_first(&mut self.fb);
+            match filter::closed_segment_verdict(&self.fa, &self.fb) {
+                filter::Verdict::Nowhere => return None,
+                filter::Verdict::Everywhere => {
+                    return (u_lo < u_hi).then(|| (u_lo.clone(), u_hi.clone()));
+                }
+                filter::Verdict::Unknown => {}
+            }
+        }
+        self.stats.exact_tests += 1;
+        let c = self.sh.occluders[i as usize].cone(&self.sh.eye)?;
+        let (ba, bb) = (-&c.behind.at(qa), -&c.behind.at(qb));
         let mut iv = clip(&ba, &bb, u_lo.clone(), u_hi.clone());
         for wall in &c.walls {
             iv = iv.and_then(|(lo, hi)| clip(&wall.at(qa), &wall.at(qb), lo, hi));
