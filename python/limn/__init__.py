@@ -505,12 +505,14 @@ class Scene:
         ``color``); ``index`` is the input line, point (over all ``add_points`` calls) or
         label it shows, ``None`` for heads. Pixels, y down.
 
-        ``join``: a boolean per face (an array of ``face_count``). The flat fragments of a
-        flagged face painted one after another in one fill, with no mark between them,
-        then come as one polygon whose points are a list of rings (each (k, 2)): the
-        outline of their union (what they fill together under the nonzero rule, on a
-        grid of a millionth of a pixel), outer rings turned one way and holes the other,
-        with no original edges."""
+        ``join``: a group number per face (an array of ``face_count`` integers; negative:
+        none), for faces that do not overlap (a polygon's triangles, the faces filling
+        one region). The flat fragments of faces of one group painted one after another
+        in one fill, with no mark between them, then come as one polygon whose points
+        are a list of rings (each (k, 2)): the outline of their union (what they fill
+        together under the nonzero rule, on a grid of a millionth of a pixel), outer
+        rings turned one way and holes the other, with no original edges; its face is
+        the first fragment's."""
         if join is not None:
-            join = np.ascontiguousarray(join, dtype=bool).reshape(-1)
+            join = np.ascontiguousarray(join, dtype=np.int64).reshape(-1)
         return self._s.paint_with_marks(sort=sort, arith=arith, seams=seams, join=join)

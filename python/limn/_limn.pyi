@@ -118,7 +118,7 @@ class Scene:
         sort: Optional[str] = ...,
         arith: Optional[str] = ...,
         seams: float = ...,
-        join: Optional[npt.NDArray[np.bool_]] = ...,
+        join: Optional[npt.NDArray[np.int64]] = ...,
     ) -> Tuple[
         List[
             Tuple[

@@ -274,10 +274,14 @@ class _Limn3D:
             scene.add_label(tuple(float(c) for c in at), "x")
         scene.set_camera(matrix=m, size=(wl, hl))
         sx, sy = W / wl, H / hl
-        # Fragments of an unstroked face painted one after another come joined: the
-        # outline of their union, not one subpath per piece.
+        # Fragments of unstroked faces of one tiling (a polygon's triangles, the faces
+        # filling one region) painted one after another come joined: the outline of
+        # their union, not one subpath per piece.
         stroked = (lw > 0) & (ec[:, 3] > 0) if len(lw) else np.zeros(0, dtype=bool)
-        join = ~stroked[owner] if len(owner) else np.zeros(0, dtype=bool)
+        tiling = np.asarray(polys.tiling, dtype=np.int64)
+        join = (
+            np.where(stroked[owner], -1, tiling[owner]) if len(owner) else np.zeros(0, np.int64)
+        )
         polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith, join=join)
         disp_of = lambda pts: np.c_[pts[:, 0] * sx, H - pts[:, 1] * sy]  # noqa: E731
         # Markers and texts between the same two polygons are painted far to near, as

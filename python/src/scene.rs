@@ -97,25 +97,24 @@ fn join_decimals(run: &[PaintFragment]) -> Option<u8> {
         .find(|&d| reach * 10f64.powi(i32::from(d)) < f64::from(1u32 << 30) / 2.0)
 }
 
-/// The picture's fragments as entries: each maximal run of fragments of one face
-/// flagged in `join`, flat (no vertex colours, no texture) in one fill, with no mark
-/// painted between them and two or more pieces (fragments that are not seam flaps), as
+/// The picture's fragments as entries: each maximal run of fragments of faces of one
+/// group of `join` (per face; negative: none), flat (no vertex colours, no texture) in
+/// one fill, with no mark painted between them and two or more pieces (fragments that
+/// are not seam flaps), as
 /// the union of its pieces (`limn_paint::union_of_polygons`: what their subpaths fill,
 /// on a grid of a millionth of a pixel) and its flaps, turned as the union's outer
 /// rings; every other fragment as it is. Also, per picture position (0 to the fragment count), the entry
 /// position it becomes, for the marks' `before`.
-fn joined(pic: &limn_paint::Picture, join: &[bool]) -> (Vec<Entry>, Vec<usize>) {
+fn joined(pic: &limn_paint::Picture, join: &[i64]) -> (Vec<Entry>, Vec<usize>) {
     let frags = &pic.fragments;
     let n = frags.len();
     let mut mark_at = vec![false; n + 1];
     for m in &pic.marks {
         mark_at[m.before.min(n)] = true;
     }
-    let joinable = |f: &PaintFragment| {
-        join.get(f.face as usize).copied().unwrap_or(false)
-            && f.vertex_colors.is_none()
-            && f.texture.is_none()
-    };
+    let group = |f: &PaintFragment| join.get(f.face as usize).copied().unwrap_or(-1);
+    let joinable =
+        |f: &PaintFragment| group(f) >= 0 && f.vertex_colors.is_none() && f.texture.is_none();
     let mut entries = Vec::with_capacity(n);
     let mut before = vec![0; n + 1];
     let mut i = 0;
@@ -125,7 +124,7 @@ fn joined(pic: &limn_paint::Picture, join: &[bool]) -> (Vec<Entry>, Vec<usize>) 
             while j < n
                 && !mark_at[j]
                 && joinable(&frags[j])
-                && frags[j].face == frags[i].face
+                && group(&frags[j]) == group(&frags[i])
                 && frags[j].fill == frags[i].fill
             {
                 j += 1;
@@ -575,9 +574,10 @@ impl PyScene {
     /// `"marker"`: `at`, `shape`, `size`, `color`, `stroke`; `index`: the input line,
     /// point or label (in the order they were added; `None` for heads); `"label"`: `at`, `offset`,
     /// `anchor`, `text`, `size`, `color`; `"head"`: `points (3, 2)`, `color`).
-    /// `join`, one flag per face: the flat fragments of a flagged face painted one
-    /// after another in one fill with no mark between them come as one entry whose
-    /// points are the rings of their union (see [`joined`]).
+    /// `join`, one group per face (negative: none): the flat fragments of faces of one
+    /// group painted one after another in one fill with no mark between them come as
+    /// one entry whose points are the rings of their union (see [`joined`]); the faces
+    /// of a group must not overlap (a polygon's triangles, the faces of one region).
     #[pyo3(signature = (sort=None, arith=None, seams=limn::DEFAULT_SEAMS, join=None))]
     fn paint_with_marks<'py>(
         &self,
@@ -585,7 +585,7 @@ impl PyScene {
         sort: Option<&str>,
         arith: Option<&str>,
         seams: f64,
-        join: Option<PyReadonlyArray1<'py, bool>>,
+        join: Option<PyReadonlyArray1<'py, i64>>,
     ) -> PyResult<(Vec<Painted<'py>>, Vec<Bound<'py, PyDict>>)> {
         let mut view = self.view.clone();
         order_names(&mut view, sort, arith, None)?;
@@ -612,7 +612,7 @@ impl PyScene {
                 let flags = flags.as_slice().map_err(value_error)?.to_vec();
                 if flags.len() != self.scene.faces.len() {
                     return Err(value_error(format!(
-                        "join has {} flags for {} faces",
+                        "join has {} groups for {} faces",
                         flags.len(),
                         self.scene.faces.len()
                     )));

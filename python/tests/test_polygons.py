@@ -309,7 +309,7 @@ def test_joined_pieces_of_a_face_are_the_outline_of_their_union():
     apart, _ = s.paint_with_marks(seams=0)
     pieces = [p for p in apart if p[0] == 0]
     assert len(pieces) > 1
-    together, marks = s.paint_with_marks(seams=0, join=np.array([True, False]))
+    together, marks = s.paint_with_marks(seams=0, join=np.array([0, -1]))
     assert marks == []
     (entry,) = [p for p in together if p[0] == 0]
     rings = entry[1]
@@ -324,5 +324,21 @@ def test_joined_pieces_of_a_face_are_the_outline_of_their_union():
     assert abs(_shoelace(rings[0])) == pytest.approx(want, abs=1e-3)
     # The square is not flagged: it comes as it is.
     assert [type(p[1]) for p in together if p[0] == 1] == [np.ndarray]
-    with pytest.raises(ValueError, match="join has 1 flags for 2 faces"):
-        s.paint_with_marks(join=np.array([True]))
+    with pytest.raises(ValueError, match="join has 1 groups for 2 faces"):
+        s.paint_with_marks(join=np.array([0]))
+
+
+def test_joined_faces_of_one_group_are_the_outline_of_their_union():
+    # A translucent square as two triangles (faces 0 and 1, one group), and a triangle
+    # beside it in no group.
+    v = np.array([(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (3, 0, 0), (4, 0, 0), (4, 1, 0)], float)
+    faces = np.array([0, 1, 2, 0, 2, 3, 4, 5, 6])
+    s = limn.Scene()
+    s.add_mesh(v, faces, counts=[3, 3, 3], colors=np.array([[0.8, 0.3, 0.2, 0.5]] * 3))
+    s.set_camera(eye=(2.0, 1.0, 20.0), target=(2.0, 1.0, 0.0), size=(320, 160))
+    apart, _ = s.paint_with_marks(seams=0)
+    assert sorted(p[0] for p in apart) == [0, 1, 2]
+    together, _ = s.paint_with_marks(seams=0, join=np.array([7, 7, -1]))
+    assert len(together) == 2
+    (square,) = [p for p in together if isinstance(p[1], list)]
+    assert square[0] in (0, 1) and len(square[1]) == 1 and len(square[1][0]) == 4
