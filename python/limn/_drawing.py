@@ -45,6 +45,57 @@ def draw_marker(renderer: Any, point: Point, xy: Tuple[float, float]) -> None:
     gc.restore()
 
 
+def same_marker_run(a: Point, b: Point) -> bool:
+    """Whether markers ``a`` and ``b`` can be drawn in one collection: the same path
+    and clip, fills both shown or both not, edges both shown or both not."""
+    return (
+        a.path is b.path
+        and a.clip is b.clip
+        and (a.face[3] > 0) == (b.face[3] > 0)
+        and (a.edge[3] > 0) == (b.edge[3] > 0)
+    )
+
+
+def draw_markers(renderer: Any, points: List[Point], xys: List[Tuple[float, float]]) -> None:
+    """A run of visible markers painted one after another (``same_marker_run`` holds for
+    each with the first), drawn as matplotlib draws a scatter: one path collection, so
+    the backend may write the marker's path once and place it at every anchor (SVG
+    ``<use>``, a PDF form). Each marker keeps its own size, colours and edge width."""
+    from matplotlib.transforms import Affine2D, IdentityTransform
+
+    if len(points) == 1:
+        draw_marker(renderer, points[0], xys[0])
+        return
+    first = points[0]
+    scales = np.array([p.scale for p in points], dtype=float)
+    if (scales == scales[0]).all():
+        transforms = Affine2D().scale(scales[0]).get_matrix()[None]
+    else:
+        transforms = np.array([Affine2D().scale(s).get_matrix() for s in scales])
+    faces = np.array([p.face for p in points], dtype=float) if first.face[3] > 0 else []
+    shown = first.edge[3] > 0
+    edges = np.array([p.edge for p in points], dtype=float) if shown else []
+    widths = [p.edge_width if shown else 0.0 for p in points]
+    gc = renderer.new_gc()
+    gc.set_clip_rectangle(first.clip)
+    renderer.draw_path_collection(
+        gc,
+        IdentityTransform(),
+        [marker_path(first.path)],
+        transforms,
+        np.asarray(xys, dtype=float),
+        IdentityTransform(),
+        faces,
+        edges,
+        widths,
+        [(0, None)],
+        [True],
+        [None],
+        "screen",
+    )
+    gc.restore()
+
+
 def marker_path(path: Any) -> Any:
     from matplotlib.markers import MarkerStyle
 

@@ -61,8 +61,17 @@ import numpy as np
 
 from . import Scene
 from ._axes_box import axis_lines, grid_lines, inside_box, panes
-from ._content import Line, Marks, Polygons
-from ._drawing import draw_line, draw_marker, draw_polygon, draw_polygons, draw_text, marker_reach
+from ._content import Line, Marks, Point, Polygons
+from ._drawing import (
+    draw_line,
+    draw_marker,
+    draw_markers,
+    draw_polygon,
+    draw_polygons,
+    draw_text,
+    marker_reach,
+    same_marker_run,
+)
 from ._layers import under_axes
 
 __all__ = ["savefig"]
@@ -105,6 +114,30 @@ class _Item(NamedTuple):
     background: bool
     """Part of the axes' box: a pane, its outline, a grid line or an axis line."""
     draw: Callable[[Any], None]
+    marker: Optional[Tuple[Point, Tuple[float, float]]] = None
+    """A marker's point and display anchor (drawn with the markers next to it)."""
+
+
+def _draw_items(renderer: Any, items: List[_Item]) -> None:
+    """Draws ``items`` in order; a run of markers that can share a path collection
+    (``same_marker_run``) is drawn as one, as matplotlib draws a scatter."""
+    i = 0
+    while i < len(items):
+        it = items[i]
+        if it.marker is None:
+            it.draw(renderer)
+            i += 1
+            continue
+        j = i + 1
+        while (
+            j < len(items)
+            and items[j].marker is not None
+            and same_marker_run(it.marker[0], items[j].marker[0])
+        ):
+            j += 1
+        run = [items[k].marker for k in range(i, j)]
+        draw_markers(renderer, [m[0] for m in run], [m[1] for m in run])
+        i = j
 
 
 def _segments(disp: np.ndarray) -> List[np.ndarray]:
@@ -175,9 +208,7 @@ class _Limn3D:
             np.array([it.pad for it in items], dtype=float),
             np.array([it.background for it in items], dtype=bool),
         )
-        for it, u in zip(items, under):
-            if u:
-                it.draw(renderer)
+        _draw_items(renderer, [it for it, u in zip(items, under) if u])
         if self.draws_axes:
             # Ticks, tick labels and axis labels; the axis lines are limn's.
             for axis in self.ax._axis_map.values():
@@ -190,8 +221,7 @@ class _Limn3D:
         self.later = [it for it, u in zip(items, under) if not u]
 
     def draw_front(self, renderer: Any) -> None:
-        for it in self.later:
-            it.draw(renderer)
+        _draw_items(renderer, self.later)
         self.later = []
 
     def _content(self, p2p: float, M: np.ndarray) -> Tuple[Polygons, Marks]:
@@ -325,7 +355,13 @@ class _Limn3D:
                     xy = (x * sx, H - y * sy)
                     reach = marker_reach(pt.path) * pt.scale + pt.edge_width * p2p
                     items.append(
-                        _Item([np.array([xy])], reach, False, partial(draw_marker, point=pt, xy=xy))
+                        _Item(
+                            [np.array([xy])],
+                            reach,
+                            False,
+                            partial(draw_marker, point=pt, xy=xy),
+                            (pt, xy),
+                        )
                     )
                 elif mk["kind"] == "label" and mk["index"] is not None:
                     text = extra.texts[mk["index"]]

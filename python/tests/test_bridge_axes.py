@@ -2,6 +2,8 @@
 in limn's scene, 3D texts, depth-shaded scatter points and the other polygon plots,
 each checked on the rasterised file against matplotlib's own export of the figure."""
 
+import re
+
 import matplotlib as mpl
 import numpy as np
 import pytest
@@ -331,4 +333,22 @@ def test_scatter_styles_are_drawn_as_matplotlib_draws_them(tmp_path, style):
     mine, theirs = both(fig, tmp_path, zoom=2.0)
     diff = np.abs(mine[:, :, :3] - theirs[:, :, :3]).max(axis=2)
     assert (diff > 0.1).sum() < 0.0005 * diff.size, (diff > 0.1).sum()
+    plt.close(fig)
+
+
+def test_a_scatter_is_written_as_matplotlib_writes_it_its_marker_once(tmp_path):
+    # Markers painted one after another go to the backend as one path collection: the
+    # SVG holds the marker's path once and places it at every point, as matplotlib's own
+    # export does, with each point's own depth-shaded colour.
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")
+    ax.scatter(*np.random.default_rng(1).uniform(-1, 1, (3, 40)), s=30)
+    fig.savefig(tmp_path / "mpl.svg")
+    lm.savefig(fig, tmp_path / "limn.svg")
+    mine, theirs = (tmp_path / "limn.svg").read_text(), (tmp_path / "mpl.svg").read_text()
+    uses = lambda svg: len(re.findall(r'<use xlink:href="#C', svg))  # noqa: E731
+    assert uses(mine) == uses(theirs) == 40
+    assert len(mine) < 1.2 * len(theirs), (len(mine), len(theirs))
+    opacities = set(re.findall(r"fill-opacity: ([0-9.]+)", mine))
+    assert len(opacities) > 10  # depth shading kept per point
     plt.close(fig)
