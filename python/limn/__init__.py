@@ -495,6 +495,7 @@ class Scene:
         arith: Optional[str] = None,
         seams: float = 1.0,
         join: Any = None,
+        stroked: Any = None,
     ) -> Tuple[list, list]:
         """``paint()``'s polygons and the visible lines, markers, labels and arrow heads
         as dicts in paint order. Each has ``before`` (paint it before that polygon; the
@@ -512,7 +513,16 @@ class Scene:
         are a list of rings (each (k, 2)): the outline of their union (what they fill
         together under the nonzero rule, on a grid of a millionth of a pixel), outer
         rings turned one way and holes the other, with no original edges; its face is
-        the first fragment's."""
+        the first fragment's.
+
+        ``stroked``: a flag per face (an array of ``face_count`` booleans) for faces whose
+        every original edge the caller strokes, opaque and at least ``seams`` pixels wide,
+        right after the face's fill: those edges get no seam flap, as the stroke covers
+        the seam."""
         if join is not None:
             join = np.ascontiguousarray(join, dtype=np.int64).reshape(-1)
-        return self._s.paint_with_marks(sort=sort, arith=arith, seams=seams, join=join)
+        if stroked is not None:
+            stroked = np.ascontiguousarray(stroked, dtype=bool).reshape(-1)
+        return self._s.paint_with_marks(
+            sort=sort, arith=arith, seams=seams, join=join, stroked=stroked
+        )

@@ -119,6 +119,7 @@ class Scene:
         arith: Optional[str] = ...,
         seams: float = ...,
         join: Optional[npt.NDArray[np.int64]] = ...,
+        stroked: Optional[npt.NDArray[np.bool_]] = ...,
     ) -> Tuple[
         List[
             Tuple[

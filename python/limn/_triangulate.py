@@ -232,9 +232,11 @@ def view_triangles(
         ks = np.nonzero(sizes == n)[0]
         group = np.stack([corners[k] for k in ks])
         flat[ks] = planar_all(group)
-        if 5 <= n <= _FAN_MAX:
-            rows = starts[ks][:, None] + np.arange(n)[None, :]
-            fan[ks] = fan_corner_all(seen[rows])
+        # A fan only for polygons that do not go whole (planar ones do).
+        bent = ks[~flat[ks]]
+        if 5 <= n <= _FAN_MAX and len(bent):
+            rows = starts[bent][:, None] + np.arange(n)[None, :]
+            fan[bent] = fan_corner_all(seen[rows])
     fan_edges = {}
     for k, p in enumerate(corners):
         n = len(p)

@@ -312,7 +312,18 @@ class _Limn3D:
         join = (
             np.where(stroked[owner], -1, tiling[owner]) if len(owner) else np.zeros(0, np.int64)
         )
-        polygons, marks = scene.paint_with_marks(sort=self.sort, arith=self.arith, join=join)
+        # Faces whose every edge matplotlib strokes, opaque and at least a seam flap wide
+        # (one of limn's pixels), right after the fill (a surface edged in its own
+        # colour): the stroke covers the seam, so those edges get no flap.
+        if len(owner):
+            covering = stroked & (ec[:, 3] >= 1) & (lw * p2p >= max(sx, sy))
+            whole = np.fromiter((o.all() for o in own), dtype=bool, count=len(own))
+            closed = covering[owner] & whole
+        else:
+            closed = np.zeros(0, dtype=bool)
+        polygons, marks = scene.paint_with_marks(
+            sort=self.sort, arith=self.arith, join=join, stroked=closed
+        )
         disp_of = lambda pts: np.c_[pts[:, 0] * sx, H - pts[:, 1] * sy]  # noqa: E731
         # Markers and texts between the same two polygons are painted far to near, as
         # mplot3d paints a scatter (limn's picture keeps them in input order).

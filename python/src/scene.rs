@@ -8,7 +8,10 @@ use std::path::PathBuf;
 use glam::DVec3;
 use limn::{Collected, Input, Request, SceneOptions, ViewOptions};
 use limn_depthsort::order_with_marks;
-use limn_paint::{picture_with_marks, Mark, MarkKind, PaintFragment, Style};
+use limn_paint::{
+    add_seam_flaps_beside_strokes, picture_with_marks_unflapped, Mark, MarkKind, PaintFragment,
+    Style,
+};
 use limn_scene::{Light, LightKind, Scene};
 use numpy::{PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::prelude::*;
@@ -565,7 +568,7 @@ impl PyScene {
         arith: Option<&str>,
         seams: f64,
     ) -> PyResult<Vec<Painted<'py>>> {
-        Ok(self.paint_with_marks(py, sort, arith, seams, None)?.0)
+        Ok(self.paint_with_marks(py, sort, arith, seams, None, None)?.0)
     }
 
     /// [`PyScene::paint`] and the visible marks: a list of dicts with `before` (the
@@ -578,7 +581,10 @@ impl PyScene {
     /// group painted one after another in one fill with no mark between them come as
     /// one entry whose points are the rings of their union (see [`joined`]); the faces
     /// of a group must not overlap (a polygon's triangles, the faces of one region).
-    #[pyo3(signature = (sort=None, arith=None, seams=limn::DEFAULT_SEAMS, join=None))]
+    /// `stroked`, one flag per face: the caller strokes every original edge of the face,
+    /// opaque and at least `seams` pixels wide, right after its fill; such edges get no
+    /// seam flap (the stroke covers the seam).
+    #[pyo3(signature = (sort=None, arith=None, seams=limn::DEFAULT_SEAMS, join=None, stroked=None))]
     fn paint_with_marks<'py>(
         &self,
         py: Python<'py>,
@@ -586,6 +592,7 @@ impl PyScene {
         arith: Option<&str>,
         seams: f64,
         join: Option<PyReadonlyArray1<'py, i64>>,
+        stroked: Option<PyReadonlyArray1<'py, bool>>,
     ) -> PyResult<(Vec<Painted<'py>>, Vec<Bound<'py, PyDict>>)> {
         let mut view = self.view.clone();
         order_names(&mut view, sort, arith, None)?;
@@ -605,7 +612,22 @@ impl PyScene {
             seams,
             ..Style::default()
         };
-        let mut pic = picture_with_marks(&self.scene, &mut ordered, &marks, &style);
+        let stroked = match &stroked {
+            None => Vec::new(),
+            Some(flags) => {
+                let flags = flags.as_slice().map_err(value_error)?.to_vec();
+                if flags.len() != self.scene.faces.len() {
+                    return Err(value_error(format!(
+                        "stroked has {} flags for {} faces",
+                        flags.len(),
+                        self.scene.faces.len()
+                    )));
+                }
+                flags
+            }
+        };
+        let mut pic = picture_with_marks_unflapped(&self.scene, &mut ordered, &marks, &style);
+        add_seam_flaps_beside_strokes(&mut pic, &style, &stroked);
         let join = match &join {
             None => Vec::new(),
             Some(flags) => {

@@ -352,3 +352,20 @@ def test_a_scatter_is_written_as_matplotlib_writes_it_its_marker_once(tmp_path):
     opacities = set(re.findall(r"fill-opacity: ([0-9.]+)", mine))
     assert len(opacities) > 10  # depth shading kept per point
     plt.close(fig)
+
+
+def test_a_surface_edged_in_its_own_colours_gets_no_seam_flaps(tmp_path):
+    # plot_surface with face colours strokes each quad in its own colour: the strokes
+    # cover the seams, so the bridge writes the quads as matplotlib does, without flaps
+    # (which doubled the file), and the picture stays matplotlib's.
+    fig = plt.figure(figsize=(4, 3))
+    ax = fig.add_subplot(projection="3d")
+    x, y = np.meshgrid(np.linspace(-1, 1, 25), np.linspace(-1, 1, 25))
+    colours = plt.cm.viridis((x + y + 2) / 4)
+    ax.plot_surface(x, y, 0.3 * x - 0.2 * y, facecolors=colours, shade=False)
+    mine, theirs = both(fig, tmp_path, zoom=2.0)
+    diff = np.abs(mine[:, :, :3] - theirs[:, :, :3]).max(axis=2)
+    assert (diff > 0.1).sum() < 0.002 * diff.size, (diff > 0.1).sum()
+    size = lambda name: (tmp_path / name).stat().st_size  # noqa: E731
+    assert size("limn.svg") < 1.1 * size("mpl.svg"), (size("limn.svg"), size("mpl.svg"))
+    plt.close(fig)

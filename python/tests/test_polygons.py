@@ -342,3 +342,23 @@ def test_joined_faces_of_one_group_are_the_outline_of_their_union():
     assert len(together) == 2
     (square,) = [p for p in together if isinstance(p[1], list)]
     assert square[0] in (0, 1) and len(square[1]) == 1 and len(square[1][0]) == 4
+
+
+def test_edges_the_caller_strokes_get_no_seam_flap():
+    # Two opaque squares of different colours sharing an edge, seen face on: the one
+    # painted first gets a flap into the other (joined into its outline: six corners),
+    # unless the caller strokes the edges of either.
+    v = np.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (2, 0, 0), (2, 1, 0)], float)
+    faces = np.array([0, 1, 2, 3, 1, 4, 5, 2])
+    colors = np.array([[0.8, 0.3, 0.2, 1.0], [0.2, 0.3, 0.8, 1.0]])
+    s = limn.Scene()
+    s.add_mesh(v, faces, counts=[4, 4], colors=colors)
+    s.set_camera(eye=(1.0, 0.5, 20.0), target=(1.0, 0.5, 0.0), size=(320, 160))
+    corners = lambda drawn: sorted(len(p[1]) for p in drawn)  # noqa: E731
+    assert corners(s.paint_with_marks()[0]) == [4, 6]
+    assert corners(s.paint_with_marks(stroked=np.array([False, False]))[0]) == [4, 6]
+    for stroked in ([True, False], [False, True], [True, True]):
+        drawn, _ = s.paint_with_marks(stroked=np.array(stroked))
+        assert corners(drawn) == [4, 4], stroked
+    with pytest.raises(ValueError, match="stroked has 1 flags for 2 faces"):
+        s.paint_with_marks(stroked=np.array([True]))

@@ -5,7 +5,7 @@
 use limn_depthsort::{Ordered, VisibleMarks};
 use limn_scene::Scene;
 
-use crate::seams::seam_flaps_indexed;
+use crate::seams::seam_flaps_beside_strokes;
 use crate::{
     picture, ArrowHead, Label, LinePiece, LineStyle, Mark, MarkKind, Marker, Picture, Style,
 };
@@ -164,13 +164,21 @@ pub fn picture_with_marks_unflapped(
 /// Puts the seam flaps `style` asks for into a picture of [`picture_with_marks_unflapped`]
 /// (see [`crate::seam_flaps`]), its marks moved with the fragments they follow.
 pub fn add_seam_flaps(pic: &mut Picture, style: &Style) {
+    add_seam_flaps_beside_strokes(pic, style, &[]);
+}
+
+/// [`add_seam_flaps`] for a caller that strokes every original edge of the faces
+/// `stroked` marks, opaque and at least `style.seams` wide, right after each fill: no
+/// flap along those edges (see [`seam_flaps_beside_strokes`]).
+pub fn add_seam_flaps_beside_strokes(pic: &mut Picture, style: &Style, stroked: &[bool]) {
     if !(style.seams.is_finite() && style.seams > 0.0) {
         return;
     }
-    let (frags, at) = seam_flaps_indexed(
+    let (frags, at) = seam_flaps_beside_strokes(
         std::mem::take(&mut pic.fragments),
         style.seams,
         style.flap_join(),
+        stroked,
     );
     pic.fragments = frags;
     let total = pic.fragments.len();

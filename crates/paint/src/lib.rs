@@ -115,7 +115,8 @@ mod texturing;
 mod tikz;
 
 pub use annotate::{
-    add_seam_flaps, head_length, marker_stroke, picture_with_marks, picture_with_marks_unflapped,
+    add_seam_flaps, add_seam_flaps_beside_strokes, head_length, marker_stroke, picture_with_marks,
+    picture_with_marks_unflapped,
 };
 pub use compose::{picture, Style};
 pub use covers::covers;
@@ -131,7 +132,7 @@ pub use model::{
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};
 pub use png::{PngOptions, PngPainter};
-pub use seams::{seam_flaps, seam_flaps_indexed, FlapJoin};
+pub use seams::{seam_flaps, seam_flaps_beside_strokes, seam_flaps_indexed, FlapJoin};
 pub use svg::{SvgOptions, SvgPainter};
 pub use texture_pieces::{affine_pieces, AffinePiece, MAX_PERSPECTIVE_ERROR};
 pub use tikz::{TikzOptions, TikzPainter, MAX_TIKZ_SIDE, MAX_TIKZ_STROKE};

@@ -74,9 +74,25 @@ pub enum FlapJoin {
 /// fragment went in the output (so that marks placed among the fragments can follow
 /// them).
 pub fn seam_flaps_indexed(
+    fragments: Vec<PaintFragment>,
+    width: f64,
+    join: FlapJoin,
+) -> (Vec<PaintFragment>, Vec<usize>) {
+    seam_flaps_beside_strokes(fragments, width, join, &[])
+}
+
+/// [`seam_flaps_indexed`] for a caller that strokes the original edges of some faces:
+/// `stroked[k]` says that every original edge of face `k` is stroked, opaque and at
+/// least `width` wide, right after the fragment's fill. Such an edge gets no flap,
+/// whether the earlier or the later fragment along it strokes it: the stroke covers
+/// the pixels the edge crosses, so the background cannot show through there (a
+/// matplotlib surface whose polygons are edged in their own colour). Faces beyond
+/// `stroked`'s length are not stroked.
+pub fn seam_flaps_beside_strokes(
     mut fragments: Vec<PaintFragment>,
     width: f64,
     join: FlapJoin,
+    stroked: &[bool],
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let later = LaterNeighbours::new(&fragments);
     let across = Across::new(&fragments);
@@ -93,7 +109,8 @@ pub fn seam_flaps_indexed(
             for (k, f) in block.iter().enumerate() {
                 let i = c * FRAGMENTS_PER_TASK + k;
                 let start = flaps.len();
-                flaps_after(&fragments, i, f, (&later, &across), width, &mut flaps);
+                let near = (&later, &across, stroked);
+                flaps_after(&fragments, i, f, near, width, &mut flaps);
                 if join == FlapJoin::Joined && flaps.len() > start {
                     if let Some(outline) = joined_outline(f, &flaps[start..]) {
                         flaps.truncate(start);
@@ -298,7 +315,7 @@ fn flaps_after(
     fragments: &[PaintFragment],
     i: usize,
     f: &PaintFragment,
-    (later, across): (&LaterNeighbours, &Across),
+    (later, across, stroked): (&LaterNeighbours, &Across, &[bool]),
     width: f64,
     out: &mut Vec<(usize, PaintFragment)>,
 ) {
@@ -313,6 +330,9 @@ fn flaps_after(
     let mut given_whole: Vec<usize> = Vec::new();
     for e in 0..n {
         let (a, b) = (f.points[e], f.points[(e + 1) % n]);
+        if strokes_edge(stroked, f, e) {
+            continue;
+        }
         // The first fragment of another face painted after this one.
         let Some(j) = later.of(i, e) else {
             // Else later pieces of its own face and colour it meets at T-junctions: a
@@ -333,6 +353,14 @@ fn flaps_after(
             continue;
         };
         if given_whole.contains(&j) {
+            continue;
+        }
+        let q = &fragments[j].points;
+        let m = q.len();
+        if (0..m).any(|k| {
+            let (u, v) = (q[k], q[(k + 1) % m]);
+            ((u == a && v == b) || (u == b && v == a)) && strokes_edge(stroked, &fragments[j], k)
+        }) {
             continue;
         }
         let Some(points) = flap(&fragments[j].points, a, b, width) else {
@@ -375,6 +403,13 @@ fn flaps_after(
             },
         ));
     }
+}
+
+/// Whether the caller strokes edge `e` of fragment `f`: an original edge of a face
+/// `stroked` marks (see [`seam_flaps_beside_strokes`]).
+fn strokes_edge(stroked: &[bool], f: &PaintFragment, e: usize) -> bool {
+    stroked.get(f.face as usize).copied().unwrap_or(false)
+        && f.original_edges.get(e).copied().unwrap_or(false)
 }
 
 /// A flap of flat fragment `f` with corners `points`.
@@ -1299,5 +1334,33 @@ mod tests {
             "{}",
             joined[0].points.len()
         );
+    }
+
+    #[test]
+    fn an_edge_the_caller_strokes_gets_no_flap() {
+        // Two squares of different faces sharing the edge x = 10; the right one is
+        // painted later, so the left one gets a flap into it unless the edge is stroked.
+        let square = |x0: f64| vec![[x0, 0.0], [x0 + 10.0, 0.0], [x0 + 10.0, 10.0], [x0, 10.0]];
+        let mut left = PaintFragment::new(square(0.0), [1.0, 0.0, 0.0, 1.0]);
+        left.face = 0;
+        let mut right = PaintFragment::new(square(10.0), [0.0, 0.0, 1.0, 1.0]);
+        right.face = 1;
+        let flaps = |left: &PaintFragment, right: &PaintFragment, stroked: &[bool]| {
+            let frags = vec![left.clone(), right.clone()];
+            let (out, _) = seam_flaps_beside_strokes(frags, 1.0, FlapJoin::Separate, stroked);
+            out.iter().filter(|f| f.flap).count()
+        };
+        assert_eq!(flaps(&left, &right, &[]), 1);
+        assert_eq!(flaps(&left, &right, &[false, false]), 1);
+        // Stroked by the earlier fragment, or by the later one: no flap.
+        assert_eq!(flaps(&left, &right, &[true, false]), 0);
+        assert_eq!(flaps(&left, &right, &[false, true]), 0);
+        // A stroked face's edge that is not one of its own (a cut) is not stroked.
+        let mut cut = left.clone();
+        cut.original_edges = vec![true, false, true, true];
+        assert_eq!(flaps(&cut, &right, &[true, false]), 1);
+        let mut cut = right.clone();
+        cut.original_edges = vec![true, true, true, false];
+        assert_eq!(flaps(&left, &cut, &[false, true]), 1);
     }
 }
