@@ -238,8 +238,22 @@ def view_triangles(
             rows = starts[bent][:, None] + np.arange(n)[None, :]
             fan[bent] = fan_corner_all(seen[rows])
     fan_edges = {}
+    # Polygons that go whole with all their edges (most): no test per polygon below.
+    plain = ~(bowtie | ((reflex >= 0) & ~flat) | ((sizes >= 5) & ~flat))
+    if fixed is not None:
+        plain &= np.array([f is None for f in fixed], dtype=bool)
+    all_own = {}  # one read-only all-true array per corner count
     for k, p in enumerate(corners):
         n = len(p)
+        if plain[k]:
+            mine = all_own.get(n)
+            if mine is None:
+                mine = all_own[n] = np.ones(n, dtype=bool)
+                mine.flags.writeable = False
+            faces.append(p)
+            owner.append(k)
+            own.append(mine)
+            continue
         if fixed is not None and fixed[k] is not None:
             faces.append(p)
             owner.append(k)
