@@ -8,6 +8,7 @@
 //! then, however far a corner of the later fragment lies (a crossing computed from a
 //! corner 10¹² px away is off by 10⁻⁵ px, more than the edge band of a check).
 
+use std::collections::HashMap;
 use std::sync::atomic::{AtomicU32, Ordering};
 
 use rayon::prelude::*;
@@ -106,11 +107,13 @@ pub fn seam_flaps_beside_strokes(
             // and a half): growing by doubling wrote each block's flaps again into
             // fresh pages, and room never written is address space only.
             let (mut flaps, mut joined) = (Vec::with_capacity(2 * block.len()), Vec::new());
+            // What the block's flaps found out about the later fragments they go into.
+            let mut shapes = HashMap::new();
             for (k, f) in block.iter().enumerate() {
                 let i = c * FRAGMENTS_PER_TASK + k;
                 let start = flaps.len();
                 let near = (&later, &across, stroked);
-                flaps_after(&fragments, i, f, near, width, &mut flaps);
+                flaps_after(&fragments, i, f, near, (width, &mut shapes), &mut flaps);
                 if join == FlapJoin::Joined && flaps.len() > start {
                     if let Some(outline) = joined_outline(f, &flaps[start..]) {
                         flaps.truncate(start);
@@ -316,7 +319,7 @@ fn flaps_after(
     i: usize,
     f: &PaintFragment,
     (later, across, stroked): (&LaterNeighbours, &Across, &[bool]),
-    width: f64,
+    (width, shapes): (f64, &mut HashMap<usize, Shape>),
     out: &mut Vec<(usize, PaintFragment)>,
 ) {
     if !opaque(f) {
@@ -343,7 +346,7 @@ fn flaps_after(
                 }
                 let q = &fragments[j].points;
                 let (u, v) = (q[k], q[(k + 1) % q.len()]);
-                if let Some(points) = flap(q, u, v, width) {
+                if let Some(points) = flap_into(q, shapes.entry(j).or_default(), u, v, width) {
                     if points == *q {
                         given_whole.push(j);
                     }
@@ -357,13 +360,16 @@ fn flaps_after(
         }
         let q = &fragments[j].points;
         let m = q.len();
-        if (0..m).any(|k| {
-            let (u, v) = (q[k], q[(k + 1) % m]);
-            ((u == a && v == b) || (u == b && v == a)) && strokes_edge(stroked, &fragments[j], k)
-        }) {
+        if !stroked.is_empty()
+            && (0..m).any(|k| {
+                let (u, v) = (q[k], q[(k + 1) % m]);
+                ((u == a && v == b) || (u == b && v == a))
+                    && strokes_edge(stroked, &fragments[j], k)
+            })
+        {
             continue;
         }
-        let Some(points) = flap(&fragments[j].points, a, b, width) else {
+        let Some(points) = flap_into(q, shapes.entry(j).or_default(), a, b, width) else {
             continue;
         };
         if points == fragments[j].points {
@@ -607,6 +613,49 @@ pub(crate) fn flap(
     b: [f64; 2],
     width: f64,
 ) -> Option<Vec<[f64; 2]>> {
+    flap_into(poly, &mut Shape::default(), a, b, width)
+}
+
+/// What [`flap`] finds out about a later fragment, kept for its other flaps into the same
+/// fragment (a fragment meets a long later neighbour along many edges, and each flap
+/// asked the same questions of all its corners again): the way it turns, whether it is
+/// convex, and per corner whether it passes [`inside_edges`], each found when first
+/// needed.
+#[derive(Debug, Default)]
+pub(crate) struct Shape {
+    side: Option<Option<f64>>,
+    convex: Option<bool>,
+    corners_inside: Vec<Option<bool>>,
+}
+
+impl Shape {
+    /// [`orientation`] of `poly`.
+    fn side(&mut self, poly: &[[f64; 2]]) -> Option<f64> {
+        *self.side.get_or_insert_with(|| orientation(poly))
+    }
+
+    /// [`convex`] of `poly`, turning `side`.
+    fn convex(&mut self, poly: &[[f64; 2]], side: f64) -> bool {
+        *self.convex.get_or_insert_with(|| convex(poly, side))
+    }
+
+    /// [`inside_edges`] of `poly`'s corner `c`.
+    fn corner_inside(&mut self, poly: &[[f64; 2]], side: f64, c: usize) -> bool {
+        if self.corners_inside.len() != poly.len() {
+            self.corners_inside = vec![None; poly.len()];
+        }
+        *self.corners_inside[c].get_or_insert_with(|| inside_edges(poly, side, poly[c]))
+    }
+}
+
+/// [`flap`], with what is known of `poly` in `shape` (and what it finds out kept there).
+pub(crate) fn flap_into(
+    poly: &[[f64; 2]],
+    shape: &mut Shape,
+    a: [f64; 2],
+    b: [f64; 2],
+    width: f64,
+) -> Option<Vec<[f64; 2]>> {
     let m = poly.len();
     // The edge as `poly` runs along it, u → v.
     let k = (0..m).find(|&k| {
@@ -620,7 +669,7 @@ pub(crate) fn flap(
         return None;
     }
     // The way `poly` turns: its inside lies on that side of each of its edges.
-    let side = orientation(poly)?;
+    let side = shape.side(poly)?;
     // The normal of u → v towards the inside: turn(u, v, x) = (x − u) · (−d₁, d₀).
     let nrm = [-side * d[1] / len, side * d[0] / len];
     // Keep the points with distance(x) = nrm·(x − a) ≤ width.
@@ -631,35 +680,57 @@ pub(crate) fn flap(
         .fold([0.0, 0.0], |s, p| [s[0] + p[0], s[1] + p[1]]);
     let c = [c[0] / m as f64, c[1] / m as f64];
     let mut out = Vec::with_capacity(m + 2);
-    // Per point of `out`: whether it is a crossing (not a corner of `poly`).
-    let mut crossing = Vec::with_capacity(m + 2);
+    // Per point of `out`: the corner of `poly` it is, or `None` for a crossing.
+    let mut corner = Vec::with_capacity(m + 2);
     let mut crossings_inside = true;
     for k in 0..m {
         let (p, q) = (poly[k], poly[(k + 1) % m]);
         let (dp, dq) = (dist(p), dist(q));
         if dp <= 0.0 {
             out.push(p);
-            crossing.push(false);
+            corner.push(Some(k));
         }
         if (dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0) {
             let t = dp / (dp - dq);
             let x = [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];
-            let (x, inside) = inside_towards(poly, side, (p, q), x, c);
+            // In a convex `poly`, a point in the triangle of `p`, `q` and a corner across
+            // passes every edge (the triangle lies in the half-plane of each, as its
+            // corners do): three exact turns instead of one per edge.
+            let r = poly[(k + 1 + m / 2) % m];
+            let (x, inside) = if shape.convex(poly, side)
+                && [(p, q), (q, r), (r, p)]
+                    .iter()
+                    .all(|&(u, v)| turn(u, v, x) * side >= 0.0)
+            {
+                (x, true)
+            } else {
+                inside_towards(poly, side, (p, q), x, c)
+            };
             crossings_inside &= inside;
             out.push(x);
             // A crossing rounded onto an end of its edge is that corner.
-            crossing.push(x != p && x != q);
+            corner.push(if x == p {
+                Some(k)
+            } else if x == q {
+                Some((k + 1) % m)
+            } else {
+                None
+            });
         }
     }
     if out.len() < 3 || !has_area(&out) {
         return None;
     }
     if out == poly
-        || (crossings_inside && convex(poly, side))
-        || out.iter().all(|&x| inside_edges(poly, side, x))
+        || (crossings_inside && shape.convex(poly, side))
+        || out.iter().zip(&corner).all(|(&x, &c)| match c {
+            Some(c) => shape.corner_inside(poly, side, c),
+            None => inside_edges(poly, side, x),
+        })
     {
         return Some(out);
     }
+    let crossing = corner.iter().map(Option::is_none);
     // Only `a`, `b` and the crossings (the corners that are not corners of `poly`), these
     // drawn towards their middle if the chord between them cuts a corner of `poly` off.
     let q: Vec<([f64; 2], bool)> = out
