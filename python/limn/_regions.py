@@ -59,7 +59,7 @@ def outlines(verts: np.ndarray, codes) -> List[np.ndarray]:
         elif c in (_CURVE3, _CURVE4):
             k = 2 if c == _CURVE3 else 3
             ctrl = np.vstack([ring[-1:] or [verts[i]], verts[i : i + k]])
-            ring.extend(_bezier(ctrl, _STEPS[int(c)])[1:])
+            ring.extend(_bezier(ctrl)[1:])
             i += k
         else:  # CLOSEPOLY, STOP
             if ring:
@@ -71,14 +71,23 @@ def outlines(verts: np.ndarray, codes) -> List[np.ndarray]:
     return rings
 
 
-def _bezier(ctrl: np.ndarray, steps: int) -> np.ndarray:
-    """Points (steps + 1, 3) along the Bézier curve of control points ``ctrl``."""
+def _bernstein(steps: int, degree: int) -> np.ndarray:
+    """The Bernstein weights (steps + 1, degree + 1) of a Bézier curve of ``degree`` at
+    ``steps + 1`` evenly spaced parameters from 0 to 1."""
     t = np.linspace(0.0, 1.0, steps + 1)[:, None]
-    if len(ctrl) == 3:
-        a, b, c = ctrl
-        return (1 - t) ** 2 * a + 2 * (1 - t) * t * b + t**2 * c
-    a, b, c, d = ctrl
-    return (1 - t) ** 3 * a + 3 * (1 - t) ** 2 * t * b + 3 * (1 - t) * t**2 * c + t**3 * d
+    k = np.arange(degree + 1)[None, :]
+    binom = np.array([1, 2, 1]) if degree == 2 else np.array([1, 3, 3, 1])
+    return binom[None, :] * t**k * (1 - t) ** (degree - k)
+
+
+_WEIGHTS = {3: _bernstein(_STEPS[_CURVE3], 2), 4: _bernstein(_STEPS[_CURVE4], 3)}
+"""Per number of control points, the weights of the points ``_bezier`` takes."""
+
+
+def _bezier(ctrl: np.ndarray) -> np.ndarray:
+    """Points along the Bézier curve of control points ``ctrl`` (three or four), from its
+    start to its end: ``_STEPS`` chords."""
+    return _WEIGHTS[len(ctrl)] @ ctrl
 
 
 def _clean(ring: np.ndarray) -> np.ndarray:
@@ -88,13 +97,24 @@ def _clean(ring: np.ndarray) -> np.ndarray:
     outline, fewer corners."""
     if len(ring) < 2:
         return ring
-    same = (ring == np.roll(ring, -1, axis=0)).all(axis=1)
+    nxt = np.concatenate([ring[1:], ring[:1]])
+    same = (ring == nxt).all(axis=1)
     ring = ring[~same] if not same.all() else ring[:1]
     if len(ring) < 4:
         return ring
-    into = ring - np.roll(ring, 1, axis=0)
-    out = np.roll(ring, -1, axis=0) - ring
-    straight = (np.cross(into, out) == 0).all(axis=1) & ((into * out).sum(axis=1) > 0)
+    nxt = np.concatenate([ring[1:], ring[:1]])
+    into = ring - np.concatenate([ring[-1:], ring[:-1]])
+    out = nxt - ring
+    # Exactly straight on: the cross product of the steps in and out is zero.
+    cross = np.stack(
+        [
+            into[:, 1] * out[:, 2] - into[:, 2] * out[:, 1],
+            into[:, 2] * out[:, 0] - into[:, 0] * out[:, 2],
+            into[:, 0] * out[:, 1] - into[:, 1] * out[:, 0],
+        ],
+        axis=1,
+    )
+    straight = (cross == 0).all(axis=1) & ((into * out).sum(axis=1) > 0)
     return ring[~straight] if (~straight).sum() >= 3 else ring
 
 
