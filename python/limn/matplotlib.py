@@ -414,6 +414,16 @@ class _Limn3D:
             H,
         )
         own_edges_of = dict(zip(cut, own_edges))
+        # The polygons drawn whole, projected at once.
+        wholes = sorted({int(owner[polygons[i][0]]) for i in np.nonzero(lead >= 0)[0]})
+        whole_disp = {}
+        if wholes:
+            c = _project(np.concatenate([polys.corners[k] for k in wholes]), m)
+            d = np.column_stack([(c[:, 0] + 1) / 2 * wl * sx, H - (1 - c[:, 1]) / 2 * hl * sy])
+            cuts = np.cumsum([len(polys.corners[k]) for k in wholes])[:-1]
+            whole_disp = dict(zip(wholes, np.split(d, cuts)))
+        # Per polygon: what a run of its fragments must share besides the fill.
+        style_of: dict = {}
         for i, (face, pts, fill, orig) in enumerate(polygons):
             add_marks(i)
             k = int(owner[face])
@@ -422,10 +432,7 @@ class _Limn3D:
             if lead[i] >= 0:
                 flush()
                 # Every fragment of this polygon, one after another: the polygon itself.
-                c = _project(polys.corners[k], m)
-                disp = np.column_stack(
-                    [(c[:, 0] + 1) / 2 * wl * sx, H - (1 - c[:, 1]) / 2 * hl * sy]
-                )
+                disp = whole_disp[k]
                 parts = [disp_all[ends[j] : ends[j + 1]] for j in range(i, lead[i] + 1)]
                 edged = lw[k] > 0 and ec[k][3] > 0
                 items.append(
@@ -455,15 +462,23 @@ class _Limn3D:
             edges, whole = None, False
             if edged:
                 flags = np.asarray(orig, dtype=bool)
-                j = np.nonzero(flags)[0]
-                edges = np.stack([disp[j], disp[(j + 1) % len(disp)]], axis=1)
                 whole = bool(flags.all())
+                if whole:
+                    edges = _outline(disp)
+                else:
+                    j = np.nonzero(flags)[0]
+                    edges = np.empty((len(j), 2, 2))
+                    edges[:, 0], edges[:, 1] = disp[j], disp[(j + 1) % len(disp)]
             # Only fragments of one tiling join (of one polygon, or of the faces filling
             # one path): they do not overlap (a translucent one is not blended twice),
             # an edge keeps its place between the fills of other polygons, and the
             # outlines limn joins with their seam flaps overlap only where flaps of one
             # tiling meet.
-            key = (tuple(fill), polys.tiling[k], polys.background[k], tuple(ec[k]), float(lw[k]))
+            style = style_of.get(k)
+            if style is None:
+                style = (polys.tiling[k], polys.background[k], tuple(ec[k]), float(lw[k]))
+                style_of[k] = style
+            key = (tuple(fill), *style)
             if run and (run[0].key != key or run[0].clip is not polys.clip[k]):
                 flush()
             if not run:
@@ -528,7 +543,11 @@ class _Run:
 
 def _outline(disp: np.ndarray) -> np.ndarray:
     """A polygon's edges as segments (n, 2, 2)."""
-    return np.stack([disp, np.roll(disp, -1, axis=0)], axis=1)
+    edges = np.empty((len(disp), 2, 2))
+    edges[:, 0] = disp
+    edges[:, 1, :][:-1] = disp[1:]
+    edges[-1, 1] = disp[0]
+    return edges
 
 
 def _whole_runs(
