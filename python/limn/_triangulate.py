@@ -83,14 +83,18 @@ def fan_corner_all(q: np.ndarray) -> np.ndarray:
     best = np.full(m, -1)
     with np.errstate(invalid="ignore"):
         for c in range(n):
-            o = q[:, c : c + 1, :]
-            a = q[:, (c + np.arange(1, n - 1)) % n, :] - o
-            b = q[:, (c + np.arange(2, n)) % n, :] - o
+            # Only the outlines without a corner yet (most have one at corner 0).
+            rows = np.nonzero(best < 0)[0]
+            if not len(rows):
+                break
+            o = q[rows, c : c + 1, :]
+            a = q[rows][:, (c + np.arange(1, n - 1)) % n, :] - o
+            b = q[rows][:, (c + np.arange(2, n)) % n, :] - o
             cr = a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
             dot = (a * b).sum(axis=2)
-            fine = (cr * sign > 0).all(axis=1)
+            fine = (cr * sign[rows] > 0).all(axis=1)
             fine &= np.abs(np.arctan2(cr, dot).sum(axis=1)) < 2 * np.pi - 1e-9
-            best[(best < 0) & fine] = c
+            best[rows[fine]] = c
     return best
 
 
@@ -279,14 +283,14 @@ def view_triangles(
             # The fan from that corner covers the outline exactly, in the polygon's own
             # winding.
             if n not in fan_edges:
-                fan_edges[n] = [
-                    np.array([i == 1, True, i == n - 2]) for i in range(1, n - 1)
-                ]
-            c = int(fan[k])
-            for i, e in zip(range(1, n - 1), fan_edges[n]):
-                faces.append(p[[c, (c + i) % n, (c + i + 1) % n]])
-                owner.append(k)
-                own.append(e)
+                fan_edges[n] = (
+                    [np.array([i == 1, True, i == n - 2]) for i in range(1, n - 1)],
+                    np.array([[0, i, i + 1] for i in range(1, n - 1)]),
+                )
+            edges, corners_of = fan_edges[n]
+            faces.extend(p[(int(fan[k]) + corners_of) % n])
+            owner.extend([k] * (n - 2))
+            own.extend(edges)
             continue
         if n >= 5 and not flat[k]:
             q = seen[starts[k] : starts[k + 1]]
