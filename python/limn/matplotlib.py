@@ -484,8 +484,11 @@ class _Limn3D:
             if not run:
                 run.append(_Run(key, polys.clip[k], 0.5 * lw[k] * p2p))
             if joined[i]:
-                cuts = np.cumsum([len(r) for r in polygons[i][1]])[:-1]
-                run[0].add(np.split(disp, cuts), edges, edged, whole)
+                rings, at, parts = polygons[i][1], 0, []
+                for r in rings:
+                    parts.append(disp[at : at + len(r)])
+                    at += len(r)
+                run[0].add(parts, edges, edged, whole)
             else:
                 run[0].add([disp], edges, edged, whole)
         flush()
