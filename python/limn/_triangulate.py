@@ -232,6 +232,7 @@ def view_triangles(
     starts = np.concatenate([[0], np.cumsum(sizes)])
     flat = np.ones(len(corners), dtype=bool)
     fan = np.full(len(corners), -1)
+    fan_tris: dict = {}
     for n in np.unique(sizes[sizes >= 4]):
         ks = np.nonzero(sizes == n)[0]
         group = np.stack([corners[k] for k in ks])
@@ -241,6 +242,14 @@ def view_triangles(
         if 5 <= n <= _FAN_MAX and len(bent):
             rows = starts[bent][:, None] + np.arange(n)[None, :]
             fan[bent] = fan_corner_all(seen[rows])
+            # Each fanned polygon's triangles (n - 2, 3, 3), for all of them at once.
+            fanned = bent[fan[bent] >= 0]
+            if len(fanned):
+                tri = np.array([[0, i, i + 1] for i in range(1, n - 1)])
+                at = (fan[fanned][:, None, None] + tri[None]) % n
+                polys = group[np.searchsorted(ks, fanned)]
+                tris = polys[np.arange(len(fanned))[:, None, None], at]
+                fan_tris.update(zip(fanned.tolist(), tris))
     fan_edges = {}
     # Polygons that go whole with all their edges (most): no test per polygon below.
     plain = ~(bowtie | ((reflex >= 0) & ~flat) | ((sizes >= 5) & ~flat))
@@ -283,14 +292,10 @@ def view_triangles(
             # The fan from that corner covers the outline exactly, in the polygon's own
             # winding.
             if n not in fan_edges:
-                fan_edges[n] = (
-                    [np.array([i == 1, True, i == n - 2]) for i in range(1, n - 1)],
-                    np.array([[0, i, i + 1] for i in range(1, n - 1)]),
-                )
-            edges, corners_of = fan_edges[n]
-            faces.extend(p[(int(fan[k]) + corners_of) % n])
+                fan_edges[n] = [np.array([i == 1, True, i == n - 2]) for i in range(1, n - 1)]
+            faces.extend(fan_tris[k])
             owner.extend([k] * (n - 2))
-            own.extend(edges)
+            own.extend(fan_edges[n])
             continue
         if n >= 5 and not flat[k]:
             q = seen[starts[k] : starts[k + 1]]
