@@ -87,6 +87,26 @@ struct Entry {
     rings: Option<Vec<Vec<[f64; 2]>>>,
 }
 
+/// One value per face from the optional array argument `name` (empty when not given);
+/// a `ValueError` counting its `what` when there are not `faces` of them.
+fn per_face<T: numpy::Element + Copy>(
+    values: Option<&PyReadonlyArray1<'_, T>>,
+    (name, what): (&str, &str),
+    faces: usize,
+) -> PyResult<Vec<T>> {
+    let Some(values) = values else {
+        return Ok(Vec::new());
+    };
+    let values = values.as_slice().map_err(value_error)?.to_vec();
+    if values.len() != faces {
+        return Err(value_error(format!(
+            "{name} has {} {what} for {faces} faces",
+            values.len()
+        )));
+    }
+    Ok(values)
+}
+
 /// Decimals of the grid a joined run is rounded to: a millionth of a pixel, fewer where
 /// the run reaches so far from the origin that the grid would leave the integer
 /// engine's range (`None` below a hundredth of a pixel: the run stays as it is).
@@ -612,36 +632,11 @@ impl PyScene {
             seams,
             ..Style::default()
         };
-        let stroked = match &stroked {
-            None => Vec::new(),
-            Some(flags) => {
-                let flags = flags.as_slice().map_err(value_error)?.to_vec();
-                if flags.len() != self.scene.faces.len() {
-                    return Err(value_error(format!(
-                        "stroked has {} flags for {} faces",
-                        flags.len(),
-                        self.scene.faces.len()
-                    )));
-                }
-                flags
-            }
-        };
+        let faces = self.scene.faces.len();
+        let stroked = per_face(stroked.as_ref(), ("stroked", "flags"), faces)?;
         let mut pic = picture_with_marks_unflapped(&self.scene, &mut ordered, &marks, &style);
         add_seam_flaps_beside_strokes(&mut pic, &style, &stroked);
-        let join = match &join {
-            None => Vec::new(),
-            Some(flags) => {
-                let flags = flags.as_slice().map_err(value_error)?.to_vec();
-                if flags.len() != self.scene.faces.len() {
-                    return Err(value_error(format!(
-                        "join has {} groups for {} faces",
-                        flags.len(),
-                        self.scene.faces.len()
-                    )));
-                }
-                flags
-            }
-        };
+        let join = per_face(join.as_ref(), ("join", "groups"), faces)?;
         let (runs, before) = joined(&pic, &join);
         for m in &mut pic.marks {
             m.before = before[m.before];

@@ -285,6 +285,18 @@ impl Ctx<'_> {
     /// The parameters in `[u_lo, u_hi]` of segment `AB` (`ends`, and exactly `exact`)
     /// where occluder `i`'s cone conditions hold, when they form an interval of positive
     /// length: decided by the float filter where it can, exactly otherwise.
+    /// Occluder `i`'s cone conditions at the segment's two ends, as intervals into
+    /// `fa` and `fb` (see [`filter::conditions`]): whether both could be computed (not
+    /// when the eye lies in the occluder's plane).
+    fn end_conditions(&mut self, i: u32, ends: [DVec3; 2]) -> bool {
+        let o = &self.sh.occluders[i as usize];
+        let [a, b] = ends.map(|p| p.to_array());
+        let (eye_side, eye) = (o.eye_side, self.sh.eye_f);
+        let ok_a = filter::conditions(&o.poly, &o.support, eye_side, eye, a, &mut self.fa);
+        let ok_b = filter::conditions(&o.poly, &o.support, eye_side, eye, b, &mut self.fb);
+        ok_a && ok_b
+    }
+
     pub(super) fn cone_part(
         &mut self,
         i: u32,
@@ -293,33 +305,13 @@ impl Ctx<'_> {
         u_lo: &Quotient,
         u_hi: &Quotient,
     ) -> Option<(Quotient, Quotient)> {
-        if self.sh.filter {
-            let o = &self.sh.occluders[i as usize];
-            let [a, b] = ends.map(|p| p.to_array());
-            let ok_a = filter::conditions(
-                &o.poly,
-                &o.support,
-                o.eye_side,
-                self.sh.eye_f,
-                a,
-                &mut self.fa,
-            );
-            let ok_b = filter::conditions(
-                &o.poly,
-                &o.support,
-                o.eye_side,
-                self.sh.eye_f,
-                b,
-                &mut self.fb,
-            );
-            if ok_a && ok_b {
-                match filter::segment_verdict(&self.fa, &self.fb) {
-                    filter::Verdict::Nowhere => return None,
-                    filter::Verdict::Everywhere => {
-                        return (u_lo < u_hi).then(|| (u_lo.clone(), u_hi.clone()));
-                    }
-                    filter::Verdict::Unknown => {}
+        if self.sh.filter && self.end_conditions(i, ends) {
+            match filter::segment_verdict(&self.fa, &self.fb) {
+                filter::Verdict::Nowhere => return None,
+                filter::Verdict::Everywhere => {
+                    return (u_lo < u_hi).then(|| (u_lo.clone(), u_hi.clone()));
                 }
+                filter::Verdict::Unknown => {}
             }
         }
         self.stats.exact_tests += 1;
@@ -360,25 +352,7 @@ impl Ctx<'_> {
         u_hi: &Quotient,
     ) -> Option<(Quotient, Quotient)> {
         if self.sh.filter {
-            let o = &self.sh.occluders[i as usize];
-            let [a, b] = ends.map(|p| p.to_array());
-            let ok_a = filter::conditions(
-                &o.poly,
-                &o.support,
-                o.eye_side,
-                self.sh.eye_f,
-                a,
-                &mut self.fa,
-            );
-            let ok_b = filter::conditions(
-                &o.poly,
-                &o.support,
-                o.eye_side,
-                self.sh.eye_f,
-                b,
-                &mut self.fb,
-            );
-            if !(ok_a && ok_b) {
+            if !self.end_conditions(i, ends) {
                 // The eye in the occluder's plane: it covers nothing.
                 return None;
             }
