@@ -346,7 +346,7 @@ fn flaps_after(
                 }
                 let q = &fragments[j].points;
                 let (u, v) = (q[k], q[(k + 1) % q.len()]);
-                if let Some(points) = flap_into(q, shapes.entry(j).or_default(), u, v, width) {
+                if let Some(points) = flap_kept(q, (j, shapes), u, v, width) {
                     if points == *q {
                         given_whole.push(j);
                     }
@@ -369,7 +369,7 @@ fn flaps_after(
         {
             continue;
         }
-        let Some(points) = flap_into(q, shapes.entry(j).or_default(), a, b, width) else {
+        let Some(points) = flap_kept(q, (j, shapes), a, b, width) else {
             continue;
         };
         if points == fragments[j].points {
@@ -614,6 +614,27 @@ pub(crate) fn flap(
     width: f64,
 ) -> Option<Vec<[f64; 2]>> {
     flap_into(poly, &mut Shape::default(), a, b, width)
+}
+
+/// Later fragments of more corners than this have what their flaps find out kept
+/// ([`Shape`]); for fewer, asking again costs less than keeping the answers (a mesh's
+/// triangles: a table entry per flap cost a tenth of a million-face picture's time).
+const SHAPE_KEPT_ABOVE: usize = 8;
+
+/// [`flap`] into later fragment `j` (corners `poly`), with what is known of it kept in
+/// `shapes` when it has many corners.
+fn flap_kept(
+    poly: &[[f64; 2]],
+    (j, shapes): (usize, &mut HashMap<usize, Shape>),
+    a: [f64; 2],
+    b: [f64; 2],
+    width: f64,
+) -> Option<Vec<[f64; 2]>> {
+    if poly.len() > SHAPE_KEPT_ABOVE {
+        flap_into(poly, shapes.entry(j).or_default(), a, b, width)
+    } else {
+        flap(poly, a, b, width)
+    }
 }
 
 /// What [`flap`] finds out about a later fragment, kept for its other flaps into the same
