@@ -315,14 +315,14 @@ class _Limn3D:
         # Per face: whether every edge of it is its polygon's own (one reduction).
         if len(own):
             firsts = np.cumsum([0] + [len(o) for o in own[:-1]])
-            whole = np.logical_and.reduceat(np.concatenate(own).astype(bool), firsts)
+            own_all = np.logical_and.reduceat(np.concatenate(own).astype(bool), firsts)
         else:
-            whole = np.zeros(0, dtype=bool)
+            own_all = np.zeros(0, dtype=bool)
         # Faces whose every edge matplotlib strokes, opaque and at least a seam flap wide
         # (one of limn's pixels), right after the fill (a surface edged in its own
         # colour): the stroke covers the seam, so those edges get no flap.
         covering = stroked & (ec[:, 3] >= 1) & (lw * p2p >= max(sx, sy))
-        closed = covering[owner] & whole if len(owner) else np.zeros(0, dtype=bool)
+        closed = covering[owner] & own_all if len(owner) else np.zeros(0, dtype=bool)
         polygons, marks = scene.paint_with_marks(
             sort=self.sort, arith=self.arith, join=join, stroked=closed
         )
@@ -401,7 +401,7 @@ class _Limn3D:
             and lead[i] < 0
             and stroked[owner[face]]
             and any(orig)
-            and not whole[face]
+            and not own_all[face]
         ]
         own_edges = _polygon_edges(
             [disp_all[ends[i] : ends[i + 1]] for i in cut],

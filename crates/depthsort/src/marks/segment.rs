@@ -282,9 +282,6 @@ impl Ctx<'_> {
         }
     }
 
-    /// The parameters in `[u_lo, u_hi]` of segment `AB` (`ends`, and exactly `exact`)
-    /// where occluder `i`'s cone conditions hold, when they form an interval of positive
-    /// length: decided by the float filter where it can, exactly otherwise.
     /// Occluder `i`'s cone conditions at the segment's two ends, as intervals into
     /// `fa` and `fb` (see [`filter::conditions`]): whether both could be computed (not
     /// when the eye lies in the occluder's plane).
@@ -297,6 +294,9 @@ impl Ctx<'_> {
         ok_a && ok_b
     }
 
+    /// The parameters in `[u_lo, u_hi]` of segment `AB` (`ends`, and exactly `exact`)
+    /// where occluder `i`'s cone conditions hold, when they form an interval of positive
+    /// length: decided by the float filter where it can, exactly otherwise.
     pub(super) fn cone_part(
         &mut self,
         i: u32,
