@@ -16,6 +16,14 @@ use common::{limn, put, tempdir};
 
 /// Levels a smooth pixel may differ by.
 const LEVELS: i32 = 12;
+
+/// A finer bound for pictures of flat pieces, where a crack shows as a scratch of a few
+/// levels that [`LEVELS`] lets pass.
+const FINE: i32 = 8;
+
+/// The share of smooth pixels wanted within [`FINE`] levels.
+const AGREE_FINE: f64 = 0.995;
+
 /// The least share of smooth pixels that must agree.
 const AGREE: f64 = 0.995;
 
@@ -95,11 +103,18 @@ enum Page {
 /// The share of smooth pixels (of `reference`) where `viewer` agrees within [`LEVELS`].
 fn agreement(reference: &Raster, viewer: &Raster, page: Page) -> f64 {
     let everywhere = [0, 0, reference.width, reference.height];
-    agreement_in(reference, viewer, page, everywhere)
+    agreement_in(reference, viewer, page, everywhere, LEVELS)
 }
 
-/// [`agreement`] in the window `[x0, y0, x1, y1]` (pixels `x0 <= x < x1`, `y0 <= y < y1`).
-fn agreement_in(reference: &Raster, viewer: &Raster, page: Page, window: [usize; 4]) -> f64 {
+/// The share of smooth pixels (of `reference`) in the window `[x0, y0, x1, y1]` (pixels
+/// `x0 <= x < x1`, `y0 <= y < y1`) where `viewer` agrees within `levels`.
+fn agreement_in(
+    reference: &Raster,
+    viewer: &Raster,
+    page: Page,
+    window: [usize; 4],
+    levels: i32,
+) -> f64 {
     assert_eq!(
         (viewer.width, viewer.height),
         (reference.width, reference.height),
@@ -119,7 +134,7 @@ fn agreement_in(reference: &Raster, viewer: &Raster, page: Page, window: [usize;
             continue;
         }
         n += 1;
-        if (0..3).all(|c| (a[c] as i32 - b[c] as i32).abs() <= LEVELS) {
+        if (0..3).all(|c| (a[c] as i32 - b[c] as i32).abs() <= levels) {
             good += 1;
         }
     }
@@ -320,6 +335,13 @@ fn the_demo_is_seamless_in_every_viewer() {
 /// both. A face's pieces of one colour in a stretch are now one path, and pieces with
 /// other faces between them get seam flaps, also at T-junctions (shadow: Chromium 99.6 %,
 /// rsvg 100 %; boxes: 99.99 % both).
+///
+/// That left scratches across the shadow in Chromium, 20–30 levels light: where a piece's
+/// corner lay on its neighbour's edge, the rounded corner lay off the rounded edge, and
+/// Skia drew the slivers between them (0.005 px wide) far wider than they are. Within
+/// [`FINE`] levels, the shadow agreed on 99.17 % in Chromium. The pieces are now
+/// snap-rounded together (`crates/paint/src/snap.rs`), and at least [`AGREE_FINE`] is
+/// wanted there too.
 #[test]
 fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
     let dir = tempdir();
@@ -341,9 +363,14 @@ fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
     for (viewer, png) in view(dir.path(), "shadow", w, h) {
         let raster = read_png(&png);
         for (name, window) in windows {
-            let share = agreement_in(&reference, &raster, Page::LeftOut, window);
-            report.push(format!("{viewer} {name} {:.2} %", 100.0 * share));
-            failed |= share < AGREE;
+            let share = agreement_in(&reference, &raster, Page::LeftOut, window, LEVELS);
+            let fine = agreement_in(&reference, &raster, Page::LeftOut, window, FINE);
+            report.push(format!(
+                "{viewer} {name} {:.2} % ({:.2} % within {FINE})",
+                100.0 * share,
+                100.0 * fine
+            ));
+            failed |= share < AGREE || fine < AGREE_FINE;
         }
         files.push(png);
     }
@@ -352,9 +379,10 @@ fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
         let kept = keep("shadow", &files);
         panic!(
             "the demo's shadow and boxes: smooth pixels agreeing with limn's PNG within {LEVELS} levels: \
-             {} (at least {:.1} % wanted; rasters kept in {})",
+             {} (at least {:.1} % wanted, {:.1} % within {FINE}; rasters kept in {})",
             report.join(", "),
             100.0 * AGREE,
+            100.0 * AGREE_FINE,
             kept.display()
         );
     }

@@ -156,10 +156,7 @@ impl Writer {
 
     fn flat_run(&mut self, b: &mut Vec<u8>, run: &[Frag<'_>], q: [u32; 3]) {
         let height = self.height;
-        let merged = self
-            .merge
-            .then(|| merge::union(run, self.d, |p| [p[0], height - p[1]]))
-            .flatten()
+        let merged = merge::run_shapes(run, self.d, self.merge, |p| [p[0], height - p[1]])
             .filter(|shapes| !(shapes.is_empty() && self.seams));
         if merged.as_ref().is_some_and(Vec::is_empty) {
             // Fills no point.

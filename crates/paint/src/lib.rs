@@ -100,6 +100,7 @@ mod runs;
 mod seams;
 mod seams_across;
 mod smooth;
+mod snap;
 mod svg;
 mod svg_smooth;
 mod svg_smooth_run;

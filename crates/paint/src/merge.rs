@@ -1,16 +1,19 @@
-//! A face's pieces written as one outline ([`Picture::merge_pieces`]): the union of a
-//! run's polygons, with holes where needed, so that the edges between the pieces of one
-//! face (T-junctions included) are not in the file.
+//! A face's pieces written on the writer's grid as one path: with
+//! [`Picture::merge_pieces`] the union of a run's polygons, with holes where needed, so
+//! that the edges between the pieces of one face (T-junctions included) are not in the
+//! file; without, each piece a subpath, snap-rounded together so that no crack opens
+//! between them ([`crate::snap`]).
 //!
 //! The union is taken of the polygons *as written*: every corner is first rounded to the
 //! writer's grid (`decimals` decimals, half away from zero, as [`crate::number`] writes
-//! numbers), and the union of those integer polygons is computed by `i_overlay` with
-//! exact integer predicates under the non-zero rule, each polygon turned as the writers
-//! turn the subpaths of a run (see [`reversals`]). The outline written is thus the area
-//! the subpaths would fill, decided without any tolerance; the only rounding is that of
-//! the points where two rounded edges cross (a piece's rounded corner of a T-junction
-//! against its neighbour's rounded edge), to the same grid, less than half a unit of
-//! the last decimal from the exact crossing. Collinear corners are dropped.
+//! numbers), every edge passed through the grid points of the run's corners it meets
+//! (snap rounding: a T-junction's corner and its neighbour's edge then meet on the grid),
+//! and the union of those integer polygons is computed by `i_overlay` with exact integer
+//! predicates under the non-zero rule, each polygon turned as the writers turn the
+//! subpaths of a run (see [`reversals`]). The outline written is thus the area the
+//! subpaths would fill, decided without any tolerance; the only rounding is that of the
+//! points where two rounded edges cross, to the same grid, less than half a unit of the
+//! last decimal from the exact crossing. Collinear corners are dropped.
 //!
 //! [`Picture::merge_pieces`]: crate::Picture::merge_pieces
 
@@ -21,21 +24,56 @@ use i_overlay::i_float::int::point::IntPoint;
 
 use crate::number::{push_scaled, round_scaled, MAX_DECIMALS};
 use crate::runs::{reversals, Frag};
+use crate::snap::{snapped_rings, GridRing};
 
 /// A run's outline: shapes, each its outer ring then its holes (turned the other way),
 /// corners in units of `10^-decimals` of the page's unit, in the writer's page
 /// coordinates.
-pub(crate) type Shapes = Vec<Vec<Vec<IntPoint<i32>>>>;
+pub(crate) type Shapes = Vec<Vec<GridRing>>;
 
 /// The largest magnitude of a grid coordinate `i_overlay`'s 32-bit engine takes.
 const MAX_GRID: i64 = (1 << 30) - 1;
 
-/// The union of `run`'s polygons on the grid of `decimals` decimals, each corner first
-/// mapped to page coordinates by `page` (as the writer maps it before writing it).
-/// `None` when there is nothing to merge (one fragment) or when a coordinate is beyond
-/// the integer engine's range: the writer then writes the run's subpaths as they are.
-/// The union is empty when every polygon is degenerate once rounded (it fills no point):
-/// a writer leaves such a run out, unless it strokes its fills.
+/// A run of several fragments on the writer's grid, each corner first mapped to page
+/// coordinates by `page` (as the writer maps it before writing it): with `merge`, the
+/// union of its polygons ([`union`]); without, each polygon a shape of one ring, the
+/// polygons snap-rounded together (see [`crate::snap`]) so that no crack opens between
+/// them once written. `None` when the run is one fragment or a coordinate is beyond the
+/// grid's range: the writer then writes the run's subpaths as they are. The union is
+/// empty when every polygon is degenerate once rounded (it fills no point): a writer
+/// leaves such a run out, unless it strokes its fills.
+pub(crate) fn run_shapes(
+    run: &[Frag<'_>],
+    decimals: u8,
+    merge: bool,
+    page: impl Fn([f64; 2]) -> [f64; 2],
+) -> Option<Shapes> {
+    if merge {
+        return union(run, decimals, page);
+    }
+    if run.len() < 2 {
+        return None;
+    }
+    let rings = snapped_rings(oriented(run), decimals, page)?;
+    Some(rings.into_iter().map(|r| vec![r]).collect())
+}
+
+/// Each fragment's corners, turned as the writers turn the subpaths of a run.
+fn oriented<'r>(
+    run: &'r [Frag<'_>],
+) -> impl Iterator<Item = impl Iterator<Item = [f64; 2]> + 'r> + 'r {
+    run.iter()
+        .zip(reversals(run))
+        .map(|(f, reverse)| f.oriented(reverse))
+}
+
+/// The union of `run`'s polygons on the grid of `decimals` decimals, snap-rounded
+/// together first, each corner first mapped to page coordinates by `page` (as the writer
+/// maps it before writing it). `None` when there is nothing to merge (one fragment) or
+/// when a coordinate is beyond the integer engine's range: the writer then writes the
+/// run's subpaths as they are. The union is empty when every polygon is degenerate once
+/// rounded (it fills no point): a writer leaves such a run out, unless it strokes its
+/// fills.
 pub(crate) fn union(
     run: &[Frag<'_>],
     decimals: u8,
@@ -44,48 +82,51 @@ pub(crate) fn union(
     if run.len() < 2 {
         return None;
     }
-    union_of_rings(
-        run.iter()
-            .zip(reversals(run))
-            .map(|(f, reverse)| f.oriented(reverse).map(&page)),
-        decimals,
-    )
+    union_of_rings(snapped_rings(oriented(run), decimals, page)?)
 }
 
-/// The union under the non-zero rule of `rings`, each corner rounded to the grid of
-/// `decimals` decimals; `None` when a coordinate is beyond the integer engine's range.
-fn union_of_rings<R, P>(rings: R, decimals: u8) -> Option<Shapes>
-where
-    R: Iterator<Item = P>,
-    P: Iterator<Item = [f64; 2]>,
-{
-    let mut contours: Vec<Vec<IntPoint<i32>>> = Vec::new();
-    for corners in rings {
-        let mut ring = Vec::new();
-        for q in corners {
-            let x = round_scaled(q[0], decimals)?;
-            let y = round_scaled(q[1], decimals)?;
+/// The union under the non-zero rule of grid `rings`; `None` when a coordinate is beyond
+/// the integer engine's range.
+fn union_of_rings(rings: Vec<GridRing>) -> Option<Shapes> {
+    let mut contours: Vec<Vec<IntPoint<i32>>> = Vec::with_capacity(rings.len());
+    for ring in rings {
+        let mut contour = Vec::with_capacity(ring.len());
+        for [x, y] in ring {
             if x.abs() > MAX_GRID || y.abs() > MAX_GRID {
                 return None;
             }
             // In range: the casts are exact.
-            let point = IntPoint::new(x as i32, y as i32);
-            if ring.last() != Some(&point) {
-                ring.push(point);
-            }
+            contour.push(IntPoint::new(x as i32, y as i32));
         }
-        contours.push(ring);
+        contours.push(contour);
     }
-    Some(contours.simplify(FillRule::NonZero, IntOverlayOptions::default()))
+    let shapes = contours.simplify(FillRule::NonZero, IntOverlayOptions::default());
+    Some(
+        shapes
+            .into_iter()
+            .map(|shape| {
+                shape
+                    .into_iter()
+                    .map(|ring| {
+                        ring.into_iter()
+                            .map(|q| [i64::from(q.x), i64::from(q.y)])
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect(),
+    )
 }
 
 /// The area polygons fill together, as few outlines as it takes: the union under the
 /// non-zero rule of `polygons`, each first turned the way the first one turns (as the
-/// vector writers turn the subpaths of one path) and its corners rounded to the grid of
-/// `decimals` decimals (half away from zero; at most 9). Returns shapes, each an outer ring and
-/// its holes (turned the other way), corners on that grid; collinear corners dropped.
-/// The outline is that of the rounded polygons, decided with exact integer predicates;
-/// only where two rounded edges cross is a corner rounded again, to the same grid.
+/// vector writers turn the subpaths of one path), its corners rounded to the grid of
+/// `decimals` decimals (half away from zero; at most 9) and its edges passed through the
+/// grid points of the corners they meet ([`crate::snap`]). Returns shapes, each an outer
+/// ring and its holes (turned the other way), corners on that grid; collinear corners
+/// dropped. The outline is that of the snapped polygons, decided with exact integer
+/// predicates; only where two snapped edges cross is a corner rounded again, to the same
+/// grid.
 /// `None` when a coordinate times `10^decimals` is beyond ±2³⁰ (the integer engine's
 /// range). Polygons that fill nothing once rounded add nothing.
 pub fn union_of_polygons(
@@ -102,14 +143,16 @@ pub fn union_of_polygons(
             .sum()
     };
     let first = polygons.first().map_or(0.0, |p| area2(p));
-    let shapes = union_of_rings(
+    let rings = snapped_rings(
         polygons.iter().map(|p| {
             let reverse = area2(p) * first < 0.0;
             let n = p.len();
             (0..n).map(move |k| p[if reverse { n - 1 - k } else { k }])
         }),
         decimals,
+        |q| q,
     )?;
+    let shapes = union_of_rings(rings)?;
     let unit = 10f64.powi(i32::from(decimals));
     Some(
         shapes
@@ -119,7 +162,7 @@ pub fn union_of_polygons(
                     .into_iter()
                     .map(|ring| {
                         ring.into_iter()
-                            .map(|q| [f64::from(q.x) / unit, f64::from(q.y) / unit])
+                            .map(|q| [q[0] as f64 / unit, q[1] as f64 / unit])
                             .collect()
                     })
                     .collect()
@@ -154,18 +197,39 @@ pub(crate) fn fills_nothing(
 }
 
 /// The number of corners of a shape (its outer ring and holes).
-pub(crate) fn corners(shape: &[Vec<IntPoint<i32>>]) -> usize {
+pub(crate) fn corners(shape: &[GridRing]) -> usize {
     shape.iter().map(Vec::len).sum()
+}
+
+/// Appends rings as SVG path data (`M x y L x y x y … Z` each).
+pub(crate) fn push_svg_rings<'r>(
+    b: &mut Vec<u8>,
+    rings: impl Iterator<Item = &'r GridRing>,
+    decimals: u8,
+) {
+    for ring in rings {
+        for (k, p) in ring.iter().enumerate() {
+            b.push(match k {
+                0 => b'M',
+                1 => b'L',
+                _ => b' ',
+            });
+            push_scaled(b, p[0], decimals);
+            b.push(b' ');
+            push_scaled(b, p[1], decimals);
+        }
+        b.push(b'Z');
+    }
 }
 
 /// Appends a shape's rings as PDF and PostScript path operators (`x y m`, `x y l`, `h`),
 /// one line per ring.
-pub(crate) fn push_moveto_lineto(b: &mut Vec<u8>, shape: &[Vec<IntPoint<i32>>], decimals: u8) {
+pub(crate) fn push_moveto_lineto(b: &mut Vec<u8>, shape: &[GridRing], decimals: u8) {
     for ring in shape {
         for (k, p) in ring.iter().enumerate() {
-            push_scaled(b, p.x.into(), decimals);
+            push_scaled(b, p[0], decimals);
             b.push(b' ');
-            push_scaled(b, p.y.into(), decimals);
+            push_scaled(b, p[1], decimals);
             b.extend_from_slice(if k == 0 { b" m " } else { b" l " });
         }
         b.extend_from_slice(b"h\n");
@@ -219,7 +283,7 @@ mod tests {
         .unwrap();
         assert_eq!(s.len(), 1);
         assert_eq!(s[0].len(), 1);
-        let mut corners: Vec<(i32, i32)> = s[0][0].iter().map(|p| (p.x, p.y)).collect();
+        let mut corners: Vec<(i64, i64)> = s[0][0].iter().map(|p| (p[0], p[1])).collect();
         corners.sort();
         assert_eq!(corners, vec![(0, 0), (0, 1000), (1000, 0), (1000, 1000)]);
     }
@@ -235,11 +299,11 @@ mod tests {
         .unwrap();
         assert_eq!(s.len(), 1);
         assert_eq!(s[0].len(), 2, "an outer ring and a hole");
-        let area2 = |ring: &[IntPoint<i32>]| -> i64 {
+        let area2 = |ring: &[[i64; 2]]| -> i64 {
             (0..ring.len())
                 .map(|i| {
                     let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-                    i64::from(a.x) * i64::from(b.y) - i64::from(b.x) * i64::from(a.y)
+                    a[0] * b[1] - b[0] * a[1]
                 })
                 .sum()
         };

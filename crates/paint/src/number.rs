@@ -44,7 +44,7 @@ pub(crate) fn push_uint(buf: &mut Vec<u8>, mut v: u64) {
 /// `x` rounded half away from zero, for |x| < 2^53 (what `f64::round` does, without the
 /// library call that baseline x86-64 needs for it).
 #[inline]
-fn round_i64(x: f64) -> i64 {
+pub(crate) fn round_i64(x: f64) -> i64 {
     let i = x as i64;
     // Exact: x − trunc(x) has no rounding error below 2^53. Written without branches:
     // colours and coordinates are random enough to defeat branch prediction.
@@ -67,12 +67,18 @@ pub(crate) fn push_num(buf: &mut Vec<u8>, v: f64, decimals: u8) {
     push_scaled(buf, round_i64(scaled), decimals);
 }
 
+/// `v · 10^decimals` as [`push_num`] computes it before rounding it; `None` where
+/// [`push_num`] takes its slow path (NaN, or beyond 2^53 once scaled).
+pub(crate) fn scaled(v: f64, decimals: u8) -> Option<f64> {
+    let scaled = v * POW10[usize::from(decimals.min(MAX_DECIMALS))] as f64;
+    (!scaled.is_nan() && scaled.abs() < EXACT_INT).then_some(scaled)
+}
+
 /// `v · 10^decimals` rounded as [`push_num`] rounds it (half away from zero), the number
 /// [`push_scaled`] then writes as [`push_num`] writes `v`; `None` where [`push_num`]
 /// takes its slow path (NaN, or beyond 2^53 once scaled).
 pub(crate) fn round_scaled(v: f64, decimals: u8) -> Option<i64> {
-    let scaled = v * POW10[usize::from(decimals.min(MAX_DECIMALS))] as f64;
-    (!scaled.is_nan() && scaled.abs() < EXACT_INT).then(|| round_i64(scaled))
+    scaled(v, decimals).map(round_i64)
 }
 
 /// "00" to "99".

@@ -178,10 +178,7 @@ impl Content {
     fn flat_run(&mut self, run: &[Frag<'_>], rgb: [u32; 3]) {
         let height = self.height;
         let stroked = self.seams > 0.0 && self.alpha >= 1000;
-        let merged = self
-            .merge
-            .then(|| merge::union(run, self.d, |p| [p[0], height - p[1]]))
-            .flatten()
+        let merged = merge::run_shapes(run, self.d, self.merge, |p| [p[0], height - p[1]])
             .filter(|shapes| !(shapes.is_empty() && stroked));
         if merged.as_ref().is_some_and(Vec::is_empty) {
             // Fills no point.

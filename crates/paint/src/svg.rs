@@ -66,8 +66,7 @@ use super::layers::Layers;
 use super::marks::{paint_mark, MarkSink};
 use super::merge;
 use super::number::{
-    alpha_milli, push_hex_color, push_milli, push_num, push_scaled, push_uint, push_xml_attr,
-    rgb_u8, Sink,
+    alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::{
@@ -404,8 +403,9 @@ struct FlatRun<'a> {
 }
 
 impl FlatRun<'_> {
-    /// Writes the run's fill (the union of its fragments when `merge`; nothing when
-    /// that fills no point and is not stroked) and outline; returns the number of fill
+    /// Writes the run's fill (the union of its fragments when `merge`, nothing when
+    /// that fills no point and is not stroked; else its fragments snap-rounded together)
+    /// and outline; returns the number of fill
     /// paths and of strokes (0 or 1 each).
     fn write(
         &self,
@@ -416,9 +416,7 @@ impl FlatRun<'_> {
         d: u8,
     ) -> (usize, usize) {
         let stroked = seams && self.alpha >= 1000;
-        let merged = merge
-            .then(|| merge::union(&self.frags, d, |p| p))
-            .flatten()
+        let merged = merge::run_shapes(&self.frags, d, merge, |p| p)
             .filter(|shapes| !(shapes.is_empty() && stroked));
         let paths = match merged {
             Some(shapes) if shapes.is_empty() => 0,
@@ -437,9 +435,9 @@ impl FlatRun<'_> {
     }
 }
 
-/// Writes the fill of a run as one path: its union's rings when `merged`, else each
-/// fragment a subpath, turned the way the first one turns; stroked in its own colour
-/// when seams close it.
+/// Writes the fill of a run as one path: the rings of `merged` (the run on the grid,
+/// see [`merge::run_shapes`]) when given, else each fragment a subpath, turned the way
+/// the first one turns; stroked in its own colour when seams close it.
 fn write_fill(
     b: &mut Vec<u8>,
     run: &[Frag<'_>],
@@ -456,17 +454,7 @@ fn write_fill(
         _ => b' ',
     };
     match merged {
-        Some(shapes) => {
-            for ring in shapes.iter().flatten() {
-                for (k, p) in ring.iter().enumerate() {
-                    b.push(command(k));
-                    push_scaled(b, p.x.into(), d);
-                    b.push(b' ');
-                    push_scaled(b, p.y.into(), d);
-                }
-                b.push(b'Z');
-            }
-        }
+        Some(shapes) => merge::push_svg_rings(b, shapes.iter().flatten(), d),
         None => {
             for (f, reverse) in run.iter().zip(reversals(run)) {
                 for (k, p) in f.oriented(reverse).enumerate() {

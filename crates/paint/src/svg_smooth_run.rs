@@ -29,7 +29,7 @@
 use std::collections::BTreeMap;
 
 use crate::merge;
-use crate::number::{push_hex_color, push_milli, push_num, push_scaled, push_uint, rgb_u8};
+use crate::number::{push_hex_color, push_milli, push_num, push_uint, rgb_u8};
 use crate::runs::Frag;
 use crate::seams::{edge_key, flap, EdgeKey};
 use crate::svg_smooth::{self, Piece};
@@ -89,19 +89,7 @@ pub(crate) fn write(
                 return 0;
             }
             write_flat_or_gradient(b, &paint, alpha, d, gradients, |b| {
-                for ring in shapes.iter().flatten() {
-                    for (k, p) in ring.iter().enumerate() {
-                        b.push(match k {
-                            0 => b'M',
-                            1 => b'L',
-                            _ => b' ',
-                        });
-                        push_scaled(b, p.x.into(), d);
-                        b.push(b' ');
-                        push_scaled(b, p.y.into(), d);
-                    }
-                    b.push(b'Z');
-                }
+                merge::push_svg_rings(b, shapes.iter().flatten(), d);
             });
             return 1;
         }

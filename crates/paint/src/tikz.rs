@@ -262,9 +262,7 @@ impl Painter for TikzPainter {
                 }
                 points += n;
             };
-            let merged = merge_pieces
-                .then(|| merge::union(run, d, |p| p))
-                .flatten()
+            let merged = merge::run_shapes(run, d, merge_pieces, |p| p)
                 .filter(|shapes| !(shapes.is_empty() && stroked));
             match merged {
                 // Fills no point: no fill.
@@ -276,9 +274,9 @@ impl Painter for TikzPainter {
                         for ring in shape {
                             for p in ring {
                                 b.extend_from_slice(b" (");
-                                push_scaled(b, p.x.into(), d);
+                                push_scaled(b, p[0], d);
                                 b.push(b',');
-                                push_scaled(b, p.y.into(), d);
+                                push_scaled(b, p[1], d);
                                 b.extend_from_slice(b") --");
                             }
                             b.extend_from_slice(b" cycle");
