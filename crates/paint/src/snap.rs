@@ -72,7 +72,23 @@ fn snap(rings: &[Vec<[f64; 2]>]) -> Vec<GridRing> {
     if rings.len() < 2 {
         return rounded.into_iter().map(dedup).collect();
     }
-    let hot = HotCells::new(rounded.iter().flatten().copied().collect());
+    // The median extent of the run's edges sizes the buckets.
+    let mut extents: Vec<f64> = rings
+        .iter()
+        .flat_map(|r| {
+            (0..r.len()).map(move |i| {
+                let (a, b) = (r[i], r[(i + 1) % r.len()]);
+                (a[0] - b[0]).abs().max((a[1] - b[1]).abs())
+            })
+        })
+        .collect();
+    let middle = extents.len() / 2;
+    let edge = if extents.is_empty() {
+        1.0
+    } else {
+        *extents.select_nth_unstable_by(middle, f64::total_cmp).1
+    };
+    let hot = HotCells::new(rounded.iter().flatten().copied().collect(), edge);
     let mut found = Vec::new();
     rings
         .iter()
@@ -100,50 +116,69 @@ fn dedup(mut ring: GridRing) -> GridRing {
     ring
 }
 
-/// The hot cells of a run, bucketed by a coarse square grid for lookups along an edge.
+/// The hot cells of a run, bucketed by a coarse square grid for lookups along an edge:
+/// buckets as wide as the run's median edge, so that an edge looks into a few buckets
+/// and a bucket holds the cells of a few edges, however the corners cluster; only
+/// buckets holding a cell are kept (sorted, found by binary search).
 struct HotCells {
-    /// The hot cells, sorted by bucket.
-    cells: Vec<[i64; 2]>,
-    /// `starts[b]..starts[b + 1]` are bucket `b`'s cells.
-    starts: Vec<usize>,
-    /// The lowest cell coordinates.
-    origin: [i64; 2],
+    /// The hot cells with their buckets, sorted by bucket (row, then column).
+    cells: Vec<([i64; 2], [i64; 2])>,
     /// Cells per bucket side.
     side: i64,
-    /// Buckets per row and per column.
-    dims: [i64; 2],
 }
 
 impl HotCells {
-    fn new(mut cells: Vec<[i64; 2]>) -> HotCells {
+    /// The hot cells `cells`, bucketed for edges of typical extent `edge` (grid units).
+    fn new(mut cells: Vec<[i64; 2]>, edge: f64) -> HotCells {
         cells.sort_unstable();
         cells.dedup();
-        let lo = cells
-            .iter()
-            .fold([i64::MAX; 2], |m, c| [m[0].min(c[0]), m[1].min(c[1])]);
-        let hi = cells
-            .iter()
-            .fold([i64::MIN; 2], |m, c| [m[0].max(c[0]), m[1].max(c[1])]);
-        let extent = [(hi[0] - lo[0] + 1) as f64, (hi[1] - lo[1] + 1) as f64];
-        // About one cell per bucket.
-        let side = ((extent[0] * extent[1] / cells.len() as f64).sqrt().ceil() as i64).max(1);
-        let dims = [(hi[0] - lo[0]) / side + 1, (hi[1] - lo[1]) / side + 1];
-        let bucket =
-            |c: &[i64; 2]| ((c[1] - lo[1]) / side * dims[0] + (c[0] - lo[0]) / side) as usize;
-        cells.sort_unstable_by_key(|c| (bucket(c), *c));
-        let mut starts = vec![0usize; (dims[0] * dims[1]) as usize + 1];
-        for c in &cells {
-            starts[bucket(c) + 1] += 1;
-        }
-        for b in 1..starts.len() {
-            starts[b] += starts[b - 1];
-        }
-        HotCells {
-            cells,
-            starts,
-            origin: lo,
-            side,
-            dims,
+        let side = (edge.ceil() as i64).max(1);
+        let mut cells: Vec<([i64; 2], [i64; 2])> = cells
+            .into_iter()
+            .map(|c| ([c[1].div_euclid(side), c[0].div_euclid(side)], c))
+            .collect();
+        cells.sort_unstable();
+        HotCells { cells, side }
+    }
+
+    /// The cells whose bucket row lies in `rows` (inclusive).
+    fn rows(&self, rows: [i64; 2]) -> &[([i64; 2], [i64; 2])] {
+        let from = self.cells.partition_point(|(k, _)| k[0] < rows[0]);
+        let to = from + self.cells[from..].partition_point(|(k, _)| k[0] <= rows[1]);
+        &self.cells[from..to]
+    }
+
+    /// Calls `f` with every cell of `band` whose bucket column lies in `columns`, `band`
+    /// being the cells of bucket row `row` (or, `None`, of several rows, looked through
+    /// cell by cell): by bucket where there are fewer buckets than cells, else by cell
+    /// (so that a long edge over few cells costs no more than those cells).
+    fn each_in(
+        band: &[([i64; 2], [i64; 2])],
+        row: Option<i64>,
+        columns: [i64; 2],
+        f: &mut impl FnMut([i64; 2]),
+    ) {
+        let span = columns[1].saturating_sub(columns[0]).saturating_add(1);
+        match row {
+            Some(row) if span > 0 && (span as u64) < band.len() as u64 => {
+                for bx in columns[0]..=columns[1] {
+                    let key = [row, bx];
+                    let from = band.partition_point(|(k, _)| *k < key);
+                    for &(k, c) in &band[from..] {
+                        if k != key {
+                            break;
+                        }
+                        f(c);
+                    }
+                }
+            }
+            _ => {
+                for &(k, c) in band {
+                    if k[1] >= columns[0] && k[1] <= columns[1] {
+                        f(c);
+                    }
+                }
+            }
         }
     }
 
@@ -166,25 +201,29 @@ impl HotCells {
         let (y0, y1) = (p[1].min(q[1]), p[1].max(q[1]));
         let cell_lo = |v: f64| (v - 0.5).ceil() as i64;
         let cell_hi = |v: f64| (v + 0.5).floor() as i64;
-        let (cy0, cy1) = (cell_lo(y0), cell_hi(y1));
-        let by0 = self.bucket_of(cy0, 1);
-        let by1 = self.bucket_of(cy1, 1);
-        for by in by0..=by1 {
-            // The edge's cells in this band of buckets: its x-range over the band's
-            // y-range, widened by a cell (the exact test below decides).
-            let band_lo = (self.origin[1] + by * self.side) as f64 - 0.5;
-            let band_hi = (self.origin[1] + (by + 1) * self.side) as f64 + 0.5;
-            let (lo, hi) = x_range(p, q, band_lo.max(y0), band_hi.min(y1));
-            let (cx0, cx1) = (cell_lo(lo.max(x0)) - 1, cell_hi(hi.min(x1)) + 1);
-            let bx0 = self.bucket_of(cx0, 0);
-            let bx1 = self.bucket_of(cx1, 0);
-            for bx in bx0..=bx1 {
-                let b = (by * self.dims[0] + bx) as usize;
-                for &c in &self.cells[self.starts[b]..self.starts[b + 1]] {
-                    if c != gp && c != gq && meets(p, q, c) {
-                        found.push(c);
-                    }
-                }
+        let side = self.side;
+        let (by0, by1) = (cell_lo(y0).div_euclid(side), cell_hi(y1).div_euclid(side));
+        let band = self.rows([by0, by1]);
+        let mut test = |c: [i64; 2]| {
+            if c != gp && c != gq && meets(p, q, c) {
+                found.push(c);
+            }
+        };
+        if by1.saturating_sub(by0) as u64 >= band.len() as u64 {
+            // Fewer cells than bucket rows: every cell of the band, by its bounding box.
+            let columns = [cell_lo(x0).div_euclid(side), cell_hi(x1).div_euclid(side)];
+            HotCells::each_in(band, None, columns, &mut test);
+        } else {
+            for by in by0..=by1 {
+                // The edge's cells in this band of buckets: its x-range over the band's
+                // y-range, widened by a cell (the exact test decides).
+                let band_lo = (by * side) as f64 - 0.5;
+                let band_hi = ((by + 1) * side) as f64 + 0.5;
+                let (lo, hi) = x_range(p, q, band_lo.max(y0), band_hi.min(y1));
+                let (cx0, cx1) = (cell_lo(lo.max(x0)) - 1, cell_hi(hi.min(x1)) + 1);
+                let row = self.rows([by, by]);
+                let columns = [cx0.div_euclid(side), cx1.div_euclid(side)];
+                HotCells::each_in(row, Some(by), columns, &mut test);
             }
         }
         if found.len() > 1 {
@@ -200,11 +239,6 @@ impl HotCells {
                 ka.total_cmp(&kb).then(tie)
             });
         }
-    }
-
-    /// The bucket index along `axis` of cell coordinate `v`, clamped to the buckets.
-    fn bucket_of(&self, v: i64, axis: usize) -> i64 {
-        ((v - self.origin[axis]).max(0) / self.side).min(self.dims[axis] - 1)
     }
 }
 
@@ -306,6 +340,82 @@ mod tests {
         )
     }
 
+    /// [`snap`] without the buckets: every hot cell tested against every edge.
+    fn snap_everywhere(rings: &[Vec<[f64; 2]>]) -> Vec<GridRing> {
+        let rounded = rounded(rings);
+        let mut hot: Vec<[i64; 2]> = rounded.iter().flatten().copied().collect();
+        hot.sort_unstable();
+        hot.dedup();
+        rings
+            .iter()
+            .zip(&rounded)
+            .map(|(ring, grid)| {
+                let mut out = Vec::new();
+                for i in 0..ring.len() {
+                    let j = (i + 1) % ring.len();
+                    out.push(grid[i]);
+                    if grid[i] == grid[j] {
+                        continue;
+                    }
+                    let (p, q) = (ring[i], ring[j]);
+                    let mut found: Vec<[i64; 2]> = hot
+                        .iter()
+                        .copied()
+                        .filter(|&c| c != grid[i] && c != grid[j] && meets(p, q, c))
+                        .collect();
+                    let d = [q[0] - p[0], q[1] - p[1]];
+                    let forward = (d[0], d[1]) > (0.0, 0.0);
+                    found.sort_unstable_by(|a, b| {
+                        let ka = a[0] as f64 * d[0] + a[1] as f64 * d[1];
+                        let kb = b[0] as f64 * d[0] + b[1] as f64 * d[1];
+                        let tie = if forward { a.cmp(b) } else { b.cmp(a) };
+                        ka.total_cmp(&kb).then(tie)
+                    });
+                    out.extend(found);
+                }
+                dedup(out)
+            })
+            .collect()
+    }
+
+    /// The buckets find every cell an edge meets: random triangles of very different
+    /// sizes, crowded and spread, near-horizontal and near-vertical slivers among them,
+    /// snapped with and without them.
+    #[test]
+    fn the_buckets_miss_no_cell() {
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for round in 0..40 {
+            let mut rings = Vec::new();
+            let n = 2 + round * 5;
+            for k in 0..n {
+                // Sizes from a tenth of a unit to ten thousand units.
+                let size = 10f64.powf(-1.0 + 5.0 * next());
+                let c = if k % 3 == 0 {
+                    [next() * 20.0, next() * 20.0]
+                } else {
+                    [next() * 2e4, next() * 2e4]
+                };
+                let mut ring: Vec<[f64; 2]> = (0..3)
+                    .map(|_| [c[0] + size * (next() - 0.5), c[1] + size * (next() - 0.5)])
+                    .collect();
+                if k % 5 == 0 {
+                    // A sliver along an axis.
+                    let axis = k % 2;
+                    let v = ring[0][axis];
+                    ring[1][axis] = v + 0.3 * next();
+                }
+                rings.push(ring);
+            }
+            assert_eq!(snap(&rings), snap_everywhere(&rings), "round {round}");
+        }
+    }
+
     /// A T-junction: the right pieces' shared corner lies on the left piece's edge, off
     /// the grid. Rounded, it lies right of the left piece's rounded edge, and a sliver
     /// opens between them; snapped, the left piece's edge passes through the corner's grid
@@ -383,8 +493,11 @@ mod tests {
                     shift[1] + scale * (s * p[0] + c * p[1]),
                 ]
             };
+            // Half the strips have their cuts crowded near one end (tiny pieces beside a
+            // long one: the lookups' buckets are sized by the median edge).
+            let spread = if next() < 0.5 { 10.0 } else { 0.05 };
             let mut cuts = |n: usize| {
-                let mut v: Vec<f64> = (0..n).map(|_| next() * 10.0).collect();
+                let mut v: Vec<f64> = (0..n).map(|_| next() * spread).collect();
                 v.push(0.0);
                 v.push(10.0);
                 v.sort_by(f64::total_cmp);
