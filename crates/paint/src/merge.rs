@@ -122,7 +122,8 @@ fn union_of_rings(rings: Vec<GridRing>) -> Option<Shapes> {
 /// non-zero rule of `polygons`, each first turned the way the first one turns (as the
 /// vector writers turn the subpaths of one path), its corners rounded to the grid of
 /// `decimals` decimals (half away from zero; at most 9) and its edges passed through the
-/// grid points of the corners they meet ([`crate::snap`]). Returns shapes, each an outer
+/// grid points of the corners they meet (snap rounding: no crack opens where a corner
+/// lies on another polygon's edge). Returns shapes, each an outer
 /// ring and its holes (turned the other way), corners on that grid; collinear corners
 /// dropped. The outline is that of the snapped polygons, decided with exact integer
 /// predicates; only where two snapped edges cross is a corner rounded again, to the same
