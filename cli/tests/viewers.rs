@@ -341,7 +341,10 @@ fn the_demo_is_seamless_in_every_viewer() {
 /// Skia drew the slivers between them (0.005 px wide) far wider than they are. Within
 /// [`FINE`] levels, the shadow agreed on 99.17 % in Chromium. The pieces are now
 /// snap-rounded together (`crates/paint/src/snap.rs`), and at least [`AGREE_FINE`] is
-/// wanted there too.
+/// wanted there too. Chromium still drew a mark 28 levels light, five pixels long, in
+/// the strips' shadows, along an edge two pieces of one path shared exactly, at the
+/// corner where a third met them; a face's pieces are now written as their union, and
+/// there every smooth pixel must agree.
 #[test]
 fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
     let dir = tempdir();
@@ -351,10 +354,12 @@ fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
         assert_eq!(r.code, 0, "{}", r.stderr);
     }
     let reference = read_png(&dir.path().join("shadow.png"));
-    // The sphere's shadow on the floor, below and left of the sphere; the boxes.
+    // The sphere's shadow on the floor, below and left of the sphere; the boxes; the
+    // strips' shadows, flat pieces only, where every smooth pixel must agree.
     let windows = [
-        ("shadow", [600, 270, 820, 400]),
-        ("boxes", [400, 200, 560, 390]),
+        ("shadow", [600, 270, 820, 400], AGREE),
+        ("boxes", [400, 200, 560, 390], AGREE),
+        ("strips' shadows", [80, 200, 380, 410], 1.0),
     ];
     let mut report = Vec::new();
     let mut files = vec![dir.path().join("shadow.png")];
@@ -362,7 +367,7 @@ fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
     let (w, h) = (reference.width, reference.height);
     for (viewer, png) in view(dir.path(), "shadow", w, h) {
         let raster = read_png(&png);
-        for (name, window) in windows {
+        for (name, window, wanted) in windows {
             let share = agreement_in(&reference, &raster, Page::LeftOut, window, LEVELS);
             let fine = agreement_in(&reference, &raster, Page::LeftOut, window, FINE);
             report.push(format!(
@@ -370,7 +375,7 @@ fn the_demo_floors_shadow_and_boxes_are_seamless_in_every_viewer() {
                 100.0 * share,
                 100.0 * fine
             ));
-            failed |= share < AGREE || fine < AGREE_FINE;
+            failed |= share < wanted || fine < AGREE_FINE;
         }
         files.push(png);
     }

@@ -218,7 +218,8 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         seams: 0.0,
         marks: Vec::new(),
         textures: textures.list,
-        merge_pieces: ordered.visible,
+        // A face's pieces in one paint as one outline, in both orders.
+        merge_pieces: true,
         face_outlines: translucent_outlines(scene, ordered),
     }
 }

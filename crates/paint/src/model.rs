@@ -148,8 +148,10 @@ pub struct Picture {
     /// holes where needed, instead of one subpath per fragment (see `merge.rs`): the
     /// edges between a face's pieces are then not in the file. The union is taken of the
     /// polygons as written (corners rounded to the writer's decimals), so the filled
-    /// area stays that of the subpaths. Set for a visible map
-    /// ([`limn_depthsort::Ordered::visible`]). Default `false`.
+    /// area stays that of the subpaths. Set for every composed picture, painter's output
+    /// and the visible map alike: viewers then draw no mark along the edges between a
+    /// face's pieces (Chromium drew one where three pieces met at a corner). Default
+    /// `false` (each fragment a subpath, the subpaths snap-rounded together).
     pub merge_pieces: bool,
     /// The corners, on the page, of translucent input faces that lie wholly in front of
     /// the eye, by face index: every fragment of such a face lies in the convex hull of
