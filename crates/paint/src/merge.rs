@@ -101,21 +101,20 @@ fn union_of_rings(rings: Vec<GridRing>) -> Option<Shapes> {
         contours.push(contour);
     }
     let shapes = contours.simplify(FillRule::NonZero, IntOverlayOptions::default());
-    Some(
-        shapes
-            .into_iter()
-            .map(|shape| {
-                shape
-                    .into_iter()
-                    .map(|ring| {
-                        ring.into_iter()
-                            .map(|q| [i64::from(q.x), i64::from(q.y)])
-                            .collect()
-                    })
-                    .collect()
-            })
-            .collect(),
-    )
+    Some(map_corners(shapes, |q| [i64::from(q.x), i64::from(q.y)]))
+}
+
+/// `shapes` with every corner mapped by `f`.
+fn map_corners<P, Q>(shapes: Vec<Vec<Vec<P>>>, f: impl Fn(P) -> Q + Copy) -> Vec<Vec<Vec<Q>>> {
+    shapes
+        .into_iter()
+        .map(|shape| {
+            shape
+                .into_iter()
+                .map(|ring| ring.into_iter().map(f).collect())
+                .collect()
+        })
+        .collect()
 }
 
 /// The area polygons fill together, as few outlines as it takes: the union under the
@@ -155,21 +154,9 @@ pub fn union_of_polygons(
     )?;
     let shapes = union_of_rings(rings)?;
     let unit = 10f64.powi(i32::from(decimals));
-    Some(
-        shapes
-            .into_iter()
-            .map(|shape| {
-                shape
-                    .into_iter()
-                    .map(|ring| {
-                        ring.into_iter()
-                            .map(|q| [q[0] as f64 / unit, q[1] as f64 / unit])
-                            .collect()
-                    })
-                    .collect()
-            })
-            .collect(),
-    )
+    Some(map_corners(shapes, |q: [i64; 2]| {
+        [q[0] as f64 / unit, q[1] as f64 / unit]
+    }))
 }
 
 /// Whether polygon `points`, mapped to the page by `page` and rounded to the grid of

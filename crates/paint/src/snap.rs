@@ -226,20 +226,22 @@ impl HotCells {
                 HotCells::each_in(row, Some(by), columns, &mut test);
             }
         }
-        if found.len() > 1 {
-            // Along the edge: by `c · d`, `d = q − p` as rounded, so that the edge taken
-            // the other way (`d` negated exactly) gets exactly the reverse order; ties
-            // broken by the cells' order, reversed with the direction.
-            let d = [q[0] - p[0], q[1] - p[1]];
-            let forward = (d[0], d[1]) > (0.0, 0.0);
-            found.sort_unstable_by(|a, b| {
-                let ka = a[0] as f64 * d[0] + a[1] as f64 * d[1];
-                let kb = b[0] as f64 * d[0] + b[1] as f64 * d[1];
-                let tie = if forward { a.cmp(b) } else { b.cmp(a) };
-                ka.total_cmp(&kb).then(tie)
-            });
-        }
+        sort_along(found, p, q);
     }
+}
+
+/// Sorts `cells` along the edge `p`–`q`: by `c · d`, `d = q − p` as rounded, so that the
+/// edge taken the other way (`d` negated exactly) gets exactly the reverse order; ties
+/// broken by the cells' order, reversed with the direction.
+fn sort_along(cells: &mut [[i64; 2]], p: [f64; 2], q: [f64; 2]) {
+    let d = [q[0] - p[0], q[1] - p[1]];
+    let forward = (d[0], d[1]) > (0.0, 0.0);
+    cells.sort_unstable_by(|a, b| {
+        let ka = a[0] as f64 * d[0] + a[1] as f64 * d[1];
+        let kb = b[0] as f64 * d[0] + b[1] as f64 * d[1];
+        let tie = if forward { a.cmp(b) } else { b.cmp(a) };
+        ka.total_cmp(&kb).then(tie)
+    });
 }
 
 /// The x-range of segment `p`–`q` where its y lies in `[y0, y1]` (rounded outwards
@@ -294,6 +296,16 @@ mod tests {
     use i_overlay::i_float::int::point::IntPoint;
 
     use super::*;
+
+    /// Numbers drawn uniformly from [0, 1) by a xorshift generator started at `seed`.
+    fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
 
     /// Twice the signed area of a ring of grid points (exact).
     fn area2(r: &[[i64; 2]]) -> i128 {
@@ -363,14 +375,7 @@ mod tests {
                         .copied()
                         .filter(|&c| c != grid[i] && c != grid[j] && meets(p, q, c))
                         .collect();
-                    let d = [q[0] - p[0], q[1] - p[1]];
-                    let forward = (d[0], d[1]) > (0.0, 0.0);
-                    found.sort_unstable_by(|a, b| {
-                        let ka = a[0] as f64 * d[0] + a[1] as f64 * d[1];
-                        let kb = b[0] as f64 * d[0] + b[1] as f64 * d[1];
-                        let tie = if forward { a.cmp(b) } else { b.cmp(a) };
-                        ka.total_cmp(&kb).then(tie)
-                    });
+                    sort_along(&mut found, p, q);
                     out.extend(found);
                 }
                 dedup(out)
@@ -383,13 +388,7 @@ mod tests {
     /// snapped with and without them.
     #[test]
     fn the_buckets_miss_no_cell() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = uniform(0x9e37_79b9_7f4a_7c15);
         for round in 0..40 {
             let mut rings = Vec::new();
             let n = 2 + round * 5;
@@ -474,13 +473,7 @@ mod tests {
     /// grid; only rounded, slivers open.
     #[test]
     fn a_strip_cut_differently_on_each_side_tiles_its_outline() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = uniform(0x2545_f491_4f6c_dd1d);
         let mut slivers = 0;
         for _ in 0..50 {
             let angle = next() * std::f64::consts::TAU;
