@@ -78,7 +78,8 @@ pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style)
         seams: 0.0,
         marks: Vec::new(),
         textures: Vec::new(),
-        merge_pieces: ordered.visible,
+        // As `picture` composes it: a face's pieces in one paint as one outline.
+        merge_pieces: true,
         // Translucent runs are layered by their fragments' own corners alone.
         face_outlines: Default::default(),
     }
