@@ -82,5 +82,6 @@ pub(crate) fn flat_only_picture(scene: &Scene, ordered: &Ordered, style: &Style)
         merge_pieces: true,
         // Translucent runs are layered by their fragments' own corners alone.
         face_outlines: Default::default(),
+        page_image: None,
     }
 }

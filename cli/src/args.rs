@@ -7,7 +7,7 @@ use clap::error::ErrorKind;
 use clap::{Args, CommandFactory, Parser, Subcommand, ValueEnum};
 use limn::values::{
     parse_background, parse_bias, parse_crease, parse_distance, parse_fov, parse_seams, parse_size,
-    parse_tolerance, parse_vec3,
+    parse_texture_samples, parse_tolerance, parse_vec3,
 };
 use limn::{
     Against, Arith, Background, CheckOptions, CullMode, Format, Look, Method, RenderOptions,
@@ -271,6 +271,12 @@ pub struct RenderArgs {
     /// vector format, Gouraud in SVG [default: 1/255, one 8-bit step].
     #[arg(long, value_name = "T", default_value_t = 1.0 / 255.0, value_parser = parse_tolerance)]
     pub shading_tolerance: f64,
+    /// SVG and PDF: opaque textured faces are drawn from one image of the page, sampled
+    /// N times per pixel each way (their outlines stay exact; fewer samples on pages of
+    /// over 4 million); 0 draws each face's texture under its own maps (resolution
+    /// independent, but a clip per triangle for viewers).
+    #[arg(long, value_name = "N", default_value_t = limn::DEFAULT_TEXTURE_SAMPLES, value_parser = parse_texture_samples)]
+    pub texture_samples: f64,
     /// How to render: painter's order (vector) or an image-space method (PNG only).
     #[arg(long, value_enum, default_value_t = MethodArg::Painter)]
     pub method: MethodArg,
@@ -454,6 +460,7 @@ impl RenderArgs {
             seams: self.seams,
             background: self.background,
             shading_tolerance: self.shading_tolerance,
+            texture_samples: self.texture_samples,
             method: self.method.method(),
             shadow_map_size: self.shadow_map_size,
             shadow_bias: self.shadow_bias,

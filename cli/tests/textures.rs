@@ -52,9 +52,23 @@ fn a_textured_obj_in_every_format() {
         "newmtl tex\nKd 1 1 1\nillum 1\nmap_Kd img/c.png\n",
     );
     put(d.path(), "q.obj", QUAD);
+    // SVG and PDF by default from the page image (see `page_image_tiles_in_svg_and_pdf`);
+    // here each face under its own maps.
     for ext in ["svg", "pdf", "eps", "png", "tikz"] {
         let out = format!("q.{ext}");
-        let run = limn(d.path(), &["render", "q.obj", "-o", &out, "--stats", "-"]);
+        let run = limn(
+            d.path(),
+            &[
+                "render",
+                "q.obj",
+                "-o",
+                &out,
+                "--stats",
+                "-",
+                "--texture-samples",
+                "0",
+            ],
+        );
         assert_eq!(run.code, 0, "{ext}: {}", run.stderr);
         assert!(
             effects(&run.stdout).contains(&"texture".to_string()),
@@ -151,4 +165,81 @@ fn texture_errors_name_file_and_line_and_leave_no_output() {
             run.stderr
         );
     }
+}
+
+/// The image XObjects of a PDF: (width, height) each.
+fn pdf_images(bytes: &[u8]) -> Vec<(i64, i64)> {
+    let doc = lopdf::Document::load_mem(bytes).unwrap();
+    doc.objects
+        .values()
+        .filter_map(|o| o.as_stream().ok())
+        .filter(|s| s.dict.get(b"Subtype").and_then(|v| v.as_name()).ok() == Some(b"Image"))
+        .map(|s| {
+            let int = |k: &[u8]| s.dict.get(k).unwrap().as_i64().unwrap();
+            (int(b"Width"), int(b"Height"))
+        })
+        .collect()
+}
+
+#[test]
+fn page_image_tiles_in_svg_and_pdf() {
+    let d = tempdir();
+    put(d.path(), "img/c.png", checker_png(4, 2));
+    put(
+        d.path(),
+        "q.mtl",
+        "newmtl tex\nKd 1 0.5 1\nillum 1\nmap_Kd img/c.png\n",
+    );
+    put(d.path(), "q.obj", QUAD);
+    // 300 × 200 pixels, two samples each way: 600 × 400 samples in tiles of 128 (and the
+    // next tile's first column and row), only those the quad reads.
+    let size = ["--size", "300x200"];
+    let run = limn(
+        d.path(),
+        &[&["render", "q.obj", "-o", "q.svg"][..], &size].concat(),
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let svg = std::fs::read_to_string(d.path().join("q.svg")).unwrap();
+    let tiles = svg.matches("<image id=\"pg").count();
+    assert!((1..=20).contains(&tiles), "{tiles} tiles");
+    // No texture of its own, no colour filter, no per-triangle placement: one clip.
+    assert!(
+        !svg.contains("id=\"tex"),
+        "the face's texture is in the page image"
+    );
+    assert!(!svg.contains("<feColorMatrix"));
+    assert_eq!(svg.matches("<clipPath").count(), 1);
+    assert_eq!(svg.matches("<use href=\"#pg").count(), tiles);
+    let run = limn(
+        d.path(),
+        &[&["render", "q.obj", "-o", "q.pdf"][..], &size].concat(),
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let images = pdf_images(&std::fs::read(d.path().join("q.pdf")).unwrap());
+    assert_eq!(images.len(), tiles, "{images:?}");
+    assert!(
+        images.iter().all(|&(w, h)| w <= 129 && h <= 129),
+        "{images:?}"
+    );
+    // Asked for 0 samples: the texture itself, once.
+    let run = limn(
+        d.path(),
+        &[
+            &["render", "q.obj", "-o", "q0.pdf", "--texture-samples", "0"][..],
+            &size,
+        ]
+        .concat(),
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(
+        pdf_images(&std::fs::read(d.path().join("q0.pdf")).unwrap()),
+        [(6, 4)]
+    );
+    // Out of range: refused by name.
+    let run = limn(
+        d.path(),
+        &["render", "q.obj", "-o", "x.svg", "--texture-samples", "17"],
+    );
+    assert_eq!(run.code, 2, "{}", run.stderr);
+    assert!(run.stderr.contains("texture samples"), "{}", run.stderr);
 }

@@ -376,6 +376,7 @@ class Scene:
         seams: float = 1.0,
         shading: Optional[str] = None,
         shading_tolerance: float = 1.0 / 255.0,
+        texture_samples: float = 2.0,
         method: str = "painter",
         shadow_map_size: int = 2048,
         shadow_bias: float = 1e-3,
@@ -398,7 +399,9 @@ class Scene:
         background: ``(r, g, b)``, ``"#rrggbb"`` or ``"none"``. style: filled,
         hidden-line; hidden: omit, dashed; fill: background, none; crease: degrees.
         seams: seam flap width in pixels (0 to 10). shading: flat, gouraud, phong;
-        shading_tolerance: per channel (0, 1]. method: painter, zbuffer, scanline,
+        shading_tolerance: per channel (0, 1]. texture_samples: SVG and PDF draw opaque
+        textured faces from one image of the page sampled this many times per pixel each
+        way (0 to 16; 0: each face's texture under its own maps). method: painter, zbuffer, scanline,
         abuffer, warnock, raycast (a PNG). standalone: a TikZ file that compiles alone.
         max_fragments: give up beyond. visible: draw only the visible map (each face split
         exactly along what hides it, the hidden parts left out; also a scene file's
@@ -438,6 +441,7 @@ class Scene:
             seams=float(seams),
             shading=shading,
             shading_tolerance=float(shading_tolerance),
+            texture_samples=float(texture_samples),
             method=method,
             shadow_map_size=int(shadow_map_size),
             shadow_bias=float(shadow_bias),

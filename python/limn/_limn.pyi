@@ -88,6 +88,7 @@ class Scene:
         seams: float = ...,
         shading: Optional[str] = ...,
         shading_tolerance: float = ...,
+        texture_samples: float = ...,
         method: str = ...,
         shadow_map_size: int = ...,
         shadow_bias: float = ...,

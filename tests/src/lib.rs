@@ -15,3 +15,4 @@ pub mod hard_input;
 pub mod near_parallel;
 pub mod reference;
 pub mod sample;
+pub mod viewers;

@@ -8,17 +8,17 @@
 //! or crashed on, and every small face drew the whole image (pdftoppm took minutes over
 //! the Duck).
 
-use std::path::Path;
-use std::process::{Command, Stdio};
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use glam::DVec3;
 use limn_depthsort::{order, OrderOptions};
 use limn_paint::{
-    picture, Painter, PdfPainter, Picture, PngOptions, PngPainter, Style, SvgPainter,
+    draw_from_page_image, picture, Painter, PdfPainter, Picture, PngOptions, PngPainter, Style,
+    SvgPainter, DEFAULT_TEXTURE_SAMPLES,
 };
 use limn_scene::{Camera, Material, Scene, Texture};
+use limn_tests::viewers::{agreement, load_png, rasters};
 
 /// The longest a viewer may take over the picture (a few seconds each on one core;
 /// the bound leaves room for a busy machine).
@@ -99,127 +99,38 @@ fn globe_picture() -> Picture {
     picture(&scene, &o, &Style::default())
 }
 
-/// Runs `cmd` with a deadline of [`BOUND`]; `None` when the program is not installed.
-fn run_within(mut cmd: Command, what: &str) -> Option<Duration> {
-    let start = Instant::now();
-    let mut child = match cmd.stdout(Stdio::null()).stderr(Stdio::piped()).spawn() {
-        Ok(c) => c,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            eprintln!("SKIPPED: {what} is not installed");
-            return None;
-        }
-        Err(e) => panic!("{what}: {e}"),
-    };
-    loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            let took = start.elapsed();
-            let mut err = String::new();
-            if let Some(mut e) = child.stderr.take() {
-                std::io::Read::read_to_string(&mut e, &mut err).unwrap();
-            }
-            assert!(status.success(), "{what} failed: {status}: {err}");
-            eprintln!("{what}: {:.2} s", took.as_secs_f64());
-            return Some(took);
-        }
-        if start.elapsed() > BOUND {
-            let _ = child.kill();
-            let _ = child.wait();
-            panic!("{what} took more than {} s", BOUND.as_secs());
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-}
-
-/// RGBA pixels of a PNG file.
-fn load(path: &Path) -> Vec<u8> {
-    resvg::tiny_skia::Pixmap::load_png(path)
-        .unwrap()
-        .data()
-        .to_vec()
-}
-
-/// Over the pixels whose 3 × 3 neighbourhood is opaque in limn's PNG (the inside of
-/// the globe, away from its silhouette), the share within 16 levels per channel of
-/// the viewer's (composited on white, as the viewers of PDF draw it).
-fn agreement(png: &[u8], viewer: &[u8], w: usize, h: usize) -> f64 {
-    let (mut agree, mut compared) = (0usize, 0usize);
-    for y in 1..h - 1 {
-        for x in 1..w - 1 {
-            let opaque = (0..9).all(|k| png[4 * ((y + k / 3 - 1) * w + x + k % 3 - 1) + 3] == 255);
-            if !opaque {
-                continue;
-            }
-            let at = 4 * (y * w + x);
-            let va = f64::from(viewer[at + 3]) / 255.0;
-            let near = (0..3).all(|c| {
-                let v = f64::from(viewer[at + c]) + (1.0 - va) * 255.0;
-                (v - f64::from(png[at + c])).abs() <= 16.0
-            });
-            compared += 1;
-            agree += usize::from(near);
-        }
-    }
-    assert!(compared > 20_000, "{compared} pixels compared");
-    agree as f64 / compared as f64
-}
-
 #[test]
 fn a_duck_sized_textured_mesh_opens_quickly_and_as_drawn() {
+    // Each face under its own maps, and (as the command writes SVG and PDF) drawn
+    // from the page image; limn's PNG of the picture as composed is the reference.
     let pic = globe_picture();
-    let (w, h) = (pic.width as usize, pic.height as usize);
     let (png, _) = PngPainter::new(PngOptions::default()).render(&pic).unwrap();
     let png = png.data().to_vec();
+    opens_quickly_and_as_drawn(&pic, &png);
+    let mut paged = pic.clone();
+    assert!(draw_from_page_image(&mut paged, DEFAULT_TEXTURE_SAMPLES) > 600);
+    opens_quickly_and_as_drawn(&paged, &png);
+}
+
+/// `pic` in SVG and PDF rasterised by each installed viewer within [`BOUND`] and
+/// agreeing with `png` (limn's raster of the same page).
+fn opens_quickly_and_as_drawn(pic: &Picture, png: &[u8]) {
+    let (w, h) = (pic.width as usize, pic.height as usize);
     let dir = tempfile::tempdir().unwrap();
     let (svg, pdf) = (dir.path().join("globe.svg"), dir.path().join("globe.pdf"));
     let mut out = Vec::new();
-    SvgPainter::default().paint(&pic, &mut out).unwrap();
+    SvgPainter::default().paint(pic, &mut out).unwrap();
     std::fs::write(&svg, &out).unwrap();
     let mut out = Vec::new();
-    PdfPainter::default().paint(&pic, &mut out).unwrap();
+    PdfPainter::default().paint(pic, &mut out).unwrap();
     std::fs::write(&pdf, &out).unwrap();
-
-    let mut cmd = Command::new("rsvg-convert");
-    let rsvg = dir.path().join("rsvg.png");
-    cmd.arg("-o").arg(&rsvg).arg(&svg);
-    if run_within(cmd, "rsvg-convert").is_some() {
-        let share = agreement(&png, &load(&rsvg), w, h);
+    for (viewer, raster) in rasters(&svg, &pdf, BOUND) {
+        let (share, compared) = agreement(png, &load_png(&raster).0, w, h, 16.0);
         eprintln!(
-            "rsvg-convert: {:.2} % of the inside within 16 levels",
+            "{viewer}: {:.2} % of the inside within 16 levels",
             100.0 * share
         );
-        assert!(share >= 0.97, "rsvg-convert: {share}");
-    }
-    let mut cmd = Command::new("pdftoppm");
-    let stem = dir.path().join("poppler");
-    cmd.args(["-r", "72", "-png", "-singlefile"])
-        .arg(&pdf)
-        .arg(&stem);
-    if run_within(cmd, "pdftoppm").is_some() {
-        let share = agreement(&png, &load(&stem.with_extension("png")), w, h);
-        eprintln!(
-            "pdftoppm: {:.2} % of the inside within 16 levels",
-            100.0 * share
-        );
-        assert!(share >= 0.97, "pdftoppm: {share}");
-    }
-    let mut cmd = Command::new("gs");
-    let gs = dir.path().join("gs.png");
-    cmd.args([
-        "-q",
-        "-dSAFER",
-        "-dBATCH",
-        "-dNOPAUSE",
-        "-sDEVICE=png16m",
-        "-r72",
-    ])
-    .arg(format!("-sOutputFile={}", gs.display()))
-    .arg(&pdf);
-    if run_within(cmd, "ghostscript").is_some() {
-        let share = agreement(&png, &load(&gs), w, h);
-        eprintln!(
-            "ghostscript: {:.2} % of the inside within 16 levels",
-            100.0 * share
-        );
-        assert!(share >= 0.97, "ghostscript: {share}");
+        assert!(compared > 20_000, "{compared} pixels compared");
+        assert!(share >= 0.97, "{viewer}: {share}");
     }
 }

@@ -6,8 +6,8 @@ use std::sync::Arc;
 use glam::DVec3;
 use limn_depthsort::{order, OrderOptions};
 use limn_paint::{
-    affine_pieces, picture, EpsPainter, Painter, PdfPainter, Picture, PngOptions, PngPainter,
-    Style, SvgPainter, MAX_PERSPECTIVE_ERROR,
+    affine_pieces, draw_from_page_image, picture, EpsPainter, Painter, PdfPainter, Picture,
+    PngOptions, PngPainter, Style, SvgPainter, DEFAULT_TEXTURE_SAMPLES, MAX_PERSPECTIVE_ERROR,
 };
 use limn_scene::{Camera, Material, Scene, Texture, TextureAlpha, Wrap};
 
@@ -1028,5 +1028,74 @@ fn texture_alpha_cuts_and_blends_in_every_format() {
                 }
             }
         }
+    }
+}
+
+/// `pic` with its opaque textured fragments drawn from the page image, as the command
+/// writes SVG and PDF.
+fn paged(pic: &Picture) -> Picture {
+    let mut p = pic.clone();
+    assert!(draw_from_page_image(&mut p, DEFAULT_TEXTURE_SAMPLES) > 0);
+    p
+}
+
+#[test]
+fn the_page_image_matches_the_png_painter() {
+    // The quad unlit (a fill colour) and lit, the 8 × 8 floor (128 triangles, one run:
+    // no hairline, every pixel inside opaque) and the smoothly lit wall, each drawn
+    // from the page image: resvg's SVG and ghostscript's PDF against the PNG painter's
+    // picture as composed, with the bounds of the tests above. Without the texture the
+    // comparison fails.
+    let camera = Camera::new(DVec3::new(0.6, 1.4, 2.6), DVec3::ZERO, 240, 180);
+    let outline = floor_outline(&camera);
+    let mut cases = Vec::new();
+    for (cells, lit) in [(1, false), (1, true), (8, true)] {
+        let scene = textured_floor(cells, 2.0, lit, checker(8));
+        let mut pic = ordered_picture(&scene, &camera);
+        pic.background = Some([1.0; 4]);
+        cases.push((
+            format!("{cells} × {cells} cells, lit {lit}"),
+            pic,
+            outline.clone(),
+        ));
+    }
+    let wall_camera = Camera::new(DVec3::new(0.0, 0.0, 2.6), DVec3::ZERO, 240, 180);
+    let (wall, wall_outline) = textured_wall(4, true, &wall_camera);
+    let mut scene = smooth_floor(4, checker(8), limn_scene::Shading::Gouraud);
+    scene.vertices = wall.vertices;
+    scene.normals = scene
+        .vertices
+        .iter()
+        .map(|v| DVec3::new(0.9 * v.x, 0.9 * v.y, 1.0).normalize())
+        .collect();
+    let mut pic = ordered_picture(&scene, &wall_camera);
+    pic.background = Some([1.0; 4]);
+    cases.push(("the smoothly lit wall".into(), pic, wall_outline));
+    for (what, pic, outline) in cases {
+        let png = png_pixels(&pic);
+        let page = paged(&pic);
+        let (svg, rendered) = svg_pixels(&page);
+        // One clip: the run of the floor's fragments (and their flaps) as one union.
+        assert_eq!(svg.matches("<clipPath").count(), 1, "{what}");
+        assert!(!svg.contains("<feColorMatrix") && !svg.contains("mix-blend-mode"));
+        assert_agree(
+            &png,
+            &rendered,
+            pic.width,
+            &outline,
+            &format!("{what}, SVG"),
+        );
+        let mut pdf = Vec::new();
+        PdfPainter::default().paint(&page, &mut pdf).unwrap();
+        if let Some(rendered) = ghostscript_pixels(&pdf, "pdf") {
+            let what = format!("{what}, PDF");
+            assert_agree_within(&png, &rendered, pic.width, &outline, &what, FEW_GHOSTSCRIPT);
+        }
+        let flat = svg_pixels(&paged(&pic).textures_flattened()).1;
+        let (_, over, compared) = compare(&png, &flat, pic.width, &outline, MOST);
+        assert!(
+            over as f64 > 5.0 * FEW * compared as f64,
+            "{what}: flattened, {over} of {compared}"
+        );
     }
 }

@@ -53,7 +53,7 @@ pub use limn_scene::{Scene, Shading};
 pub use options::{
     Against, Background, CheckOptions, Look, Method, RenderOptions, ViewOptions, DEFAULT_CREASE,
     DEFAULT_SEAMS, DEFAULT_SHADING_TOLERANCE, DEFAULT_SHADOW_BIAS, DEFAULT_SHADOW_MAP_SIZE,
-    DEFAULT_SIZE,
+    DEFAULT_SIZE, DEFAULT_TEXTURE_SAMPLES,
 };
 pub use output::{check_writable, write_atomic, OutputError};
 pub use render::{order_scene, render, render_into, Rendered, Request};

@@ -17,6 +17,10 @@ pub const DEFAULT_SEAMS: f64 = 1.0;
 /// The default shading tolerance per colour channel (`--shading-tolerance`): one 8-bit
 /// step.
 pub const DEFAULT_SHADING_TOLERANCE: f64 = 1.0 / 255.0;
+
+/// Samples per pixel, each way, of the page image textured faces are drawn from in SVG
+/// and PDF.
+pub const DEFAULT_TEXTURE_SAMPLES: f64 = limn_paint::DEFAULT_TEXTURE_SAMPLES;
 /// The default shadow-map size of the image-space methods (`--shadow-map-size`).
 pub const DEFAULT_SHADOW_MAP_SIZE: u32 = 2048;
 /// The default shadow-map depth bias (`--shadow-bias`).
@@ -181,6 +185,10 @@ pub struct RenderOptions {
     /// Largest difference per colour channel between the painted picture and per-point
     /// shading where the format cannot interpolate exactly.
     pub shading_tolerance: f64,
+    /// SVG and PDF: samples per pixel, each way, of the one image of the page that
+    /// opaque textured faces are drawn from (0 to 16; 0 draws each face's texture under
+    /// its own maps instead; see `limn_paint::draw_from_page_image`).
+    pub texture_samples: f64,
     /// How to compute the picture.
     pub method: Method,
     /// Shadow-map size of the image-space methods.
@@ -211,6 +219,7 @@ impl Default for RenderOptions {
             seams: DEFAULT_SEAMS,
             background: None,
             shading_tolerance: DEFAULT_SHADING_TOLERANCE,
+            texture_samples: DEFAULT_TEXTURE_SAMPLES,
             method: Method::Painter,
             shadow_map_size: DEFAULT_SHADOW_MAP_SIZE,
             shadow_bias: DEFAULT_SHADOW_BIAS,
@@ -264,6 +273,7 @@ impl RenderOptions {
         self.view.validate()?;
         v(values::seams(self.seams))?;
         v(values::tolerance(self.shading_tolerance))?;
+        v(values::texture_samples(self.texture_samples))?;
         v(values::shadow_map_size(self.shadow_map_size))?;
         v(values::bias(self.shadow_bias))?;
         if let Some(Background::Colour(c)) = self.background {

@@ -8,8 +8,9 @@ use std::time::Instant;
 
 use limn_depthsort::{order, order_with_marks, OrderError, OrderOptions, Ordered, VisibleMarks};
 use limn_paint::{
-    add_seam_flaps, hidden_line_picture, painter_for, picture_with_marks_unflapped, Format,
-    Painter, Picture, SvgOptions, SvgPainter, TikzOptions, TikzPainter,
+    add_seam_flaps, draw_from_page_image, hidden_line_picture, painter_for,
+    picture_with_marks_unflapped, Format, Painter, Picture, SvgOptions, SvgPainter, TikzOptions,
+    TikzPainter,
 };
 use limn_scene::{Camera, Effects, Scene};
 
@@ -202,7 +203,7 @@ fn run<'a>(
     ev.phase("writing");
     let tolerance = settings::tolerance(o, scene, format);
     let style = settings::style(o, &loaded.settings, background, tolerance);
-    let pic = match (&hidden_line, &drawn_scene) {
+    let mut pic = match (&hidden_line, &drawn_scene) {
         (Some(h), Some((s, first))) => {
             hidden_line_picture(s, &mut ordered, &marks, *first, h, &style)
         }
@@ -213,6 +214,9 @@ fn run<'a>(
             pic
         }
     };
+    if matches!(format, Format::Svg | Format::Pdf) {
+        draw_from_page_image(&mut pic, o.texture_samples);
+    }
     let painter: Box<dyn Painter> = match format {
         Format::Tikz => Box::new(TikzPainter::new(TikzOptions {
             standalone: o.standalone,

@@ -46,6 +46,16 @@ pub fn tolerance(v: f64) -> Result<f64, String> {
     Ok(v)
 }
 
+/// Samples per pixel of the page image textured faces are drawn from: 0 to 16.
+pub fn texture_samples(v: f64) -> Result<f64, String> {
+    if !(0.0..=16.0).contains(&v) {
+        return Err(format!(
+            "texture samples `{v}` must be between 0 and 16 per pixel"
+        ));
+    }
+    Ok(v)
+}
+
 /// A seam width in pixels: 0 to 10.
 pub fn seams(v: f64) -> Result<f64, String> {
     if !(0.0..=10.0).contains(&v) {
@@ -137,6 +147,12 @@ pub fn parse_tolerance(s: &str) -> Result<f64, String> {
 /// A seam width.
 pub fn parse_seams(s: &str) -> Result<f64, String> {
     seams(number(s)?).map_err(|_| format!("seam width `{s}` must be between 0 and 10 pixels"))
+}
+
+/// Samples per pixel of the page image textured faces are drawn from.
+pub fn parse_texture_samples(s: &str) -> Result<f64, String> {
+    texture_samples(number(s)?)
+        .map_err(|_| format!("texture samples `{s}` must be between 0 and 16 per pixel"))
 }
 
 /// A crease angle.

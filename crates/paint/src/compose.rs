@@ -221,6 +221,7 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
         // A face's pieces in one paint as one outline, in both orders.
         merge_pieces: true,
         face_outlines: translucent_outlines(scene, ordered),
+        page_image: None,
     }
 }
 

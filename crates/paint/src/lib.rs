@@ -110,6 +110,7 @@ mod texture_collapse;
 mod texture_images;
 mod texture_levels;
 mod texture_mask;
+mod texture_page;
 mod texture_patches;
 mod texture_pieces;
 mod texturing;
@@ -128,12 +129,13 @@ pub use hidden_line::{hidden_line_picture, HiddenLineStyle};
 pub use merge::union_of_polygons;
 pub use model::{
     ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
-    Outline, PaintFragment, Picture, Texture, TextureAlpha, TextureMap,
+    Outline, PageImage, PaintFragment, Picture, Texture, TextureAlpha, TextureMap,
 };
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};
 pub use png::{PngOptions, PngPainter};
 pub use seams::{seam_flaps, seam_flaps_beside_strokes, seam_flaps_indexed, FlapJoin};
 pub use svg::{SvgOptions, SvgPainter};
+pub use texture_page::{draw_from_page_image, DEFAULT_TEXTURE_SAMPLES};
 pub use texture_pieces::{affine_pieces, AffinePiece, MAX_PERSPECTIVE_ERROR};
 pub use tikz::{TikzOptions, TikzPainter, MAX_TIKZ_SIDE, MAX_TIKZ_STROKE};

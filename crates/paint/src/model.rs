@@ -159,6 +159,21 @@ pub struct Picture {
     /// two faces' fragments apart (see [`PaintFragment::face`]). Empty by default; a
     /// face left out is judged by its fragments' own corners.
     pub face_outlines: BTreeMap<u32, Vec<[f64; 2]>>,
+    /// The texture that is an image of the page, sampled by
+    /// [`crate::draw_from_page_image`]: the vector writers embed it in tiles and draw
+    /// each run of the fragments that read it from the tiles it covers. `None` by
+    /// default.
+    pub page_image: Option<PageImage>,
+}
+
+/// An image of the page among [`Picture::textures`]: sample `(i, j)` (its centre) lies
+/// at page point `((i + ½) / samples, (j + ½) / samples)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PageImage {
+    /// Its index in [`Picture::textures`].
+    pub texture: u32,
+    /// Samples per page unit, each way.
+    pub samples: f64,
 }
 
 impl Picture {

@@ -36,7 +36,13 @@
 //!   as approximated. Smoothly lit textured fragments (vertex colours) instead wait,
 //!   consecutive opaque runs together, and their triangle mesh goes over their textures
 //!   in one transparency group drawn with `/Mul gs` (inside the group the fills cover
-//!   each other as untextured layers do, so each pixel is multiplied once).
+//!   each other as untextured layers do, so each pixel is multiplied once). A run
+//!   whose fragments all share one affine map is drawn whole only, clipped to the
+//!   union of its fragments.
+//! - The page image ([`crate::draw_from_page_image`], [`Picture::page_image`]): not
+//!   written itself; each of its tiles some fragment reads is an image XObject after
+//!   the textures', and a run drawn from it is `q`, its union as the clip, a
+//!   `q w 0 0 h x y cm /ImN Do Q` per tile its fragments read, `Q`.
 //! - Outlines: `w`, round caps and joins and the stroke colour are set once; each run's
 //!   original edges are one path stroked with `S` right after the run's fill.
 //! - Marks: each inside `q … Q`, so they leave the fragments' state alone. Line pieces are
@@ -58,7 +64,8 @@ use super::merge;
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::pdf_objects::ObjectWriter;
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::texture_pieces::{affine_pieces, pieces_over};
+use super::texture_page::{shared_affine_map, Tiles};
+use super::texture_pieces::{affine_pieces, pieces_over, push_flipped_outline};
 use super::{
     pdf_texture, svg_texture, texture_images, texture_mask, Label, PaintError, PaintStats, Painter,
     Picture,
@@ -136,8 +143,13 @@ struct Content {
     outline_stroke: Option<([u32; 3], u64)>,
     /// Whether a label uses the font `/F1`.
     font: bool,
-    /// The textures (padded RGB rows, width, height) as image XObjects `/Im0`, …
+    /// The textures (padded RGB rows, width, height) as image XObjects `/Im0`, …,
+    /// then the tiles of the page image drawn (the page image itself empty: not
+    /// written).
     images: Vec<(Vec<u8>, u32, u32)>,
+    /// The page image in tiles, if the picture has one, and per tile the index in
+    /// `images` of its XObject (tiles no fragment reads have none).
+    page_tiles: Option<(Tiles, Vec<Option<usize>>)>,
     /// Per texture: a blended one's padded alpha rows, its image's soft mask.
     image_alphas: Vec<Option<Vec<u8>>>,
     /// Per texture: a cut-out's shown texels, the clip of each repetition.
@@ -276,29 +288,60 @@ impl Content {
                 .into_iter()
                 .next()
         });
-        if let Some(whole) = &whole {
-            if !pdf_texture::write_clipped(
-                &mut self.buf,
-                &polys,
-                whole,
-                k,
-                size,
-                mask.as_deref(),
-                multiply_inside.as_deref(),
-                self.height,
-                self.d,
-            ) {
-                mean_fill(self, &polys);
+        // Fragments drawn from the page image share one affine map (see
+        // `texture_page.rs`): the whole run is all there is to draw, its outline their
+        // union (the edges between them are then not in the clip).
+        // The page image (see `texture_page.rs`) is drawn from its tiles, never under a
+        // map of its own.
+        let paged = self
+            .page_tiles
+            .as_ref()
+            .is_some_and(|(t, _)| t.texture == k);
+        let shared = (paged || whole.is_some()) && shared_affine_map(run).is_some();
+        if paged || whole.is_some() {
+            let height = self.height;
+            let mut outline = Vec::new();
+            match (shared && self.merge)
+                .then(|| merge::union(run, self.d, |p| [p[0], height - p[1]]))
+                .flatten()
+            {
+                Some(shapes) => shapes
+                    .iter()
+                    .for_each(|shape| merge::push_moveto_lineto(&mut outline, shape, self.d)),
+                None => push_flipped_outline(&mut outline, &polys, height, self.d),
+            }
+            match (&self.page_tiles, &whole) {
+                (Some((tiles, images)), _) if paged => {
+                    write_tiled(&mut self.buf, &outline, run, tiles, images, height, self.d);
+                }
+                (_, Some(whole))
+                    if !pdf_texture::write_clipped(
+                        &mut self.buf,
+                        &outline,
+                        whole,
+                        k,
+                        size,
+                        mask.as_deref(),
+                        multiply_inside.as_deref(),
+                        self.height,
+                        self.d,
+                    ) =>
+                {
+                    mean_fill(self, &polys);
+                }
+                _ => {}
             }
         }
-        for f in run {
+        for f in run.iter().filter(|_| !shared && !paged) {
             let Some(map) = &f.src.texture else { continue };
             let mut flat = false;
             for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
                 let tri = [p.points.clone()];
+                let mut outline = Vec::new();
+                push_flipped_outline(&mut outline, &tri, self.height, self.d);
                 if !pdf_texture::write_clipped(
                     &mut self.buf,
-                    &tri,
+                    &outline,
                     &p,
                     k,
                     size,
@@ -474,6 +517,7 @@ impl Painter for PdfPainter {
     ) -> Result<PaintStats, PaintError> {
         let checked = check(picture)?;
         let (w, h) = (f64::from(picture.width), f64::from(picture.height));
+        let tiles = Tiles::of(picture);
         let mut c = Content {
             // About 18 bytes per corner and 32 per fill: one allocation in the usual case.
             buf: Vec::with_capacity(
@@ -505,8 +549,14 @@ impl Painter for PdfPainter {
             images: picture
                 .textures
                 .iter()
-                .map(|t| texture_images::rgb_rows(t))
+                .enumerate()
+                .map(|(k, t)| match &tiles {
+                    // The page image is written in tiles.
+                    Some(tiles) if tiles.texture as usize == k => (Vec::new(), 0, 0),
+                    _ => texture_images::rgb_rows(t),
+                })
                 .collect(),
+            page_tiles: None,
             image_alphas: picture
                 .textures
                 .iter()
@@ -519,6 +569,21 @@ impl Painter for PdfPainter {
                 .collect(),
             multiply: false,
         };
+        if let Some(tiles) = tiles {
+            // Each tile some fragment reads, an opaque image after the textures.
+            let mut images = vec![None; tiles.count()];
+            for (id, used) in tiles.used(picture).into_iter().enumerate() {
+                let Some(t) = tiles.texture(id).filter(|_| used) else {
+                    continue;
+                };
+                let (rgb, iw, ih) = texture_images::plain_rgb_rows(&t);
+                images[id] = Some(c.images.len());
+                c.images.push((rgb, iw, ih));
+                c.image_alphas.push(None);
+                c.image_masks.push(None);
+            }
+            c.page_tiles = Some((tiles, images));
+        }
         let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
         let stats = PaintStats::default();
         if c.seams > 0.0 && checked.outline.is_none() {
@@ -672,6 +737,40 @@ impl Painter for PdfPainter {
     }
 }
 
+/// Writes the area of `outline` (path operators, y up) filled from the page image:
+/// clipped to it, each tile the fragments of `run` read, placed at its rectangle
+/// (`images`: each tile's XObject index; the page is `height` high).
+fn write_tiled(
+    buf: &mut Vec<u8>,
+    outline: &[u8],
+    run: &[Frag<'_>],
+    tiles: &Tiles,
+    images: &[Option<usize>],
+    height: f64,
+    d: u8,
+) {
+    let mut touched = vec![false; tiles.count()];
+    for f in run {
+        tiles.mark(&f.points, &mut touched);
+    }
+    buf.extend_from_slice(b"q ");
+    buf.extend_from_slice(outline);
+    buf.extend_from_slice(b"W n\n");
+    for id in (0..touched.len()).filter(|&id| touched[id]) {
+        let Some(n) = images[id] else { continue };
+        let [x, y, w, h] = tiles.rect(id);
+        buf.extend_from_slice(b"q ");
+        for v in [w, 0.0, 0.0, h, x, height - y - h] {
+            push_num(buf, v, d + 4);
+            buf.push(b' ');
+        }
+        buf.extend_from_slice(b"cm /Im");
+        push_uint(buf, n as u64);
+        buf.extend_from_slice(b" Do Q\n");
+    }
+    buf.extend_from_slice(b"Q\n");
+}
+
 impl Content {
     /// Wraps the content stream into a complete document written to `out` object by
     /// object (never whole in memory: a million-face picture's was 188 MB); returns its
@@ -703,8 +802,9 @@ impl Content {
             .map(|i| (alloc(), alloc(), i))
             .collect();
         let font = self.font.then(&mut alloc);
-        let images: Vec<(Vec<u8>, Ref)> = (0..self.images.len())
-            .map(|i| (format!("Im{i}").into_bytes(), alloc()))
+        // (The page image, written in tiles, is left out: see `page_tiles`.)
+        let images: Vec<Option<(Vec<u8>, Ref)>> = (0..self.images.len())
+            .map(|i| (self.images[i].1 > 0).then(|| (format!("Im{i}").into_bytes(), alloc())))
             .collect();
         let multiply = self.multiply.then(&mut alloc);
         let soft_masks: Vec<Option<Ref>> = self
@@ -733,9 +833,9 @@ impl Content {
                     dict.pair(Name(b"Mul"), r);
                 }
             }
-            if !images.is_empty() || !forms.is_empty() {
+            if images.iter().any(Option::is_some) || !forms.is_empty() {
                 let mut dict = res.x_objects();
-                for (name, r) in &images {
+                for (name, r) in images.iter().flatten() {
                     dict.pair(Name(name), *r);
                 }
                 for (r, _, i) in &forms {
@@ -768,7 +868,8 @@ impl Content {
             ..
         } = self;
         drop(buf);
-        for (((_, r), (rgb, iw, ih)), soft_mask) in images.iter().zip(&pixels).zip(&soft_masks) {
+        for ((image, (rgb, iw, ih)), soft_mask) in images.iter().zip(&pixels).zip(&soft_masks) {
+            let Some((_, r)) = image else { continue };
             let data = miniz_oxide::deflate::compress_to_vec_zlib(rgb, 6);
             let mut x = pdf.object(*r)?.image_xobject(*r, &data);
             x.filter(pdf_writer::Filter::FlateDecode);

@@ -7,10 +7,13 @@
 
 use super::number::{push_num, push_uint};
 use super::texture_images::unit_square_placement;
-use super::texture_pieces::{push_flipped_outline, AffinePiece};
+#[cfg(doc)]
+use super::texture_pieces::push_flipped_outline;
+use super::texture_pieces::AffinePiece;
 
-/// Writes the polygons `polys` (page coordinates y down; the page is `height` high)
-/// textured under `piece`'s map: `q`, the polygons as the clip (non-zero rule), one `cm /ImK Do` per texture repetition it reaches, `Q`.
+/// Writes the area of `outline` (path operators on the page, y up: see
+/// [`push_flipped_outline`]) textured under `piece`'s map: `q`, the outline as the clip
+/// (non-zero rule), one `cm /ImK Do` per texture repetition it reaches, `Q`.
 /// Returns `false`, writing nothing, when it reaches too many repetitions (see
 /// [`AffinePiece::repetitions`]).
 /// `padded` is the size of the embedded (padded) image; `mask` a cut-out's shown
@@ -19,7 +22,7 @@ use super::texture_pieces::{push_flipped_outline, AffinePiece};
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn write_clipped(
     buf: &mut Vec<u8>,
-    polys: &[Vec<[f64; 2]>],
+    outline: &[u8],
     piece: &AffinePiece,
     k: u32,
     padded: (u32, u32),
@@ -33,7 +36,7 @@ pub(crate) fn write_clipped(
         return false;
     };
     buf.extend_from_slice(b"q ");
-    push_flipped_outline(buf, polys, height, d);
+    buf.extend_from_slice(outline);
     buf.extend_from_slice(b"W n\n");
     for tile in tiles {
         buf.extend_from_slice(b"q ");

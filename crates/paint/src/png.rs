@@ -508,30 +508,16 @@ fn textured(
                 }
             }
             let f = &run[best.1];
-            // The colour without the texture: the fill, or the vertex colours
-            // interpolated (weights clamped to the triangle for the rim).
-            let fill = match &f.colors {
-                None => f.src.fill,
-                Some(cs) => {
-                    let l = best.3.map(|v: f64| v.max(0.0));
-                    let sum = (l[0] + l[1] + l[2]).max(f64::MIN_POSITIVE);
-                    let at = [0, best.2, best.2 + 1];
-                    let mut c = [0.0; 4];
-                    for k in 0..3 {
-                        c[k] = (0..3).map(|j| l[j] * cs[at[j]][k]).sum::<f64>() / sum;
-                    }
-                    c
-                }
-            };
             // The texture's alpha (1 unless drawn) multiplies the opacity.
-            let (c, ta) = match &maps[best.1] {
-                Some(map) => {
-                    let tex = &textures[map.texture as usize];
-                    let t = tex.sample_rgba(map.st_at([px, py]).unwrap_or([f64::NAN; 2]));
-                    ([0, 1, 2].map(|k| (fill[k] * t[k]).clamp(0.0, 1.0)), t[3])
-                }
-                None => ([0, 1, 2].map(|k| fill[k].clamp(0.0, 1.0)), 1.0),
-            };
+            let (c, ta) = crate::texture_page::textured_colour(
+                f.src.fill,
+                f.colors.as_deref(),
+                best.2,
+                best.3,
+                maps[best.1].as_ref(),
+                textures,
+                [px, py],
+            );
             if ta <= 0.0 {
                 continue;
             }

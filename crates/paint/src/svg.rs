@@ -52,7 +52,14 @@
 //! fills of consecutive opaque ones are written after their textures as one
 //! `<g style="mix-blend-mode:multiply">` (a translucent one's inside its own group). A fragment drawn as two triangles or more is first drawn whole under one
 //! affine map (its first fan triangle's), so the hairlines between its triangles show
-//! nearly the same texels.
+//! nearly the same texels. A run whose fragments all share one affine map is drawn
+//! whole only, clipped to the union of its fragments.
+//!
+//! **The page image** ([`crate::draw_from_page_image`], [`Picture::page_image`]): its
+//! tiles are embedded instead, each an `<image id="pgN" x y width height>` placed on the
+//! page (see `texture_page.rs`), and a run drawn from it is one `<clipPath id="tcN">`
+//! (the union of its fragments) and a `<g clip-path="url(#tcN)">` holding a
+//! `<use href="#pgN"/>` per tile its fragments read.
 //!
 //! The `svg` crate could build the same document, but it stores numbers as `f32` and
 //! allocates per attribute; the benchmark `paint` compares both (see BENCHMARKS.md).
@@ -69,6 +76,7 @@ use super::number::{
     alpha_milli, push_hex_color, push_milli, push_num, push_uint, push_xml_attr, rgb_u8, Sink,
 };
 use super::runs::{check, reversals, walk_with_marks, Frag};
+use super::texture_page::Tiles;
 use super::{
     svg_smooth_run, svg_texture, Label, Outline, PaintError, PaintStats, Painter, Picture,
 };
@@ -173,7 +181,9 @@ impl Painter for SvgPainter {
             b.extend_from_slice(b"/>\n");
         }
 
-        svg_texture::write_defs(b, &picture.textures)?;
+        let tiles = Tiles::of(picture);
+        let used = tiles.as_ref().map(|t| t.used(picture));
+        svg_texture::write_defs(b, &picture.textures, tiles.as_ref().zip(used.as_deref()))?;
         let group: Cell<Option<u32>> = Cell::new(None);
         let tolerance = if self.options.tolerance > 0.0 {
             self.options.tolerance
@@ -181,7 +191,7 @@ impl Painter for SvgPainter {
             crate::phong::DEFAULT_TOLERANCE
         };
         let gradients = Cell::new(0u64);
-        let textured = RefCell::new(svg_texture::SvgTextures::default());
+        let textured = RefCell::new(svg_texture::SvgTextures::new(tiles));
         let means: Vec<[f64; 3]> = picture.textures.iter().map(|t| t.mean()).collect();
         let sink = RefCell::new(sink);
         let stats = RefCell::new(stats);
@@ -324,10 +334,16 @@ impl Painter for SvgPainter {
             if let Some(k) = texture {
                 let mut g = gradients.get();
                 let inside = (smooth && !lit_run).then_some((tolerance, &mut g));
-                stats.paths +=
-                    textured
-                        .borrow_mut()
-                        .run(b, run, k, alpha, means[k as usize], d, inside);
+                stats.paths += textured.borrow_mut().run(
+                    b,
+                    run,
+                    k,
+                    alpha,
+                    means[k as usize],
+                    d,
+                    merge,
+                    inside,
+                );
                 gradients.set(g);
                 if lit_run {
                     lit.borrow_mut().push(run.to_vec());

@@ -4,12 +4,15 @@ use std::collections::HashMap;
 
 use super::number::{push_hex_color, push_num, push_uint, rgb_u8};
 use super::runs::{reversals, Frag};
+use super::texture_page::{shared_affine_map, Tiles};
 use super::texture_pieces::{affine_pieces, pieces_over, AffinePiece};
-use super::{svg_smooth_run, texture_images, texture_mask, PaintError, Texture};
+use super::{merge, svg_smooth_run, texture_images, texture_mask, PaintError, Texture};
 
 /// Ids handed out while writing: clip paths and colour filters.
 #[derive(Default)]
 pub(crate) struct SvgTextures {
+    /// The picture's page image in tiles (`<image id="pgN">`), if it has one.
+    pub tiles: Option<Tiles>,
     clips: u64,
     /// Fill colour → the id number of its `<filter id="mN">`.
     filters: HashMap<[u8; 3], usize>,
@@ -17,20 +20,44 @@ pub(crate) struct SvgTextures {
     pub approximated: usize,
 }
 
-/// Writes the `<defs>` of the textures (nothing when there are none).
+/// Writes the `<defs>` of the textures (nothing when there are none): each texture
+/// once, but the page image (`tiles`, with the flags of the tiles drawn) as its tiles
+/// drawn, `<image id="pgN">` each placed on the page.
 pub(crate) fn write_defs(
     b: &mut Vec<u8>,
     textures: &[std::sync::Arc<Texture>],
+    tiles: Option<(&Tiles, &[bool])>,
 ) -> Result<(), PaintError> {
     if textures.is_empty() {
         return Ok(());
     }
+    let unencodable = || PaintError::Style {
+        what: "texture",
+        reason: "the image cannot be encoded as PNG",
+    };
     b.extend_from_slice(b"<defs>\n");
+    if let Some((tiles, used)) = tiles {
+        for id in (0..tiles.count()).filter(|&id| used[id]) {
+            let uri = tiles
+                .texture(id)
+                .and_then(|t| texture_images::plain_png_data_uri(&t))
+                .ok_or_else(unencodable)?;
+            b.extend_from_slice(b"<image id=\"pg");
+            push_uint(b, id as u64);
+            b.push(b'"');
+            rect_attrs(b, tiles.rect(id));
+            b.extend_from_slice(
+                b" preserveAspectRatio=\"none\" style=\"image-rendering:smooth\" href=\"",
+            );
+            b.extend_from_slice(uri.as_bytes());
+            b.extend_from_slice(b"\"/>\n");
+        }
+    }
     for (k, t) in textures.iter().enumerate() {
-        let uri = texture_images::png_data_uri(t).ok_or(PaintError::Style {
-            what: "texture",
-            reason: "the image cannot be encoded as PNG",
-        })?;
+        if tiles.is_some_and(|(tiles, _)| tiles.texture as usize == k) {
+            continue;
+        }
+        let uri = texture_images::png_data_uri(t).ok_or_else(unencodable)?;
         // The padded image: its inner texels fill the unit square of texture space;
         // each repetition is clipped to that square grown by half a texel.
         let (tw, th) = (f64::from(t.width()), f64::from(t.height()));
@@ -76,6 +103,23 @@ pub(crate) fn write_defs(
     Ok(())
 }
 
+/// Appends polygons as SVG path data (`M x y L x y x y … Z` each).
+fn push_path_data(b: &mut Vec<u8>, polys: &[Vec<[f64; 2]>], d: u8) {
+    for poly in polys {
+        for (i, p) in poly.iter().enumerate() {
+            b.push(match i {
+                0 => b'M',
+                1 => b'L',
+                _ => b' ',
+            });
+            push_num(b, p[0], d);
+            b.push(b' ');
+            push_num(b, p[1], d);
+        }
+        b.push(b'Z');
+    }
+}
+
 /// Whether a run's texture lets what is behind show through (its alpha is drawn).
 pub(crate) fn see_through(run: &[Frag<'_>]) -> bool {
     run.iter()
@@ -95,12 +139,21 @@ fn rect_attrs(b: &mut Vec<u8>, r: [f64; 4]) {
 }
 
 impl SvgTextures {
+    /// Nothing written yet; the picture's page image in `tiles`, if it has one.
+    pub fn new(tiles: Option<Tiles>) -> Self {
+        SvgTextures {
+            tiles,
+            ..SvgTextures::default()
+        }
+    }
+
     /// Writes a run of textured fragments with texture `k` (opacity in thousandths,
     /// `mean` the texture's mean colour); returns the number of elements drawn.
     /// Fragments with vertex colours (smoothly lit) get no colour filter: their smooth
     /// fill is multiplied over the texture (`mix-blend-mode:multiply`), here when `lit`
     /// (the smooth tolerance and the gradient counter) is given (inside the group, a
-    /// translucent run's), else by the caller over a batch of runs.
+    /// translucent run's), else by the caller over a batch of runs. With `merge`, a run
+    /// drawn from the page image is clipped to its union (see [`crate::merge`]).
     #[allow(clippy::too_many_arguments)]
     pub fn run(
         &mut self,
@@ -110,6 +163,7 @@ impl SvgTextures {
         alpha: u16,
         mean: [f64; 3],
         d: u8,
+        merge: bool,
         lit: Option<(f64, &mut u64)>,
     ) -> usize {
         let rgb = rgb_u8(run[0].flat_rgb());
@@ -176,13 +230,34 @@ impl SvgTextures {
                 .into_iter()
                 .next()
         });
-        if let Some(whole) = &whole {
-            drawn += self.clipped(b, &polys, whole, k, mean, d);
+        // Fragments drawn from the page image share one affine map (see
+        // `texture_page.rs`): the whole run is all there is to draw, its outline their
+        // union (the edges between them are then not in the clip).
+        // The page image (see `texture_page.rs`) is drawn from its tiles, never under a
+        // map of its own.
+        let paged = self.tiles.as_ref().is_some_and(|t| t.texture == k);
+        let shared = (paged || whole.is_some()) && shared_affine_map(run).is_some();
+        if paged || whole.is_some() {
+            let mut outline = Vec::new();
+            match (shared && merge)
+                .then(|| merge::union(run, d, |p| p))
+                .flatten()
+            {
+                Some(shapes) => merge::push_svg_rings(&mut outline, shapes.iter().flatten(), d),
+                None => push_path_data(&mut outline, &polys, d),
+            }
+            drawn += match &whole {
+                _ if paged => self.tiled(b, &outline, run),
+                Some(whole) => self.clipped(b, &outline, whole, k, mean, d),
+                None => 0,
+            };
         }
-        for f in run {
+        for f in run.iter().filter(|_| !shared && !paged) {
             let Some(map) = &f.src.texture else { continue };
             for p in pieces_over(&f.points, map, whole.as_ref(), run.len() == 1) {
-                drawn += self.clipped(b, std::slice::from_ref(&p.points), &p, k, mean, d);
+                let mut outline = Vec::new();
+                push_path_data(&mut outline, std::slice::from_ref(&p.points), d);
+                drawn += self.clipped(b, &outline, &p, k, mean, d);
             }
         }
         if let Some((tolerance, gradients)) = lit.filter(|_| !see_through) {
@@ -196,33 +271,44 @@ impl SvgTextures {
         drawn
     }
 
-    /// The polygons `polys` (one path, non-zero rule) clipped out of the texture placed
-    /// by `piece`'s map (one `<use>` per repetition `piece` reaches), or filled with the
+    /// The path data `outline` (non-zero rule) clipped out of the page image: the tiles
+    /// the fragments of `run` read.
+    fn tiled(&mut self, b: &mut Vec<u8>, outline: &[u8], run: &[Frag<'_>]) -> usize {
+        let Some(tiles) = &self.tiles else { return 0 };
+        let mut touched = vec![false; tiles.count()];
+        for f in run {
+            tiles.mark(&f.points, &mut touched);
+        }
+        b.extend_from_slice(b"<clipPath id=\"tc");
+        push_uint(b, self.clips);
+        b.extend_from_slice(b"\"><path d=\"");
+        b.extend_from_slice(outline);
+        b.extend_from_slice(b"\"/></clipPath>\n<g clip-path=\"url(#tc");
+        push_uint(b, self.clips);
+        b.extend_from_slice(b")\">\n");
+        for id in (0..touched.len()).filter(|&id| touched[id]) {
+            b.extend_from_slice(b"<use href=\"#pg");
+            push_uint(b, id as u64);
+            b.extend_from_slice(b"\"/>\n");
+        }
+        b.extend_from_slice(b"</g>\n");
+        self.clips += 1;
+        1
+    }
+
+    /// The path data `outline` (non-zero rule) clipped out of the texture placed by
+    /// `piece`'s map (one `<use>` per repetition `piece` reaches), or filled with the
     /// mean colour when it reaches too many repetitions.
     fn clipped(
         &mut self,
         b: &mut Vec<u8>,
-        polys: &[Vec<[f64; 2]>],
+        outline: &[u8],
         piece: &AffinePiece,
         k: u32,
         mean: [f64; 3],
         d: u8,
     ) -> usize {
-        let path = |b: &mut Vec<u8>| {
-            for poly in polys {
-                for (i, p) in poly.iter().enumerate() {
-                    b.push(match i {
-                        0 => b'M',
-                        1 => b'L',
-                        _ => b' ',
-                    });
-                    push_num(b, p[0], d);
-                    b.push(b' ');
-                    push_num(b, p[1], d);
-                }
-                b.push(b'Z');
-            }
-        };
+        let path = |b: &mut Vec<u8>| b.extend_from_slice(outline);
         let Some(tiles) = piece.repetitions() else {
             b.extend_from_slice(b"<path d=\"");
             path(b);

@@ -68,6 +68,32 @@ pub(crate) fn png_data_uri(t: &Texture) -> Option<String> {
     Some(uri)
 }
 
+/// `t` as it is (no border): its RGB bytes, rows top to bottom, and its size.
+pub(crate) fn plain_rgb_rows(t: &Texture) -> (Vec<u8>, u32, u32) {
+    let rgb = t
+        .rgba()
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    (rgb, t.width(), t.height())
+}
+
+/// `t` as it is (no border), opaque, as a `data:image/png;base64,…` URI; `None` if it
+/// cannot be encoded.
+pub(crate) fn plain_png_data_uri(t: &Texture) -> Option<String> {
+    let (rgb, _, _) = plain_rgb_rows(t);
+    let mut out = Vec::new();
+    let mut encoder = png::Encoder::new(&mut out, t.width(), t.height());
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    let mut writer = encoder.write_header().ok()?;
+    writer.write_image_data(&rgb).ok()?;
+    writer.finish().ok()?;
+    let mut uri = String::from("data:image/png;base64,");
+    base64::engine::general_purpose::STANDARD.encode_string(out, &mut uri);
+    Some(uri)
+}
+
 /// `rgba` (`w` × `h`, straight alpha) as a PNG file.
 fn rgba_png(rgba: &[u8], w: u32, h: u32) -> Option<Vec<u8>> {
     let mut out = Vec::new();

@@ -79,6 +79,7 @@ fn picture() -> impl Strategy<Value = Picture> {
             textures: Vec::new(),
             merge_pieces,
             face_outlines: Default::default(),
+            page_image: None,
         })
 }
 
