@@ -584,6 +584,20 @@ fn a_smoothly_lit_textured_quad_shows_no_diagonal() {
     }
 }
 
+/// A Gouraud-lit textured wall (4 × 4 cells, its normals bent about the wall's own
+/// axes) and its outline seen by `camera`.
+fn smoothly_lit_wall(camera: &Camera) -> (Scene, Vec<[f64; 2]>) {
+    let (wall, outline) = textured_wall(4, true, camera);
+    let mut scene = smooth_floor(4, checker(8), limn_scene::Shading::Gouraud);
+    scene.vertices = wall.vertices;
+    scene.normals = scene
+        .vertices
+        .iter()
+        .map(|v| DVec3::new(0.9 * v.x, 0.9 * v.y, 1.0).normalize())
+        .collect();
+    (scene, outline)
+}
+
 #[test]
 fn smoothly_lit_textures_in_svg_and_pdf_match_the_png_painter() {
     // The lit colours multiplied over the texture: in SVG a group with
@@ -591,15 +605,7 @@ fn smoothly_lit_textures_in_svg_and_pdf_match_the_png_painter() {
     // mode Multiply (ghostscript), against the PNG painter's per-pixel product. Flat
     // shading (the colours of the triangles' centroids) is far off: the test can fail.
     let camera = Camera::new(DVec3::new(0.0, 0.0, 2.6), DVec3::ZERO, 240, 180);
-    let (wall, outline) = textured_wall(4, true, &camera);
-    let mut scene = smooth_floor(4, checker(8), limn_scene::Shading::Gouraud);
-    scene.vertices = wall.vertices;
-    // The normals bent about the wall's own axes.
-    scene.normals = scene
-        .vertices
-        .iter()
-        .map(|v| DVec3::new(0.9 * v.x, 0.9 * v.y, 1.0).normalize())
-        .collect();
+    let (scene, outline) = smoothly_lit_wall(&camera);
     let mut pic = ordered_picture(&scene, &camera);
     pic.background = Some([1.0; 4]);
     assert!(pic.fragments.iter().any(|f| f.vertex_colors.is_some()));
@@ -1060,14 +1066,7 @@ fn the_page_image_matches_the_png_painter() {
         ));
     }
     let wall_camera = Camera::new(DVec3::new(0.0, 0.0, 2.6), DVec3::ZERO, 240, 180);
-    let (wall, wall_outline) = textured_wall(4, true, &wall_camera);
-    let mut scene = smooth_floor(4, checker(8), limn_scene::Shading::Gouraud);
-    scene.vertices = wall.vertices;
-    scene.normals = scene
-        .vertices
-        .iter()
-        .map(|v| DVec3::new(0.9 * v.x, 0.9 * v.y, 1.0).normalize())
-        .collect();
+    let (scene, wall_outline) = smoothly_lit_wall(&wall_camera);
     let mut pic = ordered_picture(&scene, &wall_camera);
     pic.background = Some([1.0; 4]);
     cases.push(("the smoothly lit wall".into(), pic, wall_outline));
