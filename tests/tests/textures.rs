@@ -1069,13 +1069,40 @@ fn the_page_image_matches_the_png_painter() {
     let (scene, wall_outline) = smoothly_lit_wall(&wall_camera);
     let mut pic = ordered_picture(&scene, &wall_camera);
     pic.background = Some([1.0; 4]);
-    cases.push(("the smoothly lit wall".into(), pic, wall_outline));
+    cases.push((
+        "the smoothly lit wall".into(),
+        pic.clone(),
+        wall_outline.clone(),
+    ));
+    // Translucent: the wall's lit colours times its texture from an image of its own,
+    // blended once with the page.
+    for f in &mut pic.fragments {
+        f.fill[3] = 0.5;
+        if let Some(cs) = &mut f.vertex_colors {
+            cs.iter_mut().for_each(|c| c[3] = 0.5);
+        }
+    }
+    cases.push((
+        "the smoothly lit wall at opacity 0.5".into(),
+        pic,
+        wall_outline,
+    ));
     for (what, pic, outline) in cases {
         let png = png_pixels(&pic);
         let page = paged(&pic);
         let (svg, rendered) = svg_pixels(&page);
-        // One clip: the run of the floor's fragments (and their flaps) as one union.
-        assert_eq!(svg.matches("<clipPath").count(), 1, "{what}");
+        // Opaque: one clip, the run of the floor's fragments (and their flaps) as one
+        // union. Translucent: each face from an image of its own (its own unit clip).
+        let clips = svg.matches("<clipPath").count();
+        if pic.fragments.iter().all(|f| f.fill[3] >= 1.0) {
+            assert_eq!(clips, 1, "{what}");
+        } else {
+            assert_eq!(
+                svg.matches("<clipPath id=\"tc").count(),
+                clips / 2,
+                "{what}"
+            );
+        }
         assert!(!svg.contains("<feColorMatrix") && !svg.contains("mix-blend-mode"));
         assert_agree(
             &png,
@@ -1086,9 +1113,26 @@ fn the_page_image_matches_the_png_painter() {
         );
         let mut pdf = Vec::new();
         PdfPainter::default().paint(&page, &mut pdf).unwrap();
-        if let Some(rendered) = ghostscript_pixels(&pdf, "pdf") {
-            let what = format!("{what}, PDF");
-            assert_agree_within(&png, &rendered, pic.width, &outline, &what, FEW_GHOSTSCRIPT);
+        let translucent = pic.fragments.iter().any(|f| f.fill[3] < 1.0);
+        match ghostscript_pixels(&pdf, "pdf") {
+            // Ghostscript blends the edge pixels two translucent faces share twice
+            // (each face's clip takes them): a line along every edge, a few per cent of
+            // the pixels (two thirds of them with each face under its own maps).
+            Some(rendered) if translucent => {
+                let (worst, over, compared) = compare(&png, &rendered, pic.width, &outline, MOST);
+                eprintln!(
+                    "{what}, PDF: worst {worst}, {over} of {compared} pixels above {MOST} levels"
+                );
+                assert!(
+                    over as f64 <= 0.1 * compared as f64,
+                    "{what}, PDF: {over} of {compared}"
+                );
+            }
+            Some(rendered) => {
+                let what = format!("{what}, PDF");
+                assert_agree_within(&png, &rendered, pic.width, &outline, &what, FEW_GHOSTSCRIPT);
+            }
+            None => {}
         }
         let flat = svg_pixels(&paged(&pic).textures_flattened()).1;
         let (_, over, compared) = compare(&png, &flat, pic.width, &outline, MOST);

@@ -280,14 +280,19 @@ impl Content {
         self.buf.extend_from_slice(b"q\n");
         // Under the pieces, the whole run (fragments and seam flaps: one clip) under one
         // affine map, the first fan triangle's: the anti-aliased edges between pieces
-        // then show nearly the same texels. Not under a texture that shows through: it
-        // would show twice.
+        // then show nearly the same texels. Not under a texture that shows through (it
+        // would show twice), unless the run shares one affine map and the whole is all
+        // that is drawn.
         let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
-        let whole = source.as_ref().filter(|_| !see_through).and_then(|map| {
-            affine_pieces(&run[0].points, map, f64::INFINITY)
-                .into_iter()
-                .next()
-        });
+        let one_map = shared_affine_map(run).is_some();
+        let whole = source
+            .as_ref()
+            .filter(|_| !see_through || one_map)
+            .and_then(|map| {
+                affine_pieces(&run[0].points, map, f64::INFINITY)
+                    .into_iter()
+                    .next()
+            });
         // Fragments drawn from the page image share one affine map (see
         // `texture_page.rs`): the whole run is all there is to draw, its outline their
         // union (the edges between them are then not in the clip).
@@ -297,7 +302,7 @@ impl Content {
             .page_tiles
             .as_ref()
             .is_some_and(|(t, _)| t.texture == k);
-        let shared = (paged || whole.is_some()) && shared_affine_map(run).is_some();
+        let shared = (paged || whole.is_some()) && one_map;
         if paged || whole.is_some() {
             let height = self.height;
             let mut outline = Vec::new();

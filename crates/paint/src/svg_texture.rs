@@ -224,19 +224,24 @@ impl SvgTextures {
             .map(|(f, reverse)| f.oriented(reverse).collect())
             .collect();
         let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
-        // (Not under a texture that shows through: it would show twice.)
-        let whole = source.as_ref().filter(|_| !see_through).and_then(|map| {
-            affine_pieces(&run[0].points, map, f64::INFINITY)
-                .into_iter()
-                .next()
-        });
+        // (Not under a texture that shows through, unless the run shares one affine map
+        // and the whole is all that is drawn: it would show twice.)
+        let one_map = shared_affine_map(run).is_some();
+        let whole = source
+            .as_ref()
+            .filter(|_| !see_through || one_map)
+            .and_then(|map| {
+                affine_pieces(&run[0].points, map, f64::INFINITY)
+                    .into_iter()
+                    .next()
+            });
         // Fragments drawn from the page image share one affine map (see
         // `texture_page.rs`): the whole run is all there is to draw, its outline their
         // union (the edges between them are then not in the clip).
         // The page image (see `texture_page.rs`) is drawn from its tiles, never under a
         // map of its own.
         let paged = self.tiles.as_ref().is_some_and(|t| t.texture == k);
-        let shared = (paged || whole.is_some()) && shared_affine_map(run).is_some();
+        let shared = (paged || whole.is_some()) && one_map;
         if paged || whole.is_some() {
             let mut outline = Vec::new();
             match (shared && merge)

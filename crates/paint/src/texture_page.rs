@@ -15,9 +15,14 @@
 //!
 //! A point in no fragment takes the colour of the nearest fan triangle near it (the
 //! anti-aliased rim of a clip reads there); points far from every fragment are never
-//! shown and stay black. Fragments whose texture shows what is behind (cut-outs, blended
-//! alpha) or that are translucent keep their own maps: their boundary follows their
-//! texels, or what lies beneath shows through.
+//! shown and stay transparent.
+//!
+//! A face whose texture blends with what is behind it, or a translucent textured face,
+//! cannot share the page image (what lies beneath it must show through, and where faces
+//! overlap each needs its own colour): its consecutive fragments are drawn from an image
+//! of their own, sampled on the same grid over their box, with the texture's alpha; the
+//! face's opacity is applied once to it. Cut-outs keep their own maps: their boundary
+//! follows their texels.
 
 use std::sync::Arc;
 
@@ -167,18 +172,36 @@ struct Tri {
     corner: usize,
 }
 
-/// The texture map of `f` when it is drawn from the page image: an opaque textured
-/// fragment of opacity 1 whose texture shows nothing behind it.
-fn opaque_map(f: &PaintFragment, textures: &[Arc<Texture>]) -> Option<TextureMap> {
+/// How a textured fragment is drawn from page samples.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Drawn {
+    /// From the page image: opaque, of opacity 1, its texture showing nothing behind it.
+    Page(TextureMap),
+    /// From an image of its own face's fragments, their alpha (and opacity) kept: a
+    /// blended texture or a translucent face.
+    Own(TextureMap),
+}
+
+/// How `f` is drawn from page samples: `None` for an untextured or invalid fragment, a
+/// cut-out (its boundary follows its texels), or one whose vertex colours carry an
+/// opacity of their own.
+fn drawn(f: &PaintFragment, textures: &[Arc<Texture>]) -> Option<Drawn> {
     let map = f.texture.as_deref()?;
     let texture = textures.get(map.texture as usize)?;
-    let opaque = !map.see_through()
-        && texture.alpha() == TextureAlpha::Opaque
-        && f.fill[3] >= 1.0
-        && f.vertex_colors
-            .as_ref()
-            .is_none_or(|cs| cs.iter().all(|c| c[3] >= 1.0));
-    (opaque && is_valid(f)).then_some(*map)
+    let mask = map.alpha == TextureAlpha::Mask || texture.alpha() == TextureAlpha::Mask;
+    let own_alpha = f
+        .vertex_colors
+        .as_ref()
+        .is_some_and(|cs| cs.iter().any(|c| c[3] != f.fill[3]));
+    if mask || own_alpha || !is_valid(f) {
+        return None;
+    }
+    let opaque = !map.see_through() && texture.alpha() == TextureAlpha::Opaque && f.fill[3] >= 1.0;
+    Some(if opaque {
+        Drawn::Page(*map)
+    } else {
+        Drawn::Own(*map)
+    })
 }
 
 /// The map every fragment of `run` shares when it is affine (as the page image's is):
@@ -228,11 +251,15 @@ pub(crate) fn textured_colour(
 /// at `samples` points per page unit each way (fewer on a page of more than 2²² samples;
 /// see the module docs): the image is added to [`Picture::textures`] and named by
 /// [`Picture::page_image`], each such fragment becomes that image under one shared map,
-/// white and unlit, and textures no fragment reads any more are left out. Without
-/// outlines, consecutive such fragments of one object are made one face, so that the
-/// writers draw them as one run (its union one clip). Returns how many fragments are
-/// drawn from the image: 0, changing nothing, when none qualifies, `samples` is not
-/// positive or the picture already has a page image.
+/// white and unlit. Without outlines, consecutive such fragments of one object are made
+/// one face, so that the writers draw them as one run (its union one clip). A textured
+/// face that lets what is behind it show (a blended texture, or translucent) is drawn
+/// likewise from an image of its own consecutive fragments sampled on the same grid,
+/// their texture's alpha in the image and their opacity kept. Cut-outs keep their own
+/// maps (their boundary follows their texels). Textures no fragment reads any more are
+/// left out. Returns how many fragments are drawn from page samples: 0, changing
+/// nothing, when none qualifies, `samples` is not positive or the picture already has a
+/// page image.
 pub fn draw_from_page_image(picture: &mut Picture, samples: f64) -> usize {
     if samples.is_nan()
         || samples <= 0.0
@@ -241,10 +268,14 @@ pub fn draw_from_page_image(picture: &mut Picture, samples: f64) -> usize {
     {
         return 0;
     }
-    let maps: Vec<Option<TextureMap>> = picture
+    let how: Vec<Option<Drawn>> = picture
         .fragments
         .iter()
-        .map(|f| opaque_map(f, &picture.textures))
+        .map(|f| drawn(f, &picture.textures))
+        .collect();
+    let maps: Vec<Option<TextureMap>> = how
+        .iter()
+        .map(|d| d.map(|(Drawn::Page(m) | Drawn::Own(m))| m))
         .collect();
     let count = maps.iter().filter(|m| m.is_some()).count();
     if count == 0 {
@@ -252,49 +283,152 @@ pub fn draw_from_page_image(picture: &mut Picture, samples: f64) -> usize {
     }
     let (pw, ph) = (f64::from(picture.width), f64::from(picture.height));
     let s = samples.min((MAX_SAMPLES / (pw * ph)).sqrt());
-    let (w, h) = (
-        ((pw * s).ceil() as u32).max(1),
-        ((ph * s).ceil() as u32).max(1),
-    );
-    let rgba = sample_page(picture, &maps, s, w, h);
-    let Ok(image) = Texture::new("page image of the textured faces", w, h, rgba) else {
-        return 0;
-    };
-    picture.textures.push(Arc::new(image));
-    let index = (picture.textures.len() - 1) as u32;
-    // Page point (x, y) is texture point (x·s/w, y·s/h): sample (i, j) at its centre.
-    let shared = TextureMap {
-        texture: index,
-        screen_to_st: [
-            [s / f64::from(w), 0.0, 0.0],
-            [0.0, s / f64::from(h), 0.0],
-            [0.0, 0.0, 1.0],
-        ],
-        alpha: TextureAlpha::Opaque,
-    };
-    let one_run = picture.outline.is_none();
-    let mut run_face: Option<(u32, u32)> = None;
-    for (f, map) in picture.fragments.iter_mut().zip(&maps) {
-        if map.is_none() {
-            run_face = None;
+    // The faces that show what is behind them: consecutive fragments of one face, each
+    // run from an image of its own.
+    let mut own: Vec<(usize, usize)> = Vec::new();
+    for (k, d) in how.iter().enumerate() {
+        if !matches!(d, Some(Drawn::Own(_))) {
             continue;
         }
-        f.texture = Some(Box::new(shared));
-        f.fill = [1.0; 4];
+        let f = &picture.fragments[k];
+        match own.last_mut() {
+            Some((start, end))
+                if *end == k && {
+                    let g = &picture.fragments[*start];
+                    (g.object, g.face) == (f.object, f.face)
+                } =>
+            {
+                *end = k + 1;
+            }
+            _ => own.push((k, k + 1)),
+        }
+    }
+    let mut replaced: Vec<Option<TextureMap>> = vec![None; maps.len()];
+    // Their images together hold at most MAX_SAMPLES; faces beyond keep their maps.
+    let mut budget = MAX_SAMPLES;
+    for (start, end) in own {
+        let frags: Vec<usize> = (start..end).collect();
+        let Some(region) = region_of(picture, &frags, s) else {
+            continue;
+        };
+        let samples = f64::from(region.size[0]) * f64::from(region.size[1]);
+        if samples > budget {
+            continue;
+        }
+        budget -= samples;
+        let blended = frags.iter().any(|&k| {
+            let m = maps[k].as_ref();
+            m.is_some_and(|m| {
+                m.alpha == TextureAlpha::Blend
+                    || picture.textures[m.texture as usize].alpha() == TextureAlpha::Blend
+            })
+        });
+        let rgba = sample_region(picture, &frags, &maps, region);
+        let Ok(image) = Texture::new(
+            "page samples of a see-through face",
+            region.size[0],
+            region.size[1],
+            rgba,
+        ) else {
+            continue;
+        };
+        // Blended where its samples' alpha is drawn (not where all are opaque).
+        let image = if blended {
+            image.with_alpha(TextureAlpha::Blend)
+        } else {
+            image
+        };
+        let mut map = region.map(image.alpha());
+        picture.textures.push(Arc::new(image));
+        map.texture = (picture.textures.len() - 1) as u32;
+        for k in frags {
+            replaced[k] = Some(map);
+        }
+    }
+    // The page image of the opaque ones.
+    let page: Vec<usize> = (0..how.len())
+        .filter(|&k| matches!(how[k], Some(Drawn::Page(_))))
+        .collect();
+    if !page.is_empty() {
+        let region = Region {
+            origin: [0, 0],
+            size: [
+                ((pw * s).ceil() as u32).max(1),
+                ((ph * s).ceil() as u32).max(1),
+            ],
+            s,
+        };
+        let rgba = sample_region(picture, &page, &maps, region);
+        if let Ok(image) = Texture::new(
+            "page image of the textured faces",
+            region.size[0],
+            region.size[1],
+            rgba,
+        ) {
+            picture.textures.push(Arc::new(image));
+            let index = (picture.textures.len() - 1) as u32;
+            let mut shared = region.map(TextureAlpha::Opaque);
+            shared.texture = index;
+            for &k in &page {
+                replaced[k] = Some(shared);
+            }
+            picture.page_image = Some(PageImage {
+                texture: index,
+                samples: s,
+            });
+        }
+    }
+    let one_run = picture.outline.is_none();
+    let mut run_face: Option<(u32, u32)> = None;
+    let mut drawn_count = 0;
+    for (k, f) in picture.fragments.iter_mut().enumerate() {
+        let Some(map) = replaced[k] else {
+            run_face = None;
+            continue;
+        };
+        drawn_count += 1;
+        f.texture = Some(Box::new(map));
+        f.fill = [1.0, 1.0, 1.0, f.fill[3]];
         f.vertex_colors = None;
-        if one_run {
+        let paged = matches!(how[k], Some(Drawn::Page(_)));
+        if one_run && paged {
             match run_face {
                 Some((object, face)) if object == f.object => f.face = face,
                 _ => run_face = Some((f.object, f.face)),
             }
+        } else {
+            run_face = None;
         }
     }
-    picture.page_image = Some(PageImage {
-        texture: index,
-        samples: s,
-    });
     drop_unused_textures(picture);
-    count
+    drawn_count
+}
+
+/// The samples around the fragments `frags` (indices) on the grid of `s` samples per
+/// page unit, grown by [`RIM`] and kept within the page: `None` when they lie off it.
+fn region_of(picture: &Picture, frags: &[usize], s: f64) -> Option<Region> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for &k in frags {
+        for p in &picture.fragments[k].points {
+            for a in 0..2 {
+                lo[a] = lo[a].min(p[a]);
+                hi[a] = hi[a].max(p[a]);
+            }
+        }
+    }
+    let page = [f64::from(picture.width) * s, f64::from(picture.height) * s];
+    let mut origin = [0i64; 2];
+    let mut size = [0u32; 2];
+    for a in 0..2 {
+        let from = (lo[a] * s - RIM).floor().max(0.0);
+        let to = (hi[a] * s + RIM).ceil().min(page[a].ceil());
+        if to <= from {
+            return None;
+        }
+        origin[a] = from as i64;
+        size[a] = (to - from) as u32;
+    }
+    Some(Region { origin, size, s })
 }
 
 /// Leaves out of [`Picture::textures`] those no fragment reads any more (the faces'
@@ -331,16 +465,58 @@ fn drop_unused_textures(picture: &mut Picture) {
     }
 }
 
-/// The page image (RGBA rows, `w` × `h`, `s` samples per page unit): each sample the
-/// colour of the last fragment with a map in `maps` whose fan triangle holds it, or of
-/// the fan triangle nearest it within [`RIM`] samples; black elsewhere.
-fn sample_page(picture: &Picture, maps: &[Option<TextureMap>], s: f64, w: u32, h: u32) -> Vec<u8> {
-    let mut tris = Vec::new();
-    for (k, f) in picture.fragments.iter().enumerate() {
-        if maps[k].is_none() {
-            continue;
+/// A rectangle of the page's sample grid (`s` samples per page unit): its first
+/// column and row and its size, in samples.
+#[derive(Debug, Clone, Copy)]
+struct Region {
+    origin: [i64; 2],
+    size: [u32; 2],
+    s: f64,
+}
+
+impl Region {
+    /// Page point `p` in the region's samples (sample `(i, j)` is centred at
+    /// `(i + ½, j + ½)`).
+    fn at(&self, p: [f64; 2]) -> [f64; 2] {
+        [
+            p[0] * self.s - self.origin[0] as f64,
+            p[1] * self.s - self.origin[1] as f64,
+        ]
+    }
+
+    /// The map from the page to the region's image as a texture (its unit square).
+    fn map(&self, alpha: TextureAlpha) -> TextureMap {
+        let (w, h) = (f64::from(self.size[0]), f64::from(self.size[1]));
+        TextureMap {
+            texture: 0,
+            screen_to_st: [
+                [self.s / w, 0.0, -(self.origin[0] as f64) / w],
+                [0.0, self.s / h, -(self.origin[1] as f64) / h],
+                [0.0, 0.0, 1.0],
+            ],
+            alpha,
         }
-        let p = &f.points;
+    }
+}
+
+/// The image (RGBA rows) of `region`: each sample the colour (and the texture's alpha)
+/// of the last fragment of `frags` (indices in paint order, each with its map in
+/// `maps`) whose fan triangle holds it, or of the fan triangle nearest it within [`RIM`]
+/// samples; transparent black elsewhere.
+fn sample_region(
+    picture: &Picture,
+    frags: &[usize],
+    maps: &[Option<TextureMap>],
+    region: Region,
+) -> Vec<u8> {
+    let [w, h] = region.size;
+    let mut tris = Vec::new();
+    for &k in frags {
+        let p: Vec<[f64; 2]> = picture.fragments[k]
+            .points
+            .iter()
+            .map(|&q| region.at(q))
+            .collect();
         for i in 1..p.len() - 1 {
             let t = [p[0], p[i], p[i + 1]];
             let det = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1])
@@ -359,28 +535,18 @@ fn sample_page(picture: &Picture, maps: &[Option<TextureMap>], s: f64, w: u32, h
     // box grown by the rim meets it.
     let (cw, ch) = ((w as usize).div_ceil(CELL), (h as usize).div_ceil(CELL));
     let mut cells: Vec<Vec<u32>> = vec![Vec::new(); cw * ch];
-    let cell_of = |v: f64, n: usize| -> usize {
-        // In samples, then cells; clamped to the grid (NaN-free: corners are finite).
-        ((v * s - RIM) / CELL as f64)
-            .floor()
-            .clamp(0.0, n as f64 - 1.0) as usize
-    };
-    let cell_to = |v: f64, n: usize| -> usize {
-        ((v * s + RIM) / CELL as f64)
-            .floor()
-            .clamp(0.0, n as f64 - 1.0) as usize
+    let cell = |v: f64, n: usize| -> usize {
+        // Clamped to the grid (NaN-free: corners are finite).
+        (v / CELL as f64).floor().clamp(0.0, n as f64 - 1.0) as usize
     };
     for (n, t) in tris.iter().enumerate() {
-        let lo = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
-        let hi = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max);
-        if hi(0) * s < -RIM || hi(1) * s < -RIM || lo(0) * s > w as f64 + RIM {
+        let lo = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min) - RIM;
+        let hi = |k: usize| t.p.iter().map(|p| p[k]).fold(f64::NEG_INFINITY, f64::max) + RIM;
+        if hi(0) < 0.0 || hi(1) < 0.0 || lo(0) > f64::from(w) || lo(1) > f64::from(h) {
             continue;
         }
-        if lo(1) * s > h as f64 + RIM {
-            continue;
-        }
-        for cy in cell_of(lo(1), ch)..=cell_to(hi(1), ch) {
-            for cx in cell_of(lo(0), cw)..=cell_to(hi(0), cw) {
+        for cy in cell(lo(1), ch)..=cell(hi(1), ch) {
+            for cx in cell(lo(0), cw)..=cell(hi(0), cw) {
                 cells[cy * cw + cx].push(n as u32);
             }
         }
@@ -390,10 +556,10 @@ fn sample_page(picture: &Picture, maps: &[Option<TextureMap>], s: f64, w: u32, h
     rgba.par_chunks_mut(4 * w as usize)
         .enumerate()
         .for_each(|(j, row)| {
-            let y = (j as f64 + 0.5) / s;
+            let y = j as f64 + 0.5;
             let cy = j / CELL;
             for i in 0..w as usize {
-                let x = (i as f64 + 0.5) / s;
+                let x = i as f64 + 0.5;
                 let list = &cells[cy * cw + i / CELL];
                 // The last triangle holding the point, else the nearest one.
                 let mut best: Option<(f64, &Tri, [f64; 3])> = None;
@@ -413,20 +579,24 @@ fn sample_page(picture: &Picture, maps: &[Option<TextureMap>], s: f64, w: u32, h
                 }
                 let Some((_, t, l)) = best else { continue };
                 let f = &picture.fragments[t.frag];
-                let (c, _) = textured_colour(
+                let page = [
+                    (x + region.origin[0] as f64) / region.s,
+                    (y + region.origin[1] as f64) / region.s,
+                ];
+                let (c, a) = textured_colour(
                     f.fill,
                     f.vertex_colors.as_deref(),
                     t.corner,
                     l,
                     maps[t.frag].as_ref(),
                     textures,
-                    [x, y],
+                    page,
                 );
                 let px = &mut row[4 * i..4 * i + 4];
                 for k in 0..3 {
                     px[k] = (c[k] * 255.0).round() as u8;
                 }
-                px[3] = 255;
+                px[3] = (a.clamp(0.0, 1.0) * 255.0).round() as u8;
             }
         });
     rgba
@@ -516,14 +686,71 @@ mod tests {
     }
 
     #[test]
-    fn see_through_translucent_and_outlined_pictures_keep_their_maps_or_faces() {
+    fn see_through_faces_get_images_of_their_own_cut_outs_keep_their_maps() {
+        // A translucent face and a blended one: each from an image of its own (its
+        // opacity kept, the texture's alpha in the image), no page image.
+        let before = picture();
         let mut p = picture();
         p.fragments[0].fill[3] = 0.5;
+        // The second square's texture half transparent, blended.
+        let rgba = texture()
+            .rgba()
+            .chunks_exact(4)
+            .flat_map(|c| [c[0], c[1], c[2], 128])
+            .collect();
+        let half = Texture::new("half", 4, 4, rgba)
+            .unwrap()
+            .with_alpha(TextureAlpha::Blend);
+        p.textures.push(Arc::new(half));
         if let Some(m) = p.fragments[1].texture.as_deref_mut() {
             m.alpha = TextureAlpha::Blend;
+            m.texture = 1;
         }
-        assert_eq!(draw_from_page_image(&mut p, 2.0), 0);
-        assert_eq!((p.page_image, p.textures.len()), (None, 1));
+        assert_eq!(draw_from_page_image(&mut p, 2.0), 2);
+        assert_eq!((p.page_image, p.textures.len()), (None, 2));
+        let [a, b] = [0, 1].map(|k| *p.fragments[k].texture.as_deref().unwrap());
+        assert_eq!(
+            (a.alpha, b.alpha),
+            (TextureAlpha::Opaque, TextureAlpha::Blend)
+        );
+        assert_eq!(p.textures[b.texture as usize].alpha(), TextureAlpha::Blend);
+        assert_eq!(p.fragments[0].fill, [1.0, 1.0, 1.0, 0.5]);
+        assert_eq!(p.fragments[1].vertex_colors, None);
+        // Each image covers its face (grown by the rim), on the page's sample grid:
+        // the first square's 40 × 40 samples and the rim, within the page.
+        let image = &p.textures[a.texture as usize];
+        assert_eq!((image.width(), image.height()), (42, 42));
+        // Its samples are the face's colours.
+        let q = [7.25, 9.75];
+        let f = &before.fragments[0];
+        let want = textured_colour(
+            f.fill,
+            None,
+            1,
+            [1.0, 0.0, 0.0],
+            f.texture.as_deref(),
+            &before.textures,
+            q,
+        )
+        .0;
+        let got = image.sample(a.st_at(q).unwrap());
+        for k in 0..3 {
+            assert!(
+                (want[k] - got[k]).abs() <= 0.5 / 255.0 + 1e-12,
+                "{want:?} {got:?}"
+            );
+        }
+        // A cut-out keeps its map and its texture.
+        let mut p = picture();
+        if let Some(m) = p.fragments[1].texture.as_deref_mut() {
+            m.alpha = TextureAlpha::Mask;
+        }
+        assert_eq!(draw_from_page_image(&mut p, 2.0), 1);
+        assert_eq!(
+            p.fragments[1].texture.as_deref().unwrap().screen_to_st,
+            before.fragments[1].texture.as_deref().unwrap().screen_to_st
+        );
+        assert_eq!(p.textures.len(), 2);
         let mut p = picture();
         p.outline = Some(crate::Outline {
             width: 1.0,
