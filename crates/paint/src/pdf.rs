@@ -64,8 +64,8 @@ use super::merge;
 use super::number::{alpha_milli, channel_fixed, push_fixed, push_num, push_uint};
 use super::pdf_objects::ObjectWriter;
 use super::runs::{check, reversals, walk_with_marks, Frag};
-use super::texture_page::{shared_affine_map, Tiles};
-use super::texture_pieces::{affine_pieces, pieces_over, push_flipped_outline};
+use super::texture_page::{run_underlay, Tiles};
+use super::texture_pieces::{pieces_over, push_flipped_outline};
 use super::{
     pdf_texture, svg_texture, texture_images, texture_mask, Label, PaintError, PaintStats, Painter,
     Picture,
@@ -278,21 +278,8 @@ impl Content {
             _ => None,
         };
         self.buf.extend_from_slice(b"q\n");
-        // Under the pieces, the whole run (fragments and seam flaps: one clip) under one
-        // affine map, the first fan triangle's: the anti-aliased edges between pieces
-        // then show nearly the same texels. Not under a texture that shows through (it
-        // would show twice), unless the run shares one affine map and the whole is all
-        // that is drawn.
-        let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
-        let one_map = shared_affine_map(run).is_some();
-        let whole = source
-            .as_ref()
-            .filter(|_| !see_through || one_map)
-            .and_then(|map| {
-                affine_pieces(&run[0].points, map, f64::INFINITY)
-                    .into_iter()
-                    .next()
-            });
+        // Under the pieces, the whole run (fragments and seam flaps: one clip).
+        let (whole, one_map) = run_underlay(run, see_through);
         // Fragments drawn from the page image share one affine map (see
         // `texture_page.rs`): the whole run is all there is to draw, its outline their
         // union (the edges between them are then not in the clip).

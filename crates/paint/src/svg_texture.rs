@@ -4,8 +4,8 @@ use std::collections::HashMap;
 
 use super::number::{push_hex_color, push_num, push_uint, rgb_u8};
 use super::runs::{reversals, Frag};
-use super::texture_page::{shared_affine_map, Tiles};
-use super::texture_pieces::{affine_pieces, pieces_over, AffinePiece};
+use super::texture_page::{run_underlay, Tiles};
+use super::texture_pieces::{pieces_over, AffinePiece};
 use super::{merge, svg_smooth_run, texture_images, texture_mask, PaintError, Texture};
 
 /// Ids handed out while writing: clip paths and colour filters.
@@ -223,18 +223,7 @@ impl SvgTextures {
             .zip(reversals(run))
             .map(|(f, reverse)| f.oriented(reverse).collect())
             .collect();
-        let source = run.iter().find_map(|f| f.src.texture.as_deref().copied());
-        // (Not under a texture that shows through, unless the run shares one affine map
-        // and the whole is all that is drawn: it would show twice.)
-        let one_map = shared_affine_map(run).is_some();
-        let whole = source
-            .as_ref()
-            .filter(|_| !see_through || one_map)
-            .and_then(|map| {
-                affine_pieces(&run[0].points, map, f64::INFINITY)
-                    .into_iter()
-                    .next()
-            });
+        let (whole, one_map) = run_underlay(run, see_through);
         // Fragments drawn from the page image share one affine map (see
         // `texture_page.rs`): the whole run is all there is to draw, its outline their
         // union (the edges between them are then not in the clip).

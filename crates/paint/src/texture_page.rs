@@ -30,6 +30,7 @@ use limn_scene::{Texture, TextureAlpha};
 use rayon::prelude::*;
 
 use crate::runs::{is_valid, Frag};
+use crate::texture_pieces::{affine_pieces, AffinePiece};
 use crate::{PageImage, PaintFragment, Picture, TextureMap};
 
 /// Samples per page unit by default: twice the page's pixels each way.
@@ -210,6 +211,26 @@ pub(crate) fn shared_affine_map<'r>(run: &'r [Frag<'_>]) -> Option<&'r TextureMa
     let map = run.first()?.src.texture.as_deref()?;
     let affine = map.screen_to_st[2] == [0.0, 0.0, 1.0];
     (affine && run.iter().all(|f| f.src.texture.as_deref() == Some(map))).then_some(map)
+}
+
+/// What a writer draws first of a textured run (`see_through`: its texture shows what
+/// is behind it): the whole run under one affine map, its first fan triangle's, so that
+/// the anti-aliased edges between its pieces show nearly the same texels; and whether
+/// every fragment shares that one affine map (the whole is then all there is to draw).
+/// No whole under a texture that shows through, unless it is all that is drawn (it
+/// would show twice).
+pub(crate) fn run_underlay(run: &[Frag<'_>], see_through: bool) -> (Option<AffinePiece>, bool) {
+    let one_map = shared_affine_map(run).is_some();
+    let whole = run
+        .iter()
+        .find_map(|f| f.src.texture.as_deref())
+        .filter(|_| !see_through || one_map)
+        .and_then(|map| {
+            affine_pieces(&run[0].points, map, f64::INFINITY)
+                .into_iter()
+                .next()
+        });
+    (whole, one_map)
 }
 
 /// The colour of fragment `f` at page point `p` in its fan triangle `(0, corner,
