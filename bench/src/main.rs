@@ -95,13 +95,11 @@ fn ms(v: f64) -> String {
     }
 }
 
-/// The allocator: ordering and composing make and free millions of small vectors
-/// on both cores, where mimalloc's per-thread heaps cost less than the system
-/// allocator's (BENCHMARKS.md, "Allocator").
-#[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+// The allocator of the `limn` command (mimalloc; see the crate).
+use limn_alloc as _;
 
 fn main() -> Result<()> {
+    limn_alloc::return_freed_memory();
     let a = match Cli::parse().command {
         Cmd::Table(a) => a,
         Cmd::Lines(l) => return lines_bench::run(l),

@@ -14,16 +14,14 @@ use limn::{Input, Rendered, Request};
 
 use crate::terminal::Terminal;
 
-/// The allocator: ordering and composing make and free millions of small vectors
-/// on both cores, where mimalloc's per-thread heaps cost less than the system
-/// allocator's (BENCHMARKS.md, "Allocator").
-#[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+// The allocator (mimalloc; see the crate).
+use limn_alloc as _;
 
 /// Exit status when `check` finds mismatches outside the edge band.
 const MISMATCH: u8 = 3;
 
 fn main() -> ExitCode {
+    limn_alloc::return_freed_memory();
     let cli = match args::Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {

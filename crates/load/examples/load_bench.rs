@@ -13,10 +13,9 @@ use std::time::{Duration, Instant};
 
 use limn_load::{load, LoadOptions};
 
-/// The allocator of the `limn` binary, so that loading is measured as `limn render`
-/// loads (glibc's gives memory back between loads and faults it in again).
-#[global_allocator]
-static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+// The allocator of the `limn` binary, so that loading is measured as `limn render`
+// loads (glibc's gives memory back between loads and faults it in again).
+use limn_alloc as _;
 
 const RINGS: usize = 1000;
 const SIDES: usize = 500;
@@ -113,6 +112,7 @@ fn ms(d: Duration) -> String {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    limn_alloc::return_freed_memory();
     let runs: usize = std::env::args().nth(1).map_or(Ok(5), |a| a.parse())?;
     let dir = tempfile::tempdir()?;
     let named: Vec<PathBuf> = std::env::args().skip(2).map(PathBuf::from).collect();
