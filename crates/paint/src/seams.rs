@@ -130,6 +130,9 @@ pub fn seam_flaps_beside_strokes(
             (flaps, joined)
         })
         .collect();
+    // The neighbours are not asked again: released before the picture makes room for
+    // the flaps.
+    drop((later, across));
     // Joined outlines replace their fragments' own in place, block by block (the blocks
     // of the flaps): no fragment is moved.
     fragments
