@@ -77,6 +77,7 @@
 //! ```
 
 mod annotate;
+mod chunked_queue;
 mod compose;
 mod covers;
 mod eps;

@@ -13,6 +13,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use rayon::prelude::*;
 
+use crate::chunked_queue::ChunkedQueue;
 use crate::seams_across::Across;
 use crate::PaintFragment;
 
@@ -187,36 +188,62 @@ pub fn seam_flaps_beside_strokes(
 }
 
 /// The `count` flaps (each with the index of the fragment it goes after, in order of
-/// those indices) put into `fragments`: from the back, each fragment is swapped once into
-/// its final place. The composed picture leaves room for them (see `compose.rs`), so
-/// that the fragments stay where they are: a new vector of a large picture's fragments
-/// cost more in fresh pages than the moves (118–156 ms of a cold run on the 300² height
-/// fields). Also returns where each fragment went.
+/// those indices) put into `fragments`, front to back: an item put in a place still
+/// holding a fragment not yet placed sends that fragment to the back of a queue, and
+/// each fragment comes from the front of the queue (or stays where it is). The blocks
+/// of flaps are released as they are read and the queue's chunks as they are emptied,
+/// so the flaps are held about once. Placed from the back, the whole room had to be
+/// filled first (a vector of the final length) while every block was still held: a
+/// million-face picture's 700,000 flaps were held twice, 90 MB more at the highest
+/// point of its memory. The composed picture leaves room for the flaps (see
+/// `compose.rs`), so that the fragments stay in their vector: a new vector of a large
+/// picture's fragments cost more in fresh pages than the moves (118–156 ms of a cold
+/// run on the 300² height fields). Also returns where each fragment went.
 fn flaps_in_place(
     mut fragments: Vec<PaintFragment>,
-    flaps: impl DoubleEndedIterator<Item = Flap>,
+    flaps: impl Iterator<Item = Flap>,
     count: usize,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let n = fragments.len();
-    let mut at: Vec<usize> = (0..n).collect();
+    let mut at: Vec<usize> = Vec::with_capacity(n);
     // Exactly the room needed when there is none (growing by doubling would hold twice
     // the fragments' memory).
     fragments.reserve_exact(count);
-    fragments.resize_with(n + count, PaintFragment::default);
-    // Places `write..` are final, `read..write` hold empty fragments, `..read` the
-    // fragments not moved yet.
-    let (mut read, mut write) = (n, n + count);
-    for (after, flap) in flaps.rev() {
-        debug_assert!(after < read, "flaps in order of their places");
-        while read > after + 1 {
-            read -= 1;
-            write -= 1;
-            fragments.swap(read, write);
-            at[read] = write;
+    // Places `..write` are final; the fragments `at.len()..` not placed yet are those
+    // in the queue, in order, then those in places `write..n`, each in its own.
+    let mut waiting = ChunkedQueue::new();
+    let mut write = 0;
+    // Puts `item` in place `write`, sending a fragment there to the queue.
+    let put = |fragments: &mut Vec<PaintFragment>,
+               waiting: &mut ChunkedQueue<PaintFragment>,
+               write: &mut usize,
+               item| {
+        if *write < n {
+            waiting.push_back(std::mem::replace(&mut fragments[*write], item));
+        } else {
+            fragments.push(item);
         }
-        write -= 1;
-        fragments[write] = flap;
+        *write += 1;
+    };
+    let mut flaps = flaps.peekable();
+    for i in 0..n {
+        if write == i {
+            // Nothing placed before it that was not in a place of its own: it stays.
+            write += 1;
+        } else {
+            let f = waiting
+                .pop_front()
+                .expect("the fragment waits in the queue");
+            put(&mut fragments, &mut waiting, &mut write, f);
+        }
+        at.push(write - 1);
+        while let Some((_, flap)) = flaps.next_if(|(after, _)| *after == i) {
+            put(&mut fragments, &mut waiting, &mut write, flap);
+        }
     }
+    debug_assert!(flaps.next().is_none(), "every flap after a fragment");
+    debug_assert_eq!(write, n + count);
+    debug_assert!(waiting.is_empty(), "every fragment placed");
     (fragments, at)
 }
 
