@@ -53,7 +53,7 @@ fn wall() -> Scene {
         s.texcoords.extend_from_slice(&st);
         for tri in [[0, 1, 2], [0, 2, 3]] {
             let f = s.add_face(&tri.map(|i| v[i]), mat, obj).unwrap();
-            s.faces[f as usize].texcoords = Some(tri.map(|i| t0 + i as u32).to_vec());
+            s.faces[f as usize].texcoords = Some(Box::new(tri.map(|i| t0 + i as u32)));
         }
     }
     s

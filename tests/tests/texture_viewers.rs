@@ -84,7 +84,7 @@ fn globe(rings: u32, segments: u32) -> Scene {
                 let Ok(f) = s.add_face(&tri.map(|i| id[quad[i] as usize]), mat, obj) else {
                     continue; // the poles' zero-area triangles
                 };
-                s.faces[f as usize].texcoords = Some(tri.map(|i| st[i]).to_vec());
+                s.faces[f as usize].texcoords = Some(Box::new(tri.map(|i| st[i])));
             }
         }
     }

@@ -54,7 +54,7 @@ fn textured_floor(cells: u32, reps: f64, lit: bool, texture: Arc<Texture>) -> Sc
             let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
             for tri in [[a, b, c], [a, c, d]] {
                 let f = s.add_face(&tri, mat, obj).unwrap();
-                s.faces[f as usize].texcoords = Some(tri.to_vec());
+                s.faces[f as usize].texcoords = Some(Box::new(tri));
             }
         }
     }

@@ -54,7 +54,7 @@ fn scene(lit: bool) -> Scene {
     )
     .unwrap();
     s.colors = COLORS.to_vec();
-    s.faces[0].colors = Some(vec![0, 1, 2]);
+    s.faces[0].colors = Some(Box::new([0, 1, 2]));
     s.shading = Some(Shading::Flat);
     s.validate().unwrap();
     s

@@ -235,7 +235,7 @@ mod tests {
                     }
                 }
                 s.faces.push(Face {
-                    vertices,
+                    vertices: vertices.into(),
                     material: u32::from(r.next_u64().is_multiple_of(5)),
                     object: (r.next_u64() % 2) as u32,
                     normals: None,

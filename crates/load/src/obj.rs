@@ -468,10 +468,10 @@ impl Obj<'_> {
         };
         check_u32(self.scene.faces.len(), "faces", self.path)?;
         self.scene.faces.push(Face {
-            vertices,
-            normals: all_normals.then_some(normals),
-            texcoords,
-            colors,
+            vertices: vertices.into(),
+            normals: all_normals.then(|| normals.into()),
+            texcoords: texcoords.map(Into::into),
+            colors: colors.map(Into::into),
             material,
             object,
         });

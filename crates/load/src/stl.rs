@@ -135,7 +135,7 @@ impl<'a, K: std::hash::Hash + Eq + Copy> Builder<'a, K> {
             .collect::<Result<Vec<_>, _>>()?;
         check_u32(self.scene.faces.len(), "faces", self.path)?;
         self.scene.faces.push(Face {
-            vertices,
+            vertices: vertices.into(),
             normals: None,
             texcoords: None,
             colors: None,

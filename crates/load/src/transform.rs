@@ -100,7 +100,7 @@ mod tests {
             0,
             0,
         );
-        assert_eq!(s.faces[0].vertices, vec![2, 1, 0]);
+        assert_eq!(s.faces[0].vertices.to_vec(), vec![2, 1, 0]);
         assert_eq!(s.vertices[1], DVec3::new(-2.0, 0.0, 0.0));
         assert!((s.normals[0] - DVec3::Z).length() < 1e-15);
         let n = limn_scene::polygon_normal(&s.face_points(0));

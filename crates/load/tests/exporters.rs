@@ -113,7 +113,7 @@ fn ply_triangle_strips_keep_their_winding_and_restart_at_minus_one() {
         "s.ply",
         ply("ascii", &header, body.as_bytes()),
     ));
-    let faces: Vec<Vec<u32>> = s.faces.iter().map(|f| f.vertices.clone()).collect();
+    let faces: Vec<Vec<u32>> = s.faces.iter().map(|f| f.vertices.to_vec()).collect();
     assert_eq!(faces, [vec![0, 1, 2], vec![2, 1, 3], vec![1, 4, 3]]);
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
     // All counter-clockwise seen from +z, as the strip's first triangle.

@@ -77,7 +77,7 @@ mod tests {
             .unwrap();
         assert!(FaceColors::new(&s, f).is_none());
         s.colors = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-        s.faces[0].colors = Some(vec![0, 1, 2]);
+        s.faces[0].colors = Some(Box::new([0, 1, 2]));
         s.validate().unwrap();
         let c = FaceColors::new(&s, f).unwrap();
         assert_eq!(c.at(DVec3::new(2.0, 0.0, 0.0)), [0.0, 1.0, 0.0]);
@@ -96,11 +96,11 @@ mod tests {
         s.add_polygon(&[DVec3::ZERO, DVec3::X, DVec3::Y], m, o)
             .unwrap();
         s.colors = vec![[1.0, 0.0, 0.0]];
-        s.faces[0].colors = Some(vec![0, 0]);
+        s.faces[0].colors = Some(Box::new([0, 0]));
         assert!(s.validate().is_err());
-        s.faces[0].colors = Some(vec![0, 0, 1]);
+        s.faces[0].colors = Some(Box::new([0, 0, 1]));
         assert!(s.validate().is_err());
-        s.faces[0].colors = Some(vec![0, 0, 0]);
+        s.faces[0].colors = Some(Box::new([0, 0, 0]));
         s.validate().unwrap();
         s.colors[0][1] = 1.5;
         assert!(s.validate().is_err());

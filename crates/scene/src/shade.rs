@@ -412,7 +412,7 @@ mod tests {
         s.normals = vec![DVec3::X, DVec3::Y, DVec3::Z, DVec3::NEG_X];
         let f = s.add_face(&[0, 1, 2, 3], m, o).unwrap();
         assert_eq!(interpolated_normal(&s, f, DVec3::ZERO), None);
-        s.faces[0].normals = Some(vec![0, 1, 2, 3]);
+        s.faces[0].normals = Some(Box::new([0, 1, 2, 3]));
         // At a corner: that corner's normal.
         let n = interpolated_normal(&s, f, DVec3::new(2.0, 2.0, 0.0)).unwrap();
         assert!((n - DVec3::Z).length() < 1e-12);
@@ -434,7 +434,7 @@ mod tests {
             .add_polygon(&[DVec3::ZERO, DVec3::X, DVec3::Y], flat, o)
             .unwrap();
         s.normals = vec![DVec3::Z];
-        s.faces[f as usize].normals = Some(vec![0, 0, 0]);
+        s.faces[f as usize].normals = Some(Box::new([0, 0, 0]));
         assert!(!Effects::of(&s).smooth);
         s.faces[f as usize].material = lit;
         assert!(Effects::of(&s).smooth);
@@ -451,7 +451,7 @@ mod tests {
             .unwrap();
         assert_eq!(Effects::of(&s).names(), ["lighting"]);
         s.normals = vec![DVec3::Z];
-        s.faces[f as usize].normals = Some(vec![0, 0, 0]);
+        s.faces[f as usize].normals = Some(Box::new([0, 0, 0]));
         s.shading = Some(Shading::Phong);
         assert_eq!(Effects::of(&s).names(), ["lighting", "phong"]);
         s.shading = Some(Shading::Flat);

@@ -84,7 +84,7 @@ pub fn icosphere(
     scene.normals.extend(verts.iter().copied());
     for [a, b, c] in &tris {
         let id = scene.add_face(&[base + a, base + b, base + c], material, object)?;
-        scene.faces[id as usize].normals = Some(vec![nbase + a, nbase + b, nbase + c]);
+        scene.faces[id as usize].normals = Some(Box::new([nbase + a, nbase + b, nbase + c]));
     }
     Ok(tris.len())
 }

@@ -33,7 +33,7 @@ fn invalid_input_is_an_error_not_a_panic() {
     }
     let mut bad = s.clone();
     bad.faces.push(Face {
-        vertices: vec![0, 1, 9],
+        vertices: Box::new([0, 1, 9]),
         normals: None,
         texcoords: None,
         colors: None,

@@ -487,10 +487,10 @@ impl Builder<'_, '_> {
                 .map(|_| t.map(|i| t0 as u32 + i).to_vec());
             let colors = colors.as_ref().map(|_| t.map(|i| c0 as u32 + i).to_vec());
             self.scene.faces.push(Face {
-                vertices,
-                normals,
-                texcoords,
-                colors,
+                vertices: vertices.into(),
+                normals: normals.map(Into::into),
+                texcoords: texcoords.map(Into::into),
+                colors: colors.map(Into::into),
                 material,
                 object,
             });

@@ -306,12 +306,13 @@ impl Faces<'_> {
         });
         check_u32(self.scene.faces.len(), "faces", self.path)?;
         let material = material_for(self.scene, self.materials, rgba);
+        let vertices: Box<[u32]> = vertices.into();
         let normals = self.has_normals.then(|| vertices.clone());
         self.scene.faces.push(Face {
             vertices,
             normals,
             texcoords: None,
-            colors,
+            colors: colors.map(Into::into),
             material,
             object: self.object,
         });
