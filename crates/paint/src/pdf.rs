@@ -112,18 +112,25 @@ enum Style {
     Textured(u32, Option<[u32; 3]>, u16),
 }
 
-/// A type-4 shading waiting to be written.
+/// A type-4 shading, written as soon as it is made (a million-face picture's 487,092
+/// meshes, held until the end, were about 100 MB): its object, and the form of its
+/// transparency group when it is painted in one (`/FmN Do`) rather than with `sh`.
 struct Mesh {
-    data: Vec<u8>,
-    /// x0 x1 y0 y1 of the Decode array.
-    decode: [f64; 4],
-    /// `None` when painted with `sh`; else painted inside a transparency group
-    /// (`/FmN Do`) as the fill (a shading pattern) of this path: the fragments.
-    group: Option<Vec<u8>>,
+    shading: Ref,
+    form: Option<Ref>,
 }
 
-/// The content stream and the resources it uses.
-struct Content {
+/// The content stream and the resources it uses, and the document it goes into (the
+/// shadings are written to it as they are made).
+struct Content<'w> {
+    pdf: ObjectWriter<'w>,
+    /// The next object id (1 to 4 are the catalog, the page tree, the page and the
+    /// content stream).
+    next: i32,
+    /// The first error writing a shading (the rest are not written).
+    failed: Option<std::io::Error>,
+    /// The page's width (a group's bounding box).
+    width: f64,
     buf: Vec<u8>,
     d: u8,
     cd: u8,
@@ -158,7 +165,7 @@ struct Content {
     multiply: bool,
 }
 
-impl Content {
+impl Content<'_> {
     fn point(&mut self, p: [f64; 2]) {
         push_num(&mut self.buf, p[0], self.d);
         self.buf.push(b' ');
@@ -244,7 +251,7 @@ impl Content {
             .map(|(f, reverse)| f.oriented(reverse).collect())
             .collect();
         // Fills `polys` with the mean colour (too many repetitions of the texture).
-        let mean_fill = |c: &mut Content, polys: &[Vec<[f64; 2]>]| {
+        let mean_fill = |c: &mut Content<'_>, polys: &[Vec<[f64; 2]>]| {
             c.color(flat, b"rg\n");
             for poly in polys {
                 for (i, &q) in poly.iter().enumerate() {
@@ -451,8 +458,9 @@ impl Content {
         } else {
             (b"/Sh", b" sh\n")
         };
+        let index = self.meshes.len();
         self.buf.extend_from_slice(name);
-        push_uint(&mut self.buf, self.meshes.len() as u64);
+        push_uint(&mut self.buf, index as u64);
         self.buf.extend_from_slice(op);
         // In a group, the shading fills the fragments' path: viewers that paint a mesh
         // without anti-aliasing (poppler, ghostscript) then give its edges the path's
@@ -472,11 +480,63 @@ impl Content {
             }
             std::mem::replace(&mut self.buf, main)
         });
+        let shading = self.alloc();
+        let form = group.as_ref().map(|_| (self.alloc(), self.alloc()));
         self.meshes.push(Mesh {
-            data,
-            decode: [lo[0], hi[0], lo[1], hi[1]],
-            group,
+            shading,
+            form: form.map(|f| f.0),
         });
+        if self.failed.is_none() {
+            let decode = [lo[0], hi[0], lo[1], hi[1]];
+            if let Err(e) = self.write_mesh(shading, &data, decode, form.zip(group)) {
+                self.failed = Some(e);
+            }
+        }
+    }
+
+    /// A new object id.
+    fn alloc(&mut self) -> Ref {
+        let r = Ref::new(self.next);
+        self.next += 1;
+        r
+    }
+
+    /// Writes a type-4 shading (`data`, its Decode array's x0 x1 y0 y1) as object
+    /// `shading`, and when painted in a group, the group's form and pattern objects and
+    /// the path the group fills.
+    fn write_mesh(
+        &mut self,
+        shading: Ref,
+        data: &[u8],
+        decode: [f64; 4],
+        group: Option<((Ref, Ref), Vec<u8>)>,
+    ) -> std::io::Result<()> {
+        if let Some(((form, pattern), path)) = group {
+            // The form fills its path with its shading, opaque: a group starts with
+            // opacity 1.
+            let mut content = b"/Pattern cs /P scn\n".to_vec();
+            content.extend_from_slice(&path);
+            content.extend_from_slice(b"f\n");
+            let mut f = self.pdf.object(form)?.form_xobject(form, &content);
+            f.bbox(Rect::new(0.0, 0.0, self.width as f32, self.height as f32));
+            f.group().transparency();
+            f.resources().patterns().pair(Name(b"P"), pattern);
+            drop(f);
+            self.pdf
+                .object(pattern)?
+                .shading_pattern(pattern)
+                .shading_ref(shading);
+        }
+        let mut s = self.pdf.object(shading)?.stream_shading(shading, data);
+        // `StreamShadingType` is not exported by pdf-writer 0.14: write the number.
+        s.pair(Name(b"ShadingType"), 4);
+        s.color_space().device_rgb();
+        s.bits_per_coordinate(32);
+        s.bits_per_component(16);
+        s.bits_per_flag(8);
+        let [x0, x1, y0, y1] = decode.map(|v| v as f32);
+        s.decode([x0, x1, y0, y1, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0]);
+        Ok(())
     }
 
     fn outline(&mut self, run: &[Frag<'_>]) {
@@ -511,6 +571,10 @@ impl Painter for PdfPainter {
         let (w, h) = (f64::from(picture.width), f64::from(picture.height));
         let tiles = Tiles::of(picture);
         let mut c = Content {
+            pdf: ObjectWriter::new(out)?,
+            next: 5,
+            failed: None,
+            width: w,
             // About 18 bytes per corner and 32 per fill: one allocation in the usual case.
             buf: Vec::with_capacity(
                 picture
@@ -632,7 +696,7 @@ impl Painter for PdfPainter {
         // shading in a transparency group; other runs disjoint from them are painted
         // first.
         let layer: RefCell<Layers<'p>> = RefCell::new(Layers::new(&picture.face_outlines));
-        let flush_layer = |c: &mut Content, stats: &mut PaintStats| {
+        let flush_layer = |c: &mut Content<'_>, stats: &mut PaintStats| {
             if let Some((layers, (_, a))) = layer.borrow_mut().take() {
                 c.fill_alpha(a);
                 for frags in &layers {
@@ -645,7 +709,7 @@ impl Painter for PdfPainter {
         // colours waiting here for one multiplied group (`lit_layer`) before anything
         // else is painted.
         let lit: RefCell<Vec<Frag<'p>>> = RefCell::new(Vec::new());
-        let flush_lit = |c: &mut Content| {
+        let flush_lit = |c: &mut Content<'_>| {
             let mut lit = lit.borrow_mut();
             c.lit_layer(&lit);
             lit.clear();
@@ -724,7 +788,7 @@ impl Painter for PdfPainter {
         stats.skipped += counts.skipped;
         stats.clipped += counts.clipped;
 
-        stats.bytes = c.write_document(w, h, out)?;
+        stats.bytes = c.write_document(w, h)?;
         Ok(stats)
     }
 }
@@ -763,17 +827,20 @@ fn write_tiled(
     buf.extend_from_slice(b"Q\n");
 }
 
-impl Content {
+impl Content<'_> {
     /// Wraps the content stream into a complete document written to `out` object by
     /// object (never whole in memory: a million-face picture's was 188 MB); returns its
     /// length in bytes.
-    fn write_document(self, w: f64, h: f64, out: &mut dyn Write) -> std::io::Result<u64> {
-        let mut pdf = ObjectWriter::new(out)?;
+    fn write_document(mut self, w: f64, h: f64) -> std::io::Result<u64> {
+        if let Some(e) = self.failed.take() {
+            return Err(e);
+        }
+        let mut pdf = self.pdf;
         let catalog = Ref::new(1);
         let pages = Ref::new(2);
         let page = Ref::new(3);
         let content = Ref::new(4);
-        let mut next = 4;
+        let mut next = self.next - 1;
         let mut alloc = || {
             next += 1;
             Ref::new(next)
@@ -785,14 +852,6 @@ impl Content {
         for &m in &self.stroke_alphas {
             states.push((format!("s{m}").into_bytes(), alloc(), true, m));
         }
-        let shadings: Vec<(Vec<u8>, Ref)> = (0..self.meshes.len())
-            .map(|i| (format!("Sh{i}").into_bytes(), alloc()))
-            .collect();
-        // The transparency groups: name, form, shading.
-        let forms: Vec<(Ref, Ref, usize)> = (0..self.meshes.len())
-            .filter(|&i| self.meshes[i].group.is_some())
-            .map(|i| (alloc(), alloc(), i))
-            .collect();
         let font = self.font.then(&mut alloc);
         // (The page image, written in tiles, is left out: see `page_tiles`.)
         let images: Vec<Option<(Vec<u8>, Ref)>> = (0..self.images.len())
@@ -825,19 +884,21 @@ impl Content {
                     dict.pair(Name(b"Mul"), r);
                 }
             }
-            if images.iter().any(Option::is_some) || !forms.is_empty() {
+            if images.iter().any(Option::is_some) || self.meshes.iter().any(|m| m.form.is_some()) {
                 let mut dict = res.x_objects();
                 for (name, r) in images.iter().flatten() {
                     dict.pair(Name(name), *r);
                 }
-                for (r, _, i) in &forms {
-                    dict.pair(Name(format!("Fm{i}").as_bytes()), *r);
+                for (i, m) in self.meshes.iter().enumerate() {
+                    if let Some(r) = m.form {
+                        dict.pair(Name(format!("Fm{i}").as_bytes()), r);
+                    }
                 }
             }
-            if !shadings.is_empty() {
+            if !self.meshes.is_empty() {
                 let mut dict = res.shadings();
-                for (name, r) in &shadings {
-                    dict.pair(Name(name), *r);
+                for (i, m) in self.meshes.iter().enumerate() {
+                    dict.pair(Name(format!("Sh{i}").as_bytes()), m.shading);
                 }
             }
             if let Some(f) = font {
@@ -852,14 +913,9 @@ impl Content {
         }
         pdf.object(content)?.stream(content, &self.buf);
         // The copy is on its way out now; give the memory back before the rest is written.
-        let Content {
-            buf,
-            meshes,
-            images: pixels,
-            image_alphas,
-            ..
-        } = self;
-        drop(buf);
+        drop(self.buf);
+        drop(self.meshes);
+        let (pixels, image_alphas) = (self.images, self.image_alphas);
         for ((image, (rgb, iw, ih)), soft_mask) in images.iter().zip(&pixels).zip(&soft_masks) {
             let Some((_, r)) = image else { continue };
             let data = miniz_oxide::deflate::compress_to_vec_zlib(rgb, 6);
@@ -903,37 +959,11 @@ impl Content {
                 gs.non_stroking_alpha(a);
             }
         }
-        for (r, pattern, i) in &forms {
-            // The form fills its path with its shading, opaque: a group starts with
-            // opacity 1.
-            let mut content = b"/Pattern cs /P scn\n".to_vec();
-            content.extend_from_slice(meshes[*i].group.as_deref().unwrap_or_default());
-            content.extend_from_slice(b"f\n");
-            let mut form = pdf.object(*r)?.form_xobject(*r, &content);
-            form.bbox(Rect::new(0.0, 0.0, w as f32, h as f32));
-            form.group().transparency();
-            form.resources().patterns().pair(Name(b"P"), *pattern);
-            drop(form);
-            pdf.object(*pattern)?
-                .shading_pattern(*pattern)
-                .shading_ref(shadings[*i].1);
-        }
-        for ((_, r), mesh) in shadings.iter().zip(meshes) {
-            let mut s = pdf.object(*r)?.stream_shading(*r, &mesh.data);
-            // `StreamShadingType` is not exported by pdf-writer 0.14: write the number.
-            s.pair(Name(b"ShadingType"), 4);
-            s.color_space().device_rgb();
-            s.bits_per_coordinate(32);
-            s.bits_per_component(16);
-            s.bits_per_flag(8);
-            let [x0, x1, y0, y1] = mesh.decode.map(|v| v as f32);
-            s.decode([x0, x1, y0, y1, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0]);
-        }
         pdf.finish(catalog)
     }
 }
 
-impl Content {
+impl Content<'_> {
     /// `q`, the colour and opacity of a mark (fill or stroke).
     fn mark_begin(&mut self, color: [f64; 4], stroke: bool) {
         self.buf.extend_from_slice(b"q ");
@@ -954,7 +984,7 @@ impl Content {
     }
 }
 
-impl MarkSink for Content {
+impl MarkSink for Content<'_> {
     fn polylines(
         &mut self,
         lines: &[Vec<[f64; 2]>],
