@@ -26,7 +26,8 @@ const PURGE_DELAY_MS: std::ffi::c_long = 10;
 /// (three processes each, alternating): a million smooth triangles
 /// (`spheres1m.obj`) peak 692–723 MB → 577–580 MB, the same time; 2CylinderEngine
 /// 247–279 MB → 220–225 MB and 1.34–1.75 s → 1.23–1.29 s (fewer fresh pages faulted
-/// in); 0 ms instead of 10 cost the engine a sixth more time in page faults.
+/// in); 0 ms instead of 10 cost the engine a sixth to a third more time in page faults
+/// (BENCHMARKS.md, "Real models").
 pub fn return_freed_memory() {
     // SAFETY: `mi_option_set` only stores an integer in mimalloc's option table; the
     // option exists in the mimalloc this crate links (libmimalloc-sys 0.1.49's

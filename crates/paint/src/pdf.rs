@@ -828,9 +828,10 @@ fn write_tiled(
 }
 
 impl Content<'_> {
-    /// Wraps the content stream into a complete document written to `out` object by
+    /// Finishes the document begun when painting started (its shadings written as they
+    /// were made): the page, the content stream and the other resources, object by
     /// object (never whole in memory: a million-face picture's was 188 MB); returns its
-    /// length in bytes.
+    /// length in bytes, or the first error met writing a shading.
     fn write_document(mut self, w: f64, h: f64) -> std::io::Result<u64> {
         if let Some(e) = self.failed.take() {
             return Err(e);
