@@ -97,8 +97,7 @@ fn order_set<K: Kernel>(
     } else if crowded(shared, &set) {
         // Each piece's own extents along its edge normals, once for the whole set.
         let axes = SeparatingAxes::new(
-            set.iter()
-                .map(|&p| shared.pieces[p as usize].pts.as_slice()),
+            set.iter().map(|&p| shared.pieces[p as usize].pts.as_ref()),
             margin,
         );
         ws.tested = box_pairs(shared, &set, |i, j, out: &mut Found<(u32, u32, Pair)>| {

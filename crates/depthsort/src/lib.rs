@@ -265,7 +265,7 @@ fn ordered<K: Kernel>(
             ctx.pieces
                 .par_iter_mut()
                 .with_min_len(FRAGMENTS_PER_TASK)
-                .for_each(|p| p.pts = Vec::new());
+                .for_each(|p| p.pts = Box::default());
             fragments(&mut ctx, &order, with_polygons)
         }
         Some(hiding::Split { parts, complete }) => {
@@ -439,7 +439,7 @@ fn part_fragments<K: Kernel>(
             }
             fragments.push(Fragment {
                 face,
-                points: piece.pts,
+                points: piece.pts.into_vec(),
                 world: std::mem::take(&mut scratch),
                 original_edges,
                 shadowed: hidden.lights,

@@ -40,7 +40,11 @@ impl<K: Kernel> Ctx<'_, K> {
     /// Where piece `q` lies with respect to the plane of piece `p`.
     pub fn rel(&self, q: u32, p: u32) -> Rel {
         let pp = &self.pieces[p as usize];
-        self.rel_of(p, self.k.classify(&self.pieces[q as usize].poly, &pp.plane))
+        self.rel_of(
+            p,
+            self.k
+                .classify(&self.pieces[q as usize].poly, self.k.support(&pp.poly)),
+        )
     }
 
     /// [`Ctx::rel`] when the kernel can tell it cheaply.
@@ -48,7 +52,7 @@ impl<K: Kernel> Ctx<'_, K> {
         let pp = &self.pieces[p as usize];
         let side = self
             .k
-            .classify_if_cheap(&self.pieces[q as usize].poly, &pp.plane)?;
+            .classify_if_cheap(&self.pieces[q as usize].poly, self.k.support(&pp.poly))?;
         Some(self.rel_of(p, side))
     }
 
@@ -256,10 +260,13 @@ impl<K: Kernel> Ctx<'_, K> {
             })
         };
         let (mut wf, mut wb) = (Vec::new(), Vec::new());
-        let (front, back) = if self.k.split_world(poly, &by.plane, &mut wf, &mut wb) {
+        let (front, back) = if self
+            .k
+            .split_world(poly, self.k.support(&by.poly), &mut wf, &mut wb)
+        {
             (project(&wf), project(&wb))
         } else {
-            let (front, back) = self.k.split(poly, &by.plane);
+            let (front, back) = self.k.split(poly, self.k.support(&by.poly));
             let world = |h: Option<K::Polygon>| {
                 h.and_then(|h| {
                     let n = self.k.vertex_count(&h);

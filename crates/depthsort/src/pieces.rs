@@ -21,15 +21,15 @@ pub(crate) const NONE: u32 = u32::MAX;
 /// one. Pieces are never removed: a split piece stays as the parent of its two halves,
 /// so halves that end up next to each other can be joined again exactly.
 pub(crate) struct Piece<K: Kernel> {
+    /// The polygon; its supporting plane is the piece's plane ([`Kernel::support`]).
     pub poly: K::Polygon,
-    pub plane: K::Plane,
     pub face: u32,
     pub parent: u32,
     pub kids: [u32; 2],
     /// The eye lies strictly in front of the supporting plane.
     pub eye_front: bool,
     /// Projected vertices in pixels.
-    pub pts: Vec<[f64; 2]>,
+    pub pts: Box<[[f64; 2]]>,
     pub bbox: Box2,
     /// Range of view depth over the vertices (clip w for a perspective camera, device
     /// depth otherwise).
@@ -42,7 +42,6 @@ impl<K: Kernel> Clone for Piece<K> {
     fn clone(&self) -> Self {
         Piece {
             poly: self.poly.clone(),
-            plane: self.plane.clone(),
             face: self.face,
             parent: self.parent,
             kids: self.kids,
@@ -246,8 +245,8 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         eye_front: Option<bool>,
         scratch: &mut Vec<DVec3>,
     ) -> Piece<K> {
-        let plane = self.k.support(&poly);
-        let eye_front = eye_front.unwrap_or_else(|| self.eye_side(&plane) == Side::Front);
+        let eye_front =
+            eye_front.unwrap_or_else(|| self.eye_side(self.k.support(&poly)) == Side::Front);
         // Depth: clip w (the distance along the view axis) for a perspective camera,
         // normalised device depth for any other.
         let by_w = self.camera.is_perspective();
@@ -267,12 +266,11 @@ impl<'a, K: Kernel> Ctx<'a, K> {
         let bbox = bbox(&pts);
         Piece {
             poly,
-            plane,
             face,
             parent,
             kids: [NONE, NONE],
             eye_front,
-            pts,
+            pts: pts.into_boxed_slice(),
             bbox,
             dmin,
             dmax,
@@ -284,7 +282,7 @@ impl<'a, K: Kernel> Ctx<'a, K> {
     /// eye's side of that plane and the part on the far side (either may be absent when
     /// the piece does not span the plane).
     pub fn split_by(&mut self, id: u32, by: u32) -> (Option<u32>, Option<u32>) {
-        let plane = self.pieces[by as usize].plane.clone();
+        let plane = self.k.support(&self.pieces[by as usize].poly).clone();
         let by_eye_front = self.pieces[by as usize].eye_front;
         let (front, back) = self.split_plane(id, &plane);
         if by_eye_front {

@@ -51,7 +51,7 @@ impl<K: Kernel> Ctx<'_, K> {
         seen(
             self.k,
             &self.pieces[p as usize].poly,
-            &self.pieces[other as usize].plane,
+            self.k.support(&self.pieces[other as usize].poly),
         )
     }
 }
@@ -164,7 +164,7 @@ mod tests {
 
     /// Whether the test proves that `a` and `b` pierce each other.
     fn proven(k: &ExactKernel, a: &ExactPolygon, b: &ExactPolygon) -> bool {
-        match (seen(k, a, &k.support(b)), seen(k, b, &k.support(a))) {
+        match (seen(k, a, k.support(b)), seen(k, b, k.support(a))) {
             (Some(sa), Some(sb)) => pierce(&sa, &sb),
             _ => false,
         }

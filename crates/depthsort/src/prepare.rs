@@ -361,7 +361,7 @@ fn prepare_face<K: Kernel>(
     let mut facing = None;
     for poly in polys {
         let plane = ctx.k.support(&poly);
-        let side = ctx.eye_side(&plane);
+        let side = ctx.eye_side(plane);
         if *facing.get_or_insert(side) != side {
             out.intact = false;
         }

@@ -141,8 +141,8 @@ impl Kernel for ExactKernel {
         Plane::along(p.to_array(), q.to_array(), d.to_array())
     }
 
-    fn support(&self, poly: &ExactPolygon) -> Plane {
-        poly.support()
+    fn support<'a>(&self, poly: &'a ExactPolygon) -> &'a Plane {
+        &poly.support
     }
 
     fn side_of_point(&self, plane: &Plane, p: &DVec3) -> Side {

@@ -258,8 +258,8 @@ impl Kernel for FloatKernel {
         })
     }
 
-    fn support(&self, poly: &FloatPolygon) -> FloatPlane {
-        poly.plane
+    fn support<'a>(&self, poly: &'a FloatPolygon) -> &'a FloatPlane {
+        &poly.plane
     }
 
     fn side_of_point(&self, plane: &FloatPlane, p: &DVec3) -> Side {

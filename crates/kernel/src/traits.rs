@@ -61,7 +61,7 @@ pub trait Kernel: Sync {
     fn plane_along(&self, p: DVec3, q: DVec3, d: DVec3) -> Result<Self::Plane, KernelError>;
 
     /// The supporting plane of a polygon; its normal points to the polygon's front.
-    fn support(&self, poly: &Self::Polygon) -> Self::Plane;
+    fn support<'a>(&self, poly: &'a Self::Polygon) -> &'a Self::Plane;
 
     /// The side of `plane` that `p` lies on.
     fn side_of_point(&self, plane: &Self::Plane, p: &Self::Point) -> Side;

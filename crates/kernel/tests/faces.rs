@@ -353,11 +353,11 @@ fn a_quads_fourth_corner_is_known_on_its_plane() {
             ])
             .unwrap();
         for poly in &b {
-            assert_eq!(k.classify(poly, &plane), PolygonSide::Front, "offset {off}");
+            assert_eq!(k.classify(poly, plane), PolygonSide::Front, "offset {off}");
         }
         assert_eq!(k.fallbacks(), 0, "offset {off}");
         for q in [p(0.0, 1.0, 0.0), p(1.0, 1.0, 0.0)] {
-            assert_eq!(k.side_of_point(&plane, &q), Side::On);
+            assert_eq!(k.side_of_point(plane, &q), Side::On);
         }
         assert_eq!(k.fallbacks(), 0, "offset {off}");
     }

@@ -21,7 +21,9 @@ fn near_coplanar_triangle() {
     // Triangle D, B, D' crosses the plane: D in front, D' behind, B on it.
     let probe = [d2, d, b];
 
-    let he = exact.support(&exact.face_polygons(&plane_face).unwrap()[0]);
+    let he = exact
+        .support(&exact.face_polygons(&plane_face).unwrap()[0])
+        .clone();
     let pe = &exact.face_polygons(&probe).unwrap()[0];
     assert_eq!(exact.classify(pe, &he), PolygonSide::Spanning);
     let (f, bk) = exact.split(pe, &he);
@@ -35,7 +37,7 @@ fn near_coplanar_triangle() {
         Side::Back
     );
 
-    let hf = float.support(&float.face_polygons(&plane_face).unwrap()[0]);
+    let hf = *float.support(&float.face_polygons(&plane_face).unwrap()[0]);
     let pf = &float.face_polygons(&probe).unwrap()[0];
     // The float kernel calls the polygon coplanar: wrong.
     let got = float.classify(pf, &hf);

@@ -121,7 +121,7 @@ fn world_translation_by_whole_steps_keeps_every_decision() {
     let eye = DVec3::new(0.05, 0.06, 0.9);
     let base = k.face_polygons(&tri).unwrap();
     let h0 = k.support(&base[0]);
-    let side0 = k.side_of_point(&h0, &k.point(eye).unwrap());
+    let side0 = k.side_of_point(h0, &k.point(eye).unwrap());
     for t in [
         DVec3::new(3.0 * s, 0.0, 0.0),
         DVec3::new(-1000.0 * s, 77.0 * s, 5.0 * s),
@@ -130,7 +130,7 @@ fn world_translation_by_whole_steps_keeps_every_decision() {
         let m = k.face_polygons(&moved).unwrap();
         let h = k.support(&m[0]);
         assert_eq!(h.approx()[..3], h0.approx()[..3]);
-        assert_eq!(k.side_of_point(&h, &k.point(eye + t).unwrap()), side0);
+        assert_eq!(k.side_of_point(h, &k.point(eye + t).unwrap()), side0);
         let mut a = Vec::new();
         let mut b = Vec::new();
         k.vertices_world(&base[0], &mut a);

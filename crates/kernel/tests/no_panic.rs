@@ -41,10 +41,10 @@ fn exercise<K: Kernel>(k: &K, face: &[DVec3], p: DVec3, n: DVec3) {
             let _ = k.classify(poly, h);
             let _ = k.split(poly, h);
             let s = k.support(poly);
-            let _ = k.split(poly, &s);
+            let _ = k.split(poly, s);
         }
         if let Ok(e) = &eye {
-            let _ = k.side_of_point(&k.support(poly), e);
+            let _ = k.side_of_point(k.support(poly), e);
             let _ = k.point_world(e);
         }
     }

@@ -200,7 +200,7 @@ pub(crate) fn hidden_parts<K: Kernel>(
                         if !lit[piece.face as usize] {
                             continue;
                         }
-                        if c.source.side(ctx.k, &piece.plane) != seen_side {
+                        if c.source.side(ctx.k, ctx.k.support(&piece.poly)) != seen_side {
                             node.visit(&|_| false, &mut |_, s, _| {
                                 if !s.from_eye {
                                     s.insert(c.who);

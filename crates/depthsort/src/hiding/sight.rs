@@ -97,7 +97,7 @@ impl Sight {
                 Ok(polys
                     .into_iter()
                     .filter(|p| {
-                        let drawn = match ctx.eye_side(&ctx.k.support(p)) {
+                        let drawn = match ctx.eye_side(ctx.k.support(p)) {
                             Side::On => false,
                             Side::Back => !cull_back,
                             Side::Front => true,

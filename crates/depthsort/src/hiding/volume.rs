@@ -117,7 +117,7 @@ pub(crate) fn volume<K: Kernel>(
     corners: &mut Vec<DVec3>,
     shared: &mut SidePlanes<K::Plane>,
 ) -> Result<Option<Volume<K::Plane>>, OrderError> {
-    let support = k.support(poly);
+    let support = k.support(poly).clone();
     let beyond = match light.side(k, &support) {
         Side::On => return Ok(None),
         Side::Front => Side::Back,

@@ -119,9 +119,9 @@ impl ClassifySet {
             s.vertex_count += e.vertex_count(&ep);
             s.naive_polys
                 .push(world.iter().map(|v| v.to_array()).collect());
-            s.naive_planes.push(naive_plane(&f.support(fh)));
-            s.exact_planes.push(e.support(eh));
-            s.float_planes.push(f.support(fh));
+            s.naive_planes.push(naive_plane(f.support(fh)));
+            s.exact_planes.push(e.support(eh).clone());
+            s.float_planes.push(*f.support(fh));
             s.exact_polys.push(ep);
             s.float_polys.push(fp);
         }
