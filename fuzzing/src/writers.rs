@@ -11,7 +11,8 @@ use std::fmt;
 
 use arbitrary::{Arbitrary, Unstructured};
 use limn_paint::{
-    Format, Outline, PaintFragment, Painter, Picture, PngOptions, PngPainter, SvgPainter,
+    narrow_color, Format, Outline, PaintFragment, Painter, Picture, PngOptions, PngPainter,
+    SvgPainter,
 };
 
 use crate::{OptVecLit, VecLit};
@@ -181,7 +182,7 @@ pub fn picture(case: &Case) -> Picture {
             vertex_colors: f
                 .vertex_colors
                 .as_ref()
-                .map(|c| c.iter().take(16).map(|c| c.value()).collect()),
+                .map(|c| c.iter().take(16).map(|c| narrow_color(c.value())).collect()),
             face: u32::from(f.face),
             object: u32::from(f.object),
             original_edges: f.edges.iter().take(17).copied().collect(),

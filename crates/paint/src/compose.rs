@@ -16,7 +16,7 @@ use crate::phong::DEFAULT_TOLERANCE;
 use crate::seams::{seam_flaps_indexed, FlapJoin};
 use crate::smooth::{FaceLight, View};
 use crate::texturing::{FaceTexture, Projector, TextureTable};
-use crate::{Outline, PaintFragment, Picture};
+use crate::{narrow_color, wide_color, Outline, PaintFragment, Picture};
 
 /// How to turn an order into a picture.
 #[derive(Debug, Clone, PartialEq)]
@@ -132,9 +132,11 @@ pub fn picture(scene: &Scene, ordered: &Ordered, style: &Style) -> Picture {
                             if tint != [1.0; 3] {
                                 for p in &mut fragments[start..] {
                                     match &mut p.vertex_colors {
-                                        Some(cs) => cs
-                                            .iter_mut()
-                                            .for_each(|c| (0..3).for_each(|k| c[k] *= tint[k])),
+                                        Some(cs) => cs.iter_mut().for_each(|c| {
+                                            let mut w = wide_color(*c);
+                                            (0..3).for_each(|k| w[k] *= tint[k]);
+                                            *c = narrow_color(w);
+                                        }),
                                         None => (0..3).for_each(|k| p.fill[k] *= tint[k]),
                                     }
                                 }
@@ -378,7 +380,7 @@ fn shade_smooth(
         if colors.iter().all(|c| *c == colors[0]) {
             frag.fill = colors[0];
         } else {
-            frag.vertex_colors = Some(colors);
+            frag.vertex_colors = Some(colors.into_iter().map(narrow_color).collect());
         }
         out.push(frag);
         return;

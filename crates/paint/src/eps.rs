@@ -59,7 +59,8 @@ use super::pdf::push_ps_string;
 use super::runs::{check, reversals, walk_with_marks, Frag};
 use super::texture_pieces::{affine_pieces, pieces_over};
 use super::{
-    eps_texture, texture_images, texture_mask, Label, PaintError, PaintStats, Painter, Picture,
+    eps_texture, texture_images, texture_mask, wide_color, Label, PaintError, PaintStats, Painter,
+    Picture,
 };
 use limn_scene::TextureAlpha;
 
@@ -206,7 +207,7 @@ impl Writer {
                 for v in [0, i, i + 1] {
                     b.extend_from_slice(b"0 ");
                     self.point(b, f.points[v]);
-                    let c = colors[v];
+                    let c = wide_color(colors[v]);
                     let c = flatten([c[0], c[1], c[2]], alpha, self.backdrop);
                     for q in self.quantise(c) {
                         b.push(b' ');

@@ -129,8 +129,9 @@ pub use format::Format;
 pub use hidden_line::{hidden_line_picture, HiddenLineStyle};
 pub use merge::union_of_polygons;
 pub use model::{
-    ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind, Marker, MarkerShape,
-    Outline, PageImage, PaintFragment, Picture, Texture, TextureAlpha, TextureMap,
+    narrow_color, wide_color, ArrowHead, Label, LabelAnchor, LinePiece, LineStyle, Mark, MarkKind,
+    Marker, MarkerShape, Outline, PageImage, PaintFragment, Picture, Texture, TextureAlpha,
+    TextureMap, VertexColor,
 };
 pub use painter::{painter_for, PaintStats, Painter};
 pub use pdf::{PdfOptions, PdfPainter};

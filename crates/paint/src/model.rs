@@ -5,6 +5,24 @@ use std::sync::Arc;
 
 pub use limn_scene::{LabelAnchor, MarkerShape, Texture, TextureAlpha};
 
+/// A vertex colour as a picture keeps it: linear RGB and alpha, each in `[0, 1]`, in
+/// single precision. A smooth picture's fragments and seam flaps carry three or four
+/// each: in double precision they were a sixth of a million-face picture's memory
+/// (about 70 MB), and single precision is finer than the 16 bits per channel of the
+/// finest output (a PDF shading). The painters compute in double precision
+/// ([`wide_color`]); colours are stored through [`narrow_color`].
+pub type VertexColor = [f32; 4];
+
+/// `c` rounded to a stored vertex colour (to nearest).
+pub fn narrow_color(c: [f64; 4]) -> VertexColor {
+    c.map(|v| v as f32)
+}
+
+/// Stored vertex colour `c` in double precision (exactly).
+pub fn wide_color(c: VertexColor) -> [f64; 4] {
+    c.map(f64::from)
+}
+
 /// One convex (or at least simple) polygon to paint, in pixel coordinates (x right, y down).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct PaintFragment {
@@ -12,8 +30,9 @@ pub struct PaintFragment {
     pub points: Vec<[f64; 2]>,
     /// Linear-RGB fill colour with alpha = opacity, each in `[0, 1]`.
     pub fill: [f64; 4],
-    /// Optional per-vertex colours (Gouraud); same length as points.
-    pub vertex_colors: Option<Vec<[f64; 4]>>,
+    /// Optional per-vertex colours (Gouraud); same length as points. Linear RGB and
+    /// alpha like [`PaintFragment::fill`], in single precision ([`VertexColor`]).
+    pub vertex_colors: Option<Vec<VertexColor>>,
     /// Input face id this fragment came from.
     pub face: u32,
     /// Index into Picture::objects.
@@ -228,9 +247,11 @@ impl Picture {
                     *c *= m;
                 }
                 for vc in f.vertex_colors.iter_mut().flatten() {
-                    for (c, m) in vc.iter_mut().zip(m) {
+                    let mut wide = wide_color(*vc);
+                    for (c, m) in wide.iter_mut().zip(m) {
                         *c *= m;
                     }
+                    *vc = narrow_color(wide);
                 }
             }
         }

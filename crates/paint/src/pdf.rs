@@ -447,7 +447,7 @@ impl Content<'_> {
                     data.extend_from_slice(&coord(p[0], 0).to_be_bytes());
                     data.extend_from_slice(&coord(self.height - p[1], 1).to_be_bytes());
                     for c in &colors[v][..3] {
-                        let q = (c.clamp(0.0, 1.0) * 65535.0).round() as u16;
+                        let q = (f64::from(*c).clamp(0.0, 1.0) * 65535.0).round() as u16;
                         data.extend_from_slice(&q.to_be_bytes());
                     }
                 }

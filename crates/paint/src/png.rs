@@ -38,7 +38,7 @@ use tiny_skia::{
 use super::marks::{circle_beziers, glyph_rects, paint_mark, scaled, MarkSink};
 use super::number::{channel_u8, rgb_u8};
 use super::runs::{check, reversals, walk_with_marks, Frag, Runs};
-use super::{Label, PaintError, PaintStats, Painter, Picture};
+use super::{wide_color, Label, PaintError, PaintStats, Painter, Picture};
 
 /// Options for [`PngPainter`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -340,7 +340,10 @@ fn gouraud(pixmap: &mut Pixmap, run: &[Frag<'_>], path: &Path, alpha: u8, aa: bo
     let mut count = 0.0_f64;
     for f in run {
         let Some(colors) = &f.colors else { continue };
-        let rgb = |i: usize| [colors[i][0], colors[i][1], colors[i][2]].map(|v| v.clamp(0.0, 1.0));
+        let rgb = |i: usize| {
+            let c = wide_color(colors[i]);
+            [c[0], c[1], c[2]].map(|v| v.clamp(0.0, 1.0))
+        };
         for i in 0..f.points.len() {
             let c = rgb(i);
             for k in 0..3 {

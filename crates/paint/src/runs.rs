@@ -3,7 +3,9 @@
 
 use std::borrow::Cow;
 
-use super::{Mark, Outline, PaintError, PaintFragment, Picture};
+use super::{
+    narrow_color, wide_color, Mark, Outline, PaintError, PaintFragment, Picture, VertexColor,
+};
 
 /// A valid fragment, clipped to the guard box.
 #[derive(Clone)]
@@ -15,7 +17,7 @@ pub(crate) struct Frag<'a> {
     /// Original-edge flags; shorter than `points` means "false" for the rest.
     edges: Cow<'a, [bool]>,
     /// Per-vertex colours, same length as `points`.
-    pub colors: Option<Cow<'a, [[f64; 4]]>>,
+    pub colors: Option<Cow<'a, [VertexColor]>>,
 }
 
 impl Frag<'_> {
@@ -38,7 +40,7 @@ impl Frag<'_> {
                 let mut sum = [0.0; 3];
                 for c in cs.iter() {
                     for k in 0..3 {
-                        sum[k] += c[k];
+                        sum[k] += f64::from(c[k]);
                     }
                 }
                 let n = cs.len() as f64;
@@ -200,9 +202,9 @@ pub(crate) fn is_valid(f: &PaintFragment) -> bool {
     f.points.len() >= 3
         && f.points.iter().all(|p| finite(p))
         && finite(&f.fill)
-        && f.vertex_colors
-            .as_ref()
-            .is_none_or(|cs| cs.len() == f.points.len() && cs.iter().all(|c| finite(c)))
+        && f.vertex_colors.as_ref().is_none_or(|cs| {
+            cs.len() == f.points.len() && cs.iter().flatten().all(|c| c.is_finite())
+        })
 }
 
 /// The box fragments are clipped to.
@@ -282,7 +284,9 @@ impl Guard {
         let mut poly: Vec<V> = (0..points.len())
             .map(|i| V {
                 p: points[i],
-                c: f.vertex_colors.as_ref().map_or(f.fill, |cs| cs[i]),
+                c: f.vertex_colors
+                    .as_ref()
+                    .map_or(f.fill, |cs| wide_color(cs[i])),
                 e: f.original_edges.get(i).copied().unwrap_or(false),
             })
             .collect();
@@ -306,7 +310,7 @@ impl Guard {
             colors: f
                 .vertex_colors
                 .as_ref()
-                .map(|_| Cow::Owned(poly.iter().map(|v| v.c).collect())),
+                .map(|_| Cow::Owned(poly.iter().map(|v| narrow_color(v.c)).collect())),
         })
     }
 }

@@ -15,7 +15,7 @@ use rayon::prelude::*;
 
 use crate::chunked_queue::ChunkedQueue;
 use crate::seams_across::Across;
-use crate::PaintFragment;
+use crate::{narrow_color, wide_color, PaintFragment};
 
 /// The bits of an edge's end points, smaller end first (an undirected edge key).
 pub(crate) type EdgeKey = ([u64; 2], [u64; 2]);
@@ -409,7 +409,7 @@ fn flaps_after(
         // colour half-way, stands for them where one colour is drawn).
         let (fill, vertex_colors) = match &f.vertex_colors {
             Some(cs) if cs.len() == n => {
-                let (ca, cb) = (cs[e], cs[(e + 1) % n]);
+                let (ca, cb) = (wide_color(cs[e]), wide_color(cs[(e + 1) % n]));
                 let fill = [0, 1, 2, 3].map(|k| {
                     if k == 3 {
                         f.fill[3]
@@ -417,7 +417,10 @@ fn flaps_after(
                         0.5 * (ca[k] + cb[k])
                     }
                 });
-                let colors = points.iter().map(|&p| along(a, b, ca, cb, p)).collect();
+                let colors = points
+                    .iter()
+                    .map(|&p| narrow_color(along(a, b, ca, cb, p)))
+                    .collect();
                 (fill, Some(colors))
             }
             _ => (f.fill, None),
@@ -1055,7 +1058,7 @@ mod tests {
                     }
                     let (fill, colors) = match &f.vertex_colors {
                         Some(cs) if cs.len() == n => {
-                            let (ca, cb) = (cs[e], cs[(e + 1) % n]);
+                            let (ca, cb) = (wide_color(cs[e]), wide_color(cs[(e + 1) % n]));
                             let fill = [0, 1, 2, 3].map(|k| {
                                 if k == 3 {
                                     f.fill[3]
@@ -1063,7 +1066,10 @@ mod tests {
                                     0.5 * (ca[k] + cb[k])
                                 }
                             });
-                            let colors = flap.iter().map(|&p| along(a, b, ca, cb, p)).collect();
+                            let colors = flap
+                                .iter()
+                                .map(|&p| narrow_color(along(a, b, ca, cb, p)))
+                                .collect();
                             (fill, Some(colors))
                         }
                         _ => (f.fill, None),
@@ -1126,7 +1132,8 @@ mod tests {
                     f.face = next(40) as u32;
                     f.object = next(3) as u32;
                     if next(5) == 0 {
-                        f.vertex_colors = Some(vec![[0.1, 0.2, 0.3, alpha], [0.9; 4], [0.5; 4]]);
+                        f.vertex_colors =
+                            Some(vec![[0.1, 0.2, 0.3, alpha as f32], [0.9; 4], [0.5; 4]]);
                     }
                     frags.push(f);
                 }

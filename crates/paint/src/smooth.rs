@@ -12,7 +12,7 @@ use limn_scene::{
 };
 
 use crate::phong::{subdivide, Surface};
-use crate::PaintFragment;
+use crate::{narrow_color, PaintFragment, VertexColor};
 
 /// The highlight guard of [`crate::phong`] uses at most this specular exponent
 /// (narrower highlights are left to the colour samples).
@@ -85,12 +85,12 @@ impl<'a> FaceLight<'a> {
     }
 
     /// Gouraud: the colour at each world corner, with alpha `alpha`.
-    pub fn vertex_colors(&self, world: &[DVec3], eye: DVec3, alpha: f64) -> Vec<[f64; 4]> {
+    pub fn vertex_colors(&self, world: &[DVec3], eye: DVec3, alpha: f64) -> Vec<VertexColor> {
         world
             .iter()
             .map(|&p| {
                 let c = self.shade(p, eye);
-                [c[0], c[1], c[2], alpha]
+                narrow_color([c[0], c[1], c[2], alpha])
             })
             .collect()
     }
@@ -160,7 +160,7 @@ impl<'a> FaceLight<'a> {
                 vertex_colors: Some(
                     t.corners
                         .iter()
-                        .map(|c| [c.color[0], c.color[1], c.color[2], alpha])
+                        .map(|c| narrow_color([c.color[0], c.color[1], c.color[2], alpha]))
                         .collect(),
                 ),
                 original_edges: t.edges.to_vec(),

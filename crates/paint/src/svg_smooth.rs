@@ -25,6 +25,7 @@
 //! lighten` inside an isolated group, give their per-channel maximum, which is their
 //! sum since each holds one channel only.
 use crate::phong::{MAX_DEPTH, MIN_EDGE_PX};
+use crate::VertexColor;
 
 /// A triangle whose third colour lies farther than this (per channel, colours in
 /// [0, 1]) from the line through the other two is drawn as its channels.
@@ -91,9 +92,9 @@ impl Piece {
 /// The pieces of a fragment with corners `points` and corner colours `colors` (fanned
 /// from the first corner), each within `tolerance` (per channel) of the linear
 /// interpolation once written in 8 bits.
-pub(crate) fn pieces(points: &[[f64; 2]], colors: &[[f64; 4]], tolerance: f64) -> Vec<Piece> {
+pub(crate) fn pieces(points: &[[f64; 2]], colors: &[VertexColor], tolerance: f64) -> Vec<Piece> {
     let budget = 0.5 * tolerance;
-    let rgb = |i: usize| [0, 1, 2].map(|k| colors[i][k].clamp(0.0, 1.0));
+    let rgb = |i: usize| [0, 1, 2].map(|k| f64::from(colors[i][k]).clamp(0.0, 1.0));
     let mut out = Vec::new();
     for i in 1..points.len().saturating_sub(1) {
         split(
@@ -111,13 +112,19 @@ pub(crate) fn pieces(points: &[[f64; 2]], colors: &[[f64; 4]], tolerance: f64) -
 /// gradient of its first three corners along the line through their two most different
 /// colours (the third colour projected onto it), else the mean of its corners flat.
 /// The piece's triangle is the first three corners.
-pub(crate) fn fit(points: &[[f64; 2]], colors: &[[f64; 4]]) -> Piece {
-    let rgb = |i: usize| [0, 1, 2].map(|k| colors[i][k].clamp(0.0, 1.0));
+pub(crate) fn fit(points: &[[f64; 2]], colors: &[VertexColor]) -> Piece {
+    let rgb = |i: usize| [0, 1, 2].map(|k| f64::from(colors[i][k]).clamp(0.0, 1.0));
     let tri = [points[0], points[1], points[2]];
     let c = [rgb(0), rgb(1), rgb(2)];
     gradient(tri, c, f64::INFINITY).unwrap_or_else(|| {
         let n = colors.len() as f64;
-        let mean = [0, 1, 2].map(|k| colors.iter().map(|c| c[k].clamp(0.0, 1.0)).sum::<f64>() / n);
+        let mean = [0, 1, 2].map(|k| {
+            colors
+                .iter()
+                .map(|c| f64::from(c[k]).clamp(0.0, 1.0))
+                .sum::<f64>()
+                / n
+        });
         Piece::Flat { tri, rgb: mean }
     })
 }
@@ -252,6 +259,7 @@ fn gradient(tri: [[f64; 2]; 3], c: [[f64; 3]; 3], budget: f64) -> Option<Piece> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::{narrow_color, wide_color};
 
     /// The colour a piece paints at `p` (before 8-bit rounding), or `None` outside.
     fn paint_at(piece: &Piece, p: [f64; 2]) -> Option<[f64; 3]> {
@@ -293,7 +301,10 @@ mod tests {
     }
 
     fn worst(points: &[[f64; 2]; 3], colors: &[[f64; 4]; 3], tol: f64) -> (f64, Vec<Piece>) {
-        let ps = pieces(points, colors, tol);
+        let stored = colors.map(narrow_color);
+        let ps = pieces(points, &stored, tol);
+        // The interpolation of the colours as a fragment keeps them.
+        let colors = stored.map(wide_color);
         let mut worst = 0.0f64;
         for i in 0..=40 {
             for j in 0..=(40 - i) {
@@ -313,10 +324,11 @@ mod tests {
 
     #[test]
     fn collinear_colours_are_one_exact_gradient() {
+        // On one line as kept (single precision): the third is the mean of the others.
         let c = [
-            [0.1, 0.2, 0.3, 1.0],
-            [0.5, 0.6, 0.7, 1.0],
-            [0.3, 0.4, 0.5, 1.0],
+            [0.125, 0.25, 0.375, 1.0],
+            [0.5, 0.625, 0.75, 1.0],
+            [0.3125, 0.4375, 0.5625, 1.0],
         ];
         let (w, ps) = worst(&TRI, &c, 1.0 / 255.0);
         assert_eq!(ps.len(), 1);
@@ -353,8 +365,8 @@ mod tests {
                 ps.len()
             );
         }
-        let fine = pieces(&TRI, &c, 1.0 / 255.0).len();
-        let coarse = pieces(&TRI, &c, 4.0 / 255.0).len();
+        let fine = pieces(&TRI, &c.map(narrow_color), 1.0 / 255.0).len();
+        let coarse = pieces(&TRI, &c.map(narrow_color), 4.0 / 255.0).len();
         assert!(coarse * 4 < fine, "{coarse} {fine}");
     }
 

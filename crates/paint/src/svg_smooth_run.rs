@@ -33,6 +33,7 @@ use crate::number::{push_hex_color, push_milli, push_num, push_uint, rgb_u8};
 use crate::runs::Frag;
 use crate::seams::{edge_key, flap, EdgeKey};
 use crate::svg_smooth::{self, Piece};
+use crate::{wide_color, VertexColor};
 
 /// Width in pixels of the flap a piece gets into a later piece of its run: a whole
 /// pixel, so that the earlier piece and its flap cover every pixel of the shared edge.
@@ -74,7 +75,7 @@ pub(crate) fn write(
         // Flaps with nothing to join: painted as fragments.
         std::mem::swap(&mut body, &mut flaps);
     }
-    let body: Vec<(&Frag<'_>, &[[f64; 4]])> = body
+    let body: Vec<(&Frag<'_>, &[VertexColor])> = body
         .into_iter()
         .filter_map(|f| f.colors.as_deref().map(|cs| (f, cs)))
         .collect();
@@ -151,7 +152,7 @@ pub(crate) fn write(
 /// corner, and where its edges cross the ends of the gradient's ramp (between those the
 /// difference of the padded ramp and a fragment's linear colours is linear, so it is
 /// largest at those points).
-fn common_paint(body: &[(&Frag<'_>, &[[f64; 4]])], tolerance: f64) -> Option<Piece> {
+fn common_paint(body: &[(&Frag<'_>, &[VertexColor])], tolerance: f64) -> Option<Piece> {
     let budget = 0.5 * tolerance;
     let (first, colors) = body[0];
     let own = svg_smooth::pieces(&first.points, colors, tolerance);
@@ -184,12 +185,12 @@ fn common_paint(body: &[(&Frag<'_>, &[[f64; 4]])], tolerance: f64) -> Option<Pie
     for (f, cs) in &body[1..] {
         let n = f.points.len();
         for i in 0..n {
-            let (a, ca) = (f.points[i], cs[i]);
+            let (a, ca) = (f.points[i], wide_color(cs[i]));
             if !close(a, [ca[0], ca[1], ca[2]]) {
                 return None;
             }
             // Where edge a→b crosses an end of the ramp, its linear colour there.
-            let (b, cb) = (f.points[(i + 1) % n], cs[(i + 1) % n]);
+            let (b, cb) = (f.points[(i + 1) % n], wide_color(cs[(i + 1) % n]));
             let (ta, tb) = (at(a).1, at(b).1);
             for end in [0.0, 1.0] {
                 if (ta - end) * (tb - end) < 0.0 {
@@ -540,11 +541,11 @@ fn push_polygon(b: &mut Vec<u8>, p: &[[f64; 2]], d: u8) {
 mod tests {
     use super::*;
     use crate::runs::{check, walk};
-    use crate::{PaintFragment, Picture};
+    use crate::{narrow_color, PaintFragment, Picture};
 
     fn smooth(points: Vec<[f64; 2]>, colors: Vec<[f64; 4]>) -> PaintFragment {
         let mut f = PaintFragment::new(points, [0.5, 0.5, 0.5, 1.0]);
-        f.vertex_colors = Some(colors);
+        f.vertex_colors = Some(colors.into_iter().map(narrow_color).collect());
         f
     }
 

@@ -31,7 +31,7 @@ use rayon::prelude::*;
 
 use crate::runs::{is_valid, Frag};
 use crate::texture_pieces::{affine_pieces, AffinePiece};
-use crate::{PageImage, PaintFragment, Picture, TextureMap};
+use crate::{narrow_color, PageImage, PaintFragment, Picture, TextureMap, VertexColor};
 
 /// Samples per page unit by default: twice the page's pixels each way.
 pub const DEFAULT_TEXTURE_SAMPLES: f64 = 2.0;
@@ -193,7 +193,7 @@ fn drawn(f: &PaintFragment, textures: &[Arc<Texture>]) -> Option<Drawn> {
     let own_alpha = f
         .vertex_colors
         .as_ref()
-        .is_some_and(|cs| cs.iter().any(|c| c[3] != f.fill[3]));
+        .is_some_and(|cs| cs.iter().any(|c| c[3] != narrow_color(f.fill)[3]));
     if mask || own_alpha || !is_valid(f) {
         return None;
     }
@@ -239,7 +239,7 @@ pub(crate) fn run_underlay(run: &[Frag<'_>], see_through: bool) -> (Option<Affin
 /// [0, 1] and the texture's alpha.
 pub(crate) fn textured_colour(
     fill: [f64; 4],
-    colors: Option<&[[f64; 4]]>,
+    colors: Option<&[VertexColor]>,
     corner: usize,
     l: [f64; 3],
     map: Option<&TextureMap>,
@@ -254,7 +254,7 @@ pub(crate) fn textured_colour(
             let at = [0, corner, corner + 1];
             let mut c = [0.0; 4];
             for k in 0..3 {
-                c[k] = (0..3).map(|j| l[j] * cs[at[j]][k]).sum::<f64>() / sum;
+                c[k] = (0..3).map(|j| l[j] * f64::from(cs[at[j]][k])).sum::<f64>() / sum;
             }
             c
         }

@@ -1,6 +1,8 @@
 //! PNG output, decoded and checked pixel by pixel.
 
-use limn_paint::{Outline, PaintError, PaintFragment, Painter, Picture, PngOptions, PngPainter};
+use limn_paint::{
+    narrow_color, Outline, PaintError, PaintFragment, Painter, Picture, PngOptions, PngPainter,
+};
 use tiny_skia::Pixmap;
 
 const BLUE: [f64; 4] = [0.2, 0.4, 0.6, 1.0];
@@ -149,7 +151,7 @@ fn translucent_fill_blends_source_over() {
 fn gouraud_uniform_colour_is_exact() {
     let mut p = Picture::new(20, 20);
     let mut f = square(2.0, 2.0, 18.0, 18.0, [0.0, 0.0, 0.0, 1.0]);
-    f.vertex_colors = Some(vec![BLUE; 4]);
+    f.vertex_colors = Some(vec![narrow_color(BLUE); 4]);
     p.fragments.push(f);
     let px = render(&p);
     for (x, y) in [(3, 3), (10, 10), (16, 16), (3, 16)] {
@@ -257,7 +259,7 @@ fn gouraud_fragments_of_one_face_show_no_seam() {
     let ramp = |p: [f64; 2]| [p[0] / 60.0, 0.5, 1.0 - p[0] / 60.0, 1.0];
     let tri = |pts: Vec<[f64; 2]>| {
         let mut f = PaintFragment::new(pts.clone(), BLUE);
-        f.vertex_colors = Some(pts.into_iter().map(ramp).collect());
+        f.vertex_colors = Some(pts.into_iter().map(ramp).map(narrow_color).collect());
         f
     };
     let mut p = Picture::new(60, 60);

@@ -1,7 +1,7 @@
 //! Random pictures, biased toward bad input: every backend paints them without error,
 //! skips exactly the invalid fragments, and writes the same bytes every time.
 
-use limn_paint::{painter_for, Format, Outline, PaintFragment, Picture};
+use limn_paint::{narrow_color, painter_for, Format, Outline, PaintFragment, Picture};
 use proptest::prelude::*;
 
 /// Coordinates: mostly on the page, sometimes far away, huge or not finite.
@@ -41,7 +41,7 @@ fn fragment() -> impl Strategy<Value = PaintFragment> {
             let vertex_colors = gouraud.then(|| {
                 points
                     .iter()
-                    .map(|p| [(p[0] / 80.0).fract().abs(), 0.5, 0.25, 1.0])
+                    .map(|p| narrow_color([(p[0] / 80.0).fract().abs(), 0.5, 0.25, 1.0]))
                     .collect()
             });
             PaintFragment {
@@ -277,7 +277,7 @@ proptest! {
             if let Some(cs) = f.vertex_colors.take() {
                 if cs.len() == f.points.len() && !cs.is_empty() {
                     for k in 0..3 {
-                        f.fill[k] = cs.iter().map(|c| c[k]).sum::<f64>() / cs.len() as f64;
+                        f.fill[k] = cs.iter().map(|c| f64::from(c[k])).sum::<f64>() / cs.len() as f64;
                     }
                 } else {
                     f.points.clear(); // invalid in both writers: skipped by both

@@ -95,7 +95,8 @@ fn phong_triangles_are_within_tolerance_of_per_point_shading() {
             [0.45, 0.1, 0.45],
         ] {
             let px = [0, 1].map(|k| (0..3).map(|i| b[i] * f.points[i][k]).sum::<f64>());
-            let gouraud = [0, 1, 2].map(|k| (0..3).map(|i| b[i] * cs[i][k]).sum::<f64>());
+            let gouraud =
+                [0, 1, 2].map(|k| (0..3).map(|i| b[i] * f64::from(cs[i][k])).sum::<f64>());
             let p = unproject(&scene, &cam, near, far, f.face, px);
             let n = interpolated_normal(&scene, f.face, p).unwrap();
             let side = polygon_normal(&scene.face_points(f.face));
@@ -131,7 +132,7 @@ fn phong_splits_where_the_highlight_is_and_gouraud_does_not_split() {
             .iter()
             .filter(|f| f.face == face)
             .flat_map(|f| f.vertex_colors.iter().flatten())
-            .map(|c| c[0] + c[1] + c[2])
+            .map(|c| f64::from(c[0]) + f64::from(c[1]) + f64::from(c[2]))
             .fold(0.0, f64::max)
     };
     let faces: Vec<u32> = {
