@@ -15,7 +15,7 @@ use rayon::prelude::*;
 
 use crate::chunked_queue::ChunkedQueue;
 use crate::seams_across::Across;
-use crate::{narrow_color, wide_color, PaintFragment};
+use crate::{narrow_color, wide_color, PaintFragment, VertexColor};
 
 /// The bits of an edge's end points, smaller end first (an undirected edge key).
 pub(crate) type EdgeKey = ([u64; 2], [u64; 2]);
@@ -122,11 +122,6 @@ pub fn seam_flaps_beside_strokes(
                         continue;
                     }
                 }
-                // Flaps that stay fragments of their own: none of their edges is
-                // original.
-                for (_, flap) in &mut flaps[start..] {
-                    flap.original_edges = vec![false; flap.points.len()];
-                }
             }
             (flaps, joined)
         })
@@ -162,7 +157,7 @@ pub fn seam_flaps_beside_strokes(
     // flaps go after the run's end too.
     let mut run_end = None;
     for flap in parts.iter_mut().flat_map(|p| p.0.iter_mut()) {
-        let i = flap.0;
+        let i = flap.from as usize;
         if fragments[i].vertex_colors.is_none() {
             continue;
         }
@@ -181,7 +176,7 @@ pub fn seam_flaps_beside_strokes(
             }
         };
         run_end = Some(end);
-        flap.0 = end;
+        flap.after = end as u32;
     }
     let flaps = parts.into_iter().flat_map(|p| p.0);
     flaps_in_place(fragments, flaps, separate)
@@ -201,7 +196,7 @@ pub fn seam_flaps_beside_strokes(
 /// run on the 300² height fields). Also returns where each fragment went.
 fn flaps_in_place(
     mut fragments: Vec<PaintFragment>,
-    flaps: impl Iterator<Item = Flap>,
+    flaps: impl Iterator<Item = BlockFlap>,
     count: usize,
 ) -> (Vec<PaintFragment>, Vec<usize>) {
     let n = fragments.len();
@@ -237,7 +232,10 @@ fn flaps_in_place(
             put(&mut fragments, &mut waiting, &mut write, f);
         }
         at.push(write - 1);
-        while let Some((_, flap)) = flaps.next_if(|(after, _)| *after == i) {
+        while let Some(flap) = flaps.next_if(|flap| flap.after as usize == i) {
+            // The fragment the flap was made of is in its place: it came no later.
+            let of = at[flap.from as usize];
+            let flap = flap.fragment(&fragments[of]);
             put(&mut fragments, &mut waiting, &mut write, flap);
         }
     }
@@ -247,12 +245,49 @@ fn flaps_in_place(
     (fragments, at)
 }
 
-/// A flap and the index of the fragment it is painted after.
-type Flap = (usize, PaintFragment);
+/// A flap as its block keeps it until it is put in place: what is its own, the rest
+/// taken from the fragment it was made of when it becomes a fragment
+/// ([`BlockFlap::fragment`]). 96 bytes instead of a fragment's 136 and an index: a
+/// million-face picture's 700,000 flaps are all held in their blocks before the first
+/// is put in place.
+#[derive(Debug)]
+struct BlockFlap {
+    /// The index of the fragment it is painted after.
+    after: u32,
+    /// The index of the fragment it was made of (its face, object and texture).
+    from: u32,
+    /// Whether it goes on with its fragment's texture.
+    textured: bool,
+    points: Vec<[f64; 2]>,
+    fill: [f64; 4],
+    vertex_colors: Option<Vec<VertexColor>>,
+}
+
+impl BlockFlap {
+    /// The flap as a fragment of its own, with `of`, the fragment it was made of: none
+    /// of its edges is original.
+    fn fragment(self, of: &PaintFragment) -> PaintFragment {
+        let original_edges = vec![false; self.points.len()];
+        PaintFragment {
+            points: self.points,
+            fill: self.fill,
+            vertex_colors: self.vertex_colors,
+            face: of.face,
+            object: of.object,
+            original_edges,
+            texture: if self.textured {
+                of.texture.clone()
+            } else {
+                None
+            },
+            flap: true,
+        }
+    }
+}
 
 /// What a block of fragments makes: its flaps, and its fragments' joined outlines (with
 /// their indices).
-type BlockFlaps = (Vec<Flap>, Vec<(usize, Outline)>);
+type BlockFlaps = (Vec<BlockFlap>, Vec<(usize, Outline)>);
 
 /// A fragment's new corners and which of its edges are original.
 type Outline = (Vec<[f64; 2]>, Vec<bool>);
@@ -263,7 +298,7 @@ type Outline = (Vec<[f64; 2]>, Vec<bool>);
 /// flaps as one polygon (where flaps overlap, the nonzero rule fills them once).
 /// `None` (the flaps stay separate) for a smooth or textured fragment, or when `f` or a
 /// flap has no area or a flap does not hold the shared edge's end points exactly.
-fn joined_outline(f: &PaintFragment, flaps: &[(usize, PaintFragment)]) -> Option<Outline> {
+fn joined_outline(f: &PaintFragment, flaps: &[BlockFlap]) -> Option<Outline> {
     if f.vertex_colors.is_some() || f.texture.is_some() {
         return None;
     }
@@ -272,7 +307,7 @@ fn joined_outline(f: &PaintFragment, flaps: &[(usize, PaintFragment)]) -> Option
         return None;
     }
     let n = f.points.len();
-    let extra: usize = flaps.iter().map(|(_, fl)| fl.points.len() - 2).sum();
+    let extra: usize = flaps.iter().map(|fl| fl.points.len() - 2).sum();
     let mut points = Vec::with_capacity(n + extra);
     let mut original = Vec::with_capacity(n + extra);
     let mut flaps = flaps.iter().peekable();
@@ -280,7 +315,7 @@ fn joined_outline(f: &PaintFragment, flaps: &[(usize, PaintFragment)]) -> Option
         let (a, b) = (f.points[e], f.points[(e + 1) % n]);
         points.push(a);
         // Flaps come in edge order; the one of edge `e` starts at `a` and ends at `b`.
-        let Some((_, fl)) = flaps.next_if(|(_, fl)| holds_edge(&fl.points, a, b)) else {
+        let Some(fl) = flaps.next_if(|fl| holds_edge(&fl.points, a, b)) else {
             original.push(f.original_edges.get(e).copied().unwrap_or(false));
             continue;
         };
@@ -350,7 +385,7 @@ fn flaps_after(
     f: &PaintFragment,
     (later, across, stroked): (&LaterNeighbours, &Across, &[bool]),
     (width, shapes): (f64, &mut HashMap<usize, Shape>),
-    out: &mut Vec<(usize, PaintFragment)>,
+    out: &mut Vec<BlockFlap>,
 ) {
     if !opaque(f) {
         return;
@@ -380,7 +415,7 @@ fn flaps_after(
                     if points == *q {
                         given_whole.push(j);
                     }
-                    out.push((i, flat_flap(f, points)));
+                    out.push(flat_flap(i, f, points));
                 }
             }
             continue;
@@ -425,22 +460,15 @@ fn flaps_after(
             }
             _ => (f.fill, None),
         };
-        out.push((
-            i,
-            PaintFragment {
-                points,
-                fill,
-                vertex_colors,
-                flap: true,
-                // A textured flap goes on with the fragment's texture, under the same
-                // map.
-                texture: f.texture.clone(),
-                face: f.face,
-                object: f.object,
-                // Made for the flaps that are not joined (see `seam_flaps_indexed`).
-                original_edges: Vec::new(),
-            },
-        ));
+        out.push(BlockFlap {
+            after: i as u32,
+            from: i as u32,
+            // A textured flap goes on with the fragment's texture, under the same map.
+            textured: f.texture.is_some(),
+            points,
+            fill,
+            vertex_colors,
+        });
     }
 }
 
@@ -451,17 +479,15 @@ fn strokes_edge(stroked: &[bool], f: &PaintFragment, e: usize) -> bool {
         && f.original_edges.get(e).copied().unwrap_or(false)
 }
 
-/// A flap of flat fragment `f` with corners `points`.
-fn flat_flap(f: &PaintFragment, points: Vec<[f64; 2]>) -> PaintFragment {
-    PaintFragment {
+/// A flap of flat fragment `f`, fragment `i`, with corners `points`.
+fn flat_flap(i: usize, f: &PaintFragment, points: Vec<[f64; 2]>) -> BlockFlap {
+    BlockFlap {
+        after: i as u32,
+        from: i as u32,
+        textured: false,
         points,
         fill: f.fill,
         vertex_colors: None,
-        flap: true,
-        texture: None,
-        face: f.face,
-        object: f.object,
-        original_edges: Vec::new(),
     }
 }
 
