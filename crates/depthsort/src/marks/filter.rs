@@ -95,13 +95,38 @@ fn at_eye(plane: &Plane, eye: EyeF) -> Iv {
     }
 }
 
-/// The cone conditions of `poly` seen from `eye` at a point, as intervals: `behind`,
-/// then one wall per edge (see `cone.rs`). `None` when the eye's side is `On`.
+/// What the filter reads of an occluder that does not depend on the point: its edge
+/// planes (an input polygon makes them when asked, so they are made once here, not at
+/// every point) and the values at the eye of its plane and of each edge plane.
+#[derive(Debug)]
+pub(crate) struct ConePlanes {
+    edges: Box<[Plane]>,
+    /// The support plane's value at the eye.
+    at_eye: Iv,
+    /// Each edge plane's value at the eye.
+    edges_at_eye: Box<[Iv]>,
+}
+
+impl ConePlanes {
+    /// The planes of `poly` (whose support plane is `support`) seen from `eye`.
+    pub(crate) fn new(poly: &ExactPolygon, support: &Plane, eye: EyeF) -> ConePlanes {
+        let edges: Box<[Plane]> = (0..poly.len()).map(|i| poly.edge_plane(i)).collect();
+        let edges_at_eye = edges.iter().map(|e| at_eye(e, eye)).collect();
+        ConePlanes {
+            at_eye: at_eye(support, eye),
+            edges,
+            edges_at_eye,
+        }
+    }
+}
+
+/// The cone conditions of an occluder (its plane `support`, its `planes` from the eye)
+/// at a point, as intervals: `behind`, then one wall per edge (see `cone.rs`). `None`
+/// when the eye's side is `On`.
 pub(crate) fn conditions(
-    poly: &ExactPolygon,
+    planes: &ConePlanes,
     support: &Plane,
     eye_side: Side,
-    eye: EyeF,
     x: [f64; 3],
     out: &mut Vec<Iv>,
 ) -> bool {
@@ -112,15 +137,14 @@ pub(crate) fn conditions(
         Side::On => return false,
     };
     let flip = |v: Iv| if s_neg { v.neg() } else { v };
-    let pe = at_eye(support, eye);
+    let pe = planes.at_eye;
     // A point on the support plane (the usual case at a shared vertex): `behind` is 0 and
     // each wall is `−s·π(E)·eᵢ(x) = −|π(E)|·eᵢ(x)`, enclosed as usual, with the exact sign
     // of `−eᵢ(x)` (the kernel's exact side).
     if support.side_of(x) == Side::On {
         out.push(Iv::zero());
-        for i in 0..poly.len() {
-            let e = poly.edge_plane(i);
-            let v = flip(pe.mul(at(&e, x)));
+        for e in &planes.edges {
+            let v = flip(pe.mul(at(e, x)));
             out.push(match e.side_of(x) {
                 Side::Front => v.with_sign(Ordering::Less),
                 Side::Back => v.with_sign(Ordering::Greater),
@@ -131,9 +155,8 @@ pub(crate) fn conditions(
     }
     let px = at(support, x);
     out.push(flip(px));
-    for i in 0..poly.len() {
-        let e = poly.edge_plane(i);
-        let g = pe.mul(at(&e, x)).sub(at_eye(&e, eye).mul(px));
+    for (e, ee) in planes.edges.iter().zip(&planes.edges_at_eye) {
+        let g = pe.mul(at(e, x)).sub(ee.mul(px));
         out.push(flip(g));
     }
     true

@@ -42,7 +42,7 @@ use crate::geom::{bbox, Box2};
 use crate::{order, order_polygons, Arith, OrderError, OrderOptions, Ordered};
 use bins::Bins;
 use cone::{q3, Cone, EyeQ};
-use filter::EyeF;
+use filter::{ConePlanes, EyeF};
 
 /// A visible piece of an input polyline.
 #[derive(Debug, Clone, PartialEq)]
@@ -149,6 +149,8 @@ struct Occluder {
     support: Plane,
     eye_side: Side,
     cone: OnceLock<Option<Cone>>,
+    /// What the float filter reads of it, made on first use.
+    cone_planes: OnceLock<ConePlanes>,
 }
 
 /// Hides the marks of `scene` against `ordered`, whose fragments' exact polygons are
@@ -283,6 +285,7 @@ fn context(
                 support,
                 eye_side,
                 cone: OnceLock::new(),
+                cone_planes: OnceLock::new(),
             }
         })
         .collect();
@@ -387,5 +390,12 @@ impl Occluder {
         self.cone
             .get_or_init(|| Cone::new(&self.poly, eye))
             .as_ref()
+    }
+
+    /// What the float filter reads of it, from `eye` (the same eye at every call), made
+    /// on first use.
+    fn cone_planes(&self, eye: EyeF) -> &ConePlanes {
+        self.cone_planes
+            .get_or_init(|| ConePlanes::new(&self.poly, &self.support, eye))
     }
 }

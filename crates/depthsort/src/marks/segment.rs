@@ -288,9 +288,9 @@ impl Ctx<'_> {
     fn end_conditions(&mut self, i: u32, ends: [DVec3; 2]) -> bool {
         let o = &self.sh.occluders[i as usize];
         let [a, b] = ends.map(|p| p.to_array());
-        let (eye_side, eye) = (o.eye_side, self.sh.eye_f);
-        let ok_a = filter::conditions(&o.poly, &o.support, eye_side, eye, a, &mut self.fa);
-        let ok_b = filter::conditions(&o.poly, &o.support, eye_side, eye, b, &mut self.fb);
+        let planes = o.cone_planes(self.sh.eye_f);
+        let ok_a = filter::conditions(planes, &o.support, o.eye_side, a, &mut self.fa);
+        let ok_b = filter::conditions(planes, &o.support, o.eye_side, b, &mut self.fb);
         ok_a && ok_b
     }
 
@@ -381,14 +381,8 @@ impl Ctx<'_> {
     pub(super) fn cone_holds(&mut self, i: u32, p: DVec3, qp: &[Q; 3]) -> bool {
         if self.sh.filter {
             let o = &self.sh.occluders[i as usize];
-            if !filter::conditions(
-                &o.poly,
-                &o.support,
-                o.eye_side,
-                self.sh.eye_f,
-                p.to_array(),
-                &mut self.fa,
-            ) {
+            let planes = o.cone_planes(self.sh.eye_f);
+            if !filter::conditions(planes, &o.support, o.eye_side, p.to_array(), &mut self.fa) {
                 return false;
             }
             match filter::point_verdict(&self.fa) {
