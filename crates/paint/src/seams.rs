@@ -250,6 +250,8 @@ fn flaps_in_place(
 /// ([`BlockFlap::fragment`]). 96 bytes instead of a fragment's 136 and an index: a
 /// million-face picture's 700,000 flaps are all held in their blocks before the first
 /// is put in place.
+/// Its indices are `u32`, as fragments' face ids are: a picture of 2³² fragments would
+/// need more than half a terabyte.
 #[derive(Debug)]
 struct BlockFlap {
     /// The index of the fragment it is painted after.
@@ -1028,6 +1030,12 @@ mod tests {
     use std::collections::HashMap;
 
     use super::*;
+
+    /// A block holds a picture's flaps before any is put in place: guard their size.
+    #[test]
+    fn block_flaps_stay_compact() {
+        assert!(std::mem::size_of::<BlockFlap>() <= 96);
+    }
 
     /// The first implementation: one `Vec` of later fragments per edge key, and one of
     /// flaps per fragment. The reference the sorted edges are checked against.

@@ -190,10 +190,12 @@ fn drawn(f: &PaintFragment, textures: &[Arc<Texture>]) -> Option<Drawn> {
     let map = f.texture.as_deref()?;
     let texture = textures.get(map.texture as usize)?;
     let mask = map.alpha == TextureAlpha::Mask || texture.alpha() == TextureAlpha::Mask;
+    // The fill's opacity as vertex colours keep it.
+    let alpha = narrow_color(f.fill)[3];
     let own_alpha = f
         .vertex_colors
         .as_ref()
-        .is_some_and(|cs| cs.iter().any(|c| c[3] != narrow_color(f.fill)[3]));
+        .is_some_and(|cs| cs.iter().any(|c| c[3] != alpha));
     if mask || own_alpha || !is_valid(f) {
         return None;
     }

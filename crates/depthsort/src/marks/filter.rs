@@ -121,8 +121,8 @@ impl ConePlanes {
 }
 
 /// The cone conditions of an occluder (its plane `support`, its `planes` from the eye)
-/// at a point, as intervals: `behind`, then one wall per edge (see `cone.rs`). `None`
-/// when the eye's side is `On`.
+/// at a point, as intervals into `out`: `behind`, then one wall per edge (see
+/// `cone.rs`). False (nothing computed) when the eye's side is `On`.
 pub(crate) fn conditions(
     planes: &ConePlanes,
     support: &Plane,
